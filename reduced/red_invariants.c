@@ -1,0 +1,74 @@
+/* red_invariants: f1, f2 from hypergeometric functions (GSL), checked by
+ * tests/test_invariants (conservation along CVODE and GSL trajectories). */
+#include "red_invariants.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_hyperg.h>
+#include <math.h>
+
+double red_legendre_k(const red_disk *dk) {
+  const double mr2 = dk->m * dk->r * dk->r;
+  return dk->C * mr2 / (dk->A * (dk->C + mr2));
+}
+
+/* F(a + shift, b + shift; c; z) with a, b = (1 +- gamma)/4 */
+static int hyp(double k, double shift, double c, double z, double *out) {
+  gsl_sf_result r;
+  const double disc = 1.0 - 4.0 * k;
+  int status;
+  if (disc >= 0.0) {
+    const double g = sqrt(disc);
+    status = gsl_sf_hyperg_2F1_e(0.25 * (1.0 + g) + shift, 0.25 * (1.0 - g) + shift, c, z, &r);
+  } else {
+    status = gsl_sf_hyperg_2F1_conj_e(0.25 + shift, 0.25 * sqrt(-disc), c, z, &r);
+  }
+  *out = r.val;
+  return status == GSL_SUCCESS && isfinite(r.val) ? 0 : -1;
+}
+
+int red_rho_basis(const red_disk *dk, double th, double u[2], double du[2]) {
+  const double s = sin(th), x = cos(th), z = x * x, q = dk->m * dk->r * dk->r / dk->A;
+  const double k = red_legendre_k(dk);
+  if (!(s > 0.0)) return -1;
+  if (k == 0.0) { /* C = 0: the closed forms of thesis (4.8) */
+    u[0] = 1.0;
+    du[0] = 0.0;
+    u[1] = q * log(tan(0.5 * th));
+    du[1] = q / s;
+    return 0;
+  }
+  double F0, F1, G0, G1;
+  if (hyp(k, 0.0, 0.5, z, &F0) || hyp(k, 1.0, 1.5, z, &F1) || hyp(k, 0.5, 1.5, z, &G0) ||
+      hyp(k, 1.5, 2.5, z, &G1))
+    return -1;
+  /* dF/dz = (a b / c) F(a+1, b+1; c+1; z), a b = k/4, dz/dtheta = -2 s x */
+  u[0] = F0;
+  du[0] = -k * s * x * F1;
+  /* (a+1/2)(b+1/2) = k/4 + 1/2 */
+  u[1] = -q * x * G0;
+  du[1] = q * s * (G0 + 2.0 * z * (2.0 / 3.0) * (0.25 * k + 0.5) * G1);
+  return 0;
+}
+
+int red_invariants(const red_disk *dk, const double y[RED_NSTATE], double *f1, double *f2) {
+  const double mr2 = dk->m * dk->r * dk->r, th = y[RED_TH], s = sin(th);
+  double u[2], du[2];
+  if (red_rho_basis(dk, th, u, du)) return -1;
+  const double rho = (dk->C + mr2) * (y[RED_VPS] + y[RED_VPH] * cos(th));
+  const double drho = mr2 * y[RED_VPH] * s;
+  /* Wronskian u1 u2' - u2 u1' = (m r^2 / A) / sin(theta) (Abel; value at pi/2) */
+  const double w = mr2 / (dk->A * s);
+  *f1 = (rho * du[1] - drho * u[1]) / w;
+  *f2 = (u[0] * drho - du[0] * rho) / w;
+  return 0;
+}
+
+int red_rates_from_invariants(const red_disk *dk, double th, double f1, double f2,
+                              double *v_phi, double *v_psi) {
+  const double mr2 = dk->m * dk->r * dk->r, s = sin(th);
+  double u[2], du[2];
+  if (red_rho_basis(dk, th, u, du)) return -1;
+  *v_phi = (f1 * du[0] + f2 * du[1]) / (mr2 * s);
+  *v_psi = (f1 * u[0] + f2 * u[1]) / (dk->C + mr2) - *v_phi * cos(th);
+  return 0;
+}

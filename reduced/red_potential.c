@@ -1,0 +1,90 @@
+/* red_potential: effective potential and turning points of theta. Checked by
+ * tests/test_potential against the extremes of integrated trajectories. */
+#include "red_potential.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include <math.h>
+
+#include "red_invariants.h"
+
+int red_effective_potential(const red_disk *dk, double f1, double f2, double th, double *U) {
+  const double mr2 = dk->m * dk->r * dk->r;
+  double u[2], du[2];
+  if (red_rho_basis(dk, th, u, du)) return -1;
+  const double rho = f1 * u[0] + f2 * u[1], drho = f1 * du[0] + f2 * du[1];
+  *U = rho * rho / (2.0 * (dk->C + mr2)) + dk->A * drho * drho / (2.0 * mr2 * mr2) +
+       dk->m * dk->g * dk->r * sin(th);
+  return isfinite(*U) ? 0 : -1;
+}
+
+typedef struct level_ctx {
+  const red_disk *disk;
+  double f1, f2, E;
+} level_ctx;
+
+static double excess(double th, void *p) {
+  const level_ctx *c = p;
+  double U;
+  return red_effective_potential(c->disk, c->f1, c->f2, th, &U) ? NAN : U - c->E;
+}
+
+static int brent(gsl_function *fn, double a, double b, double *root) {
+  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  if (!s) return GSL_ENOMEM;
+  int status = gsl_root_fsolver_set(s, fn, a, b);
+  for (int i = 0; status == GSL_SUCCESS && i < 200; i++) {
+    status = gsl_root_fsolver_iterate(s);
+    if (status) break;
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 1e-15,
+                               1e-14) == GSL_SUCCESS)
+      break;
+  }
+  *root = gsl_root_fsolver_root(s);
+  gsl_root_fsolver_free(s);
+  return status;
+}
+
+/* walk from th0 toward limit until U > E, then refine; *hit when never */
+static int turning_point(gsl_function *fn, double th0, double limit, double *out, int *hit) {
+  const int n = 2000;
+  const double step = (limit - th0) / n;
+  double a = th0;
+  for (int i = 1; i <= n; i++) {
+    const double b = (i == n) ? limit : th0 + i * step;
+    const double gb = GSL_FN_EVAL(fn, b);
+    if (!isfinite(gb)) return GSL_EDOM;
+    if (gb > 0.0) return brent(fn, fmin(a, b), fmax(a, b), out);
+    a = b;
+  }
+  *out = limit;
+  *hit = 1;
+  return GSL_SUCCESS;
+}
+
+int red_theta_range(const red_disk *dk, const double y[RED_NSTATE], double theta_limit,
+                    double range[2], int *falls, dv_error *err) {
+  level_ctx c = {dk, 0.0, 0.0, red_energy(dk, y)};
+  const double th = y[RED_TH], mr2 = dk->m * dk->r * dk->r;
+  if (red_invariants(dk, y, &c.f1, &c.f2))
+    return dv_fail(err, DV_ENUMERIC, "invariants undefined at theta = %g", th);
+  gsl_function fn = {excess, &c};
+  *falls = 0;
+  /* a state at rest in theta is its own turning point on the side where U rises */
+  const double kin = 0.5 * (dk->A + mr2) * y[RED_VTH] * y[RED_VTH];
+  const double scale = fabs(c.E) + dk->m * dk->g * dk->r;
+  double dU = 0.0;
+  const double h = 1e-6;
+  dU = (excess(th + h, &c) - excess(th - h, &c)) / (2.0 * h);
+  int lo_hit = 0, hi_hit = 0, status = GSL_SUCCESS;
+  range[0] = range[1] = th;
+  if (kin > 1e-13 * scale || dU > 1e-9 * scale)
+    status = turning_point(&fn, th - ((kin > 1e-13 * scale) ? 0.0 : 1e-9), theta_limit, &range[0],
+                           &lo_hit);
+  if (status == GSL_SUCCESS && (kin > 1e-13 * scale || dU < -1e-9 * scale))
+    status = turning_point(&fn, th + ((kin > 1e-13 * scale) ? 0.0 : 1e-9), M_PI - theta_limit,
+                           &range[1], &hi_hit);
+  if (status) return dv_fail(err, DV_ENUMERIC, "turning points: %s", gsl_strerror(status));
+  *falls = lo_hit || hi_hit;
+  return DV_OK;
+}

@@ -1,0 +1,27 @@
+/* red_potential: the one-degree-of-freedom picture of the reduced motion.
+ *
+ * On a level set of f1, f2 the rates are functions of theta, and
+ *
+ *   E = 1/2 (A + m r^2) v_theta^2 + U(theta),
+ *   U = rho_psi^2 / (2 (C + m r^2)) + A rho_psi'^2 / (2 (m r^2)^2) + m g r sin(theta)
+ *
+ * (thesis 3.82 with rho_phi - rho_psi cos = (A / m r^2) sin rho_psi').
+ * theta oscillates between the turning points where U(theta) = E.
+ */
+#ifndef RED_POTENTIAL_H
+#define RED_POTENTIAL_H
+
+#include "../common/dv_error.h"
+#include "red_disk.h"
+
+/* U(theta) for the integrals f1, f2 (J) */
+int red_effective_potential(const red_disk *disk, double f1, double f2, double theta, double *U);
+
+/* the interval [lo, hi] of theta reachable from y at its energy: turning points
+ * found by Brent's method; an end that reaches theta_limit (the disk lies down
+ * before turning) is reported as theta_limit or pi - theta_limit, with
+ * *falls set. Returns DV_OK or < 0. */
+int red_theta_range(const red_disk *disk, const double y[RED_NSTATE], double theta_limit,
+                    double range[2], int *falls, dv_error *err);
+
+#endif

@@ -1,0 +1,169 @@
+/* red_solve: the stepping loop shared by every stepper: output from dense
+ * interpolation, and events located by Brent's method (GSL) on it. */
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "red_solver.h"
+
+struct red_integrator {
+  const red_system *sys;
+  const red_stepper_type *type;
+  void *stepper;
+  double t_step;                 /* end of the last internal step */
+  double t_end;                  /* no step goes beyond */
+  double g[RED_MAX_EVENTS];      /* event functions there */
+  int event;                     /* event found in the last step, or -1 */
+  double t_event;
+  int done;                      /* an event has been returned */
+  int status;                    /* error inside the root finder's callback */
+  size_t locating;               /* event being located */
+  dv_error *err;
+};
+
+red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_type *type,
+                                     double rtol, double atol, dv_error *err) {
+  if (sys->dim > RED_MAX_DIM || sys->nevents > RED_MAX_EVENTS)
+    return dv_fail(err, DV_EINPUT, "system too large"), NULL;
+  red_integrator *in = calloc(1, sizeof *in);
+  if (!in) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  in->sys = sys;
+  in->type = type;
+  in->stepper = type->alloc(sys, rtol, atol, err);
+  if (!in->stepper) return free(in), NULL;
+  return in;
+}
+
+void red_integrator_free(red_integrator *in) {
+  if (!in) return;
+  in->type->free(in->stepper);
+  free(in);
+}
+
+void red_integrator_stats(const red_integrator *in, red_stats *out) {
+  in->type->stats(in->stepper, out);
+}
+
+static void eval_events(const red_system *sys, double t, const double *y, double *g) {
+  for (size_t i = 0; i < sys->nevents; i++) g[i] = sys->events[i](t, y, sys->params);
+}
+
+int red_integrator_reset(red_integrator *in, double t0, double t_end, const double *y0,
+                         dv_error *err) {
+  in->t_step = t0;
+  in->t_end = t_end;
+  in->event = -1;
+  in->done = 0;
+  eval_events(in->sys, t0, y0, in->g);
+  return in->type->reset(in->stepper, t0, y0, err);
+}
+
+static double event_on_dense(double t, void *p) {
+  red_integrator *in = p;
+  double y[RED_MAX_DIM];
+  int status = in->type->dense(in->stepper, t, y, in->err);
+  if (status) {
+    in->status = status;
+    return NAN;
+  }
+  return in->sys->events[in->locating](t, y, in->sys->params);
+}
+
+/* the sign change of event i inside (ta, tb) */
+static int locate(red_integrator *in, double ta, double tb, double *t_root) {
+  gsl_function fn = {event_on_dense, in};
+  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  if (!s) return dv_fail(in->err, DV_ESYSTEM, "out of memory");
+  in->status = 0;
+  int status = gsl_root_fsolver_set(s, &fn, ta, tb);
+  for (int iter = 0; status == GSL_SUCCESS && iter < 200; iter++) {
+    status = gsl_root_fsolver_iterate(s);
+    if (status || in->status) break;
+    double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
+    if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
+  }
+  *t_root = gsl_root_fsolver_root(s);
+  gsl_root_fsolver_free(s);
+  if (in->status) return in->status;
+  if (status) return dv_fail(in->err, DV_ENUMERIC, "event location: %s", gsl_strerror(status));
+  return DV_OK;
+}
+
+/* one internal step, then the earliest event inside it */
+static int step_once(red_integrator *in, double t_max, dv_error *err) {
+  double y[RED_MAX_DIM], g[RED_MAX_EVENTS], t1;
+  const double t0 = in->t_step;
+  int status = in->type->step(in->stepper, t_max, &t1, err);
+  if (!status) status = in->type->dense(in->stepper, t1, y, err);
+  if (status) return status;
+  eval_events(in->sys, t1, y, g);
+  in->err = err;
+  for (size_t i = 0; i < in->sys->nevents; i++) {
+    if (in->g[i] == 0.0 || in->g[i] * g[i] > 0.0) continue;
+    double t_root = t1;
+    in->locating = i;
+    status = locate(in, t0, t1, &t_root);
+    if (status) return status;
+    if (in->event < 0 || t_root < in->t_event) {
+      in->event = (int)i;
+      in->t_event = t_root;
+    }
+  }
+  memcpy(in->g, g, sizeof g);
+  in->t_step = t1;
+  return DV_OK;
+}
+
+int red_integrator_advance(red_integrator *in, double t_out, double *t, double *y, int *event,
+                           dv_error *err) {
+  int status = DV_OK;
+  const int dense = in->type->caps & RED_CAP_DENSE;
+  while (in->event < 0 && in->t_step < fmin(t_out, in->t_end)) {
+    status = step_once(in, dense ? in->t_end : fmin(t_out, in->t_end), err);
+    if (status) return status;
+  }
+  *event = in->event;
+  if (in->event >= 0 && in->t_event <= t_out) {
+    in->done = 1;
+    *t = in->t_event;
+    status = in->type->dense(in->stepper, *t, y, err);
+    return status ? status : DV_EVENT;
+  }
+  *event = -1;
+  *t = t_out;
+  return in->type->dense(in->stepper, t_out, y, err);
+}
+
+double red_grid_time(double t0, double dt, double t_end, long k) {
+  const double t = t0 + (double)k * dt;
+  return (fabs(t - t_end) <= 1e-9 * dt || t > t_end) ? t_end : t;
+}
+
+int red_solve(const red_system *sys, const red_run *run, double *y, red_result *res,
+              dv_error *err) {
+  memset(res, 0, sizeof *res);
+  res->event = -1;
+  res->t_final = run->t0;
+  if (!(run->output_dt > 0.0) || !(run->t_end >= run->t0))
+    return dv_fail(err, DV_EINPUT, "output_dt must be > 0 and t_end >= t0");
+  red_integrator *in = red_integrator_alloc(sys, run->stepper, run->rtol, run->atol, err);
+  if (!in) return DV_ESYSTEM;
+  int status = red_integrator_reset(in, run->t0, run->t_end, y, err);
+  if (!status) status = run->sample(run->t0, y, run->sample_ctx);
+  for (long k = 1; status == DV_OK && res->t_final < run->t_end; k++) {
+    double t;
+    status = red_integrator_advance(in, red_grid_time(run->t0, run->output_dt, run->t_end, k), &t,
+                                    y, &res->event, err);
+    if (status >= 0) {
+      res->t_final = t;
+      int s = run->sample(t, y, run->sample_ctx);
+      if (s) status = s;
+    }
+  }
+  red_integrator_stats(in, &res->stats);
+  red_integrator_free(in);
+  return status;
+}
