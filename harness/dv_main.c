@@ -1,0 +1,51 @@
+/* diskval: cross-validation of rolling-disk simulations against the reduced
+ * equations. The entry point dispatches to the subcommands. */
+#include <gsl/gsl_errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_commands.h"
+#include "dv_engine.h"
+#include "red_solver.h"
+
+static const char HELP[] =
+    "usage: diskval COMMAND [ARGS]   (diskval COMMAND --help for each)\n"
+    "\n"
+    "Checks simulations of a disk rolling without slipping against the exact\n"
+    "reduced equations of motion.\n"
+    "\n"
+    "commands:\n"
+    "  simulate SCENARIO --engine NAME [--out FILE]   one trajectory as CSV\n"
+    "  analyze SCENARIO [--json]                      invariants, steady motion, stability\n"
+    "  engines                                        the engines and integrators\n";
+
+int dv_cmd_engines(int argc, char **argv) {
+  if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+    puts("usage: diskval engines\n\nList the engines, their library versions and the\n"
+         "reference's integrators ([engines.reduced] integrator = NAME).");
+    return DV_EXIT_OK;
+  }
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+    printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
+  printf("\nreference integrators (default %s):\n", red_stepper_default()->name);
+  for (const red_stepper_type *const *t = red_steppers; *t; t++)
+    printf("  %-20s %s\n", (*t)->name, (*t)->description);
+  return DV_EXIT_OK;
+}
+
+int main(int argc, char **argv) {
+  static const struct {
+    const char *name;
+    int (*run)(int, char **);
+  } commands[] = {{"simulate", dv_cmd_simulate}, {"analyze", dv_cmd_analyze},
+                  {"engines", dv_cmd_engines}};
+  gsl_set_error_handler_off();
+  if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+    fputs(HELP, argc < 2 ? stderr : stdout);
+    return argc < 2 ? DV_EXIT_ERROR : DV_EXIT_OK;
+  }
+  for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+    if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
+  fprintf(stderr, "diskval: unknown command '%s' (see diskval --help)\n", argv[1]);
+  return DV_EXIT_ERROR;
+}

@@ -1,0 +1,52 @@
+/* dv_output: write to a temporary file, rename on success. */
+#include "dv_output.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+int dv_output_open(dv_output *out, const char *path, dv_error *err) {
+  memset(out, 0, sizeof *out);
+  if (!path || strcmp(path, "-") == 0) {
+    out->fp = stdout;
+    return DV_OK;
+  }
+  snprintf(out->path, sizeof out->path, "%s", path);
+  snprintf(out->tmp_path, sizeof out->tmp_path, "%s.tmp.XXXXXX", path);
+  int fd = mkstemp(out->tmp_path);
+  if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
+  out->fp = fdopen(fd, "w");
+  if (!out->fp) {
+    close(fd);
+    unlink(out->tmp_path);
+    return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
+  }
+  return DV_OK;
+}
+
+int dv_output_commit(dv_output *out, dv_error *err) {
+  if (!out->fp) return dv_fail(err, DV_ESYSTEM, "output not open");
+  if (out->fp == stdout) {
+    out->fp = NULL;
+    return fflush(stdout) == 0 ? DV_OK : dv_fail(err, DV_ESYSTEM, "stdout: %s", strerror(errno));
+  }
+  const int bad = ferror(out->fp) | fflush(out->fp) | fsync(fileno(out->fp));
+  const int close_bad = fclose(out->fp);
+  out->fp = NULL;
+  if (bad || close_bad || rename(out->tmp_path, out->path)) {
+    const int e = errno;
+    unlink(out->tmp_path);
+    return dv_fail(err, DV_ESYSTEM, "%s: write failed: %s", out->path, strerror(e));
+  }
+  return DV_OK;
+}
+
+void dv_output_abort(dv_output *out) {
+  if (!out || !out->fp) return;
+  if (out->fp != stdout) {
+    fclose(out->fp);
+    unlink(out->tmp_path);
+  }
+  out->fp = NULL;
+}

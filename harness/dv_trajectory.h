@@ -1,0 +1,25 @@
+/* dv_trajectory: run an engine over a scenario and write the trajectory CSV.
+ *
+ * CSV: one row per output_dt (and one at an event that ends the run), header
+ *   t,theta,phi,psi,x,y,contact_x,contact_y,theta_dot,phi_dot,psi_dot,energy
+ * in seconds, radians, metres, rad/s and joules.
+ */
+#ifndef DV_TRAJECTORY_H
+#define DV_TRAJECTORY_H
+
+#include <stdio.h>
+
+#include "dv_engine.h"
+#include "dv_scenario.h"
+
+#define DV_CSV_HEADER "t,theta,phi,psi,x,y,contact_x,contact_y,theta_dot,phi_dot,psi_dot,energy"
+
+/* one CSV row for state y at time t */
+void dv_csv_row(FILE *fp, const red_disk *disk, double t, const double y[RED_NSTATE]);
+
+/* run engine over sc, writing CSV rows to fp; stats filled in any case.
+ * Returns DV_OK, DV_EVENT (ended early) or < 0 with err set. */
+int dv_trajectory_run(const dv_engine_type *engine, const dv_scenario *sc, FILE *fp,
+                      dv_engine_stats *stats, dv_error *err);
+
+#endif
