@@ -9,10 +9,10 @@
 
 enum {
   DV_OK = 0,
-  DV_EVENT = 1,      /* informational: the run ended at an event */
-  DV_EINPUT = -1,    /* bad input: scenario, option or argument */
-  DV_ENUMERIC = -2,  /* a numerical method failed */
-  DV_ESYSTEM = -3,   /* I/O or memory */
+  DV_EVENT = 1,     /* informational: the run ended at an event */
+  DV_EINPUT = -1,   /* bad input: scenario, option or argument */
+  DV_ENUMERIC = -2, /* a numerical method failed */
+  DV_ESYSTEM = -3,  /* I/O or memory */
 };
 
 typedef struct dv_error {
@@ -20,7 +20,6 @@ typedef struct dv_error {
 } dv_error;
 
 /* format a message into err (NULL-safe); returns status for tail calls */
-int dv_fail(dv_error *err, int status, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
+int dv_fail(dv_error *err, int status, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 #endif

@@ -76,5 +76,7 @@ static void reduced_stats(const void *p, dv_engine_stats *out) {
 }
 
 const dv_engine_type dv_engine_reduced = {
-    "reduced", "reference: the reduced equations (GSL / SUNDIALS integrators)",
-    reduced_version, reduced_alloc, reduced_reset, reduced_advance, reduced_stats, reduced_free};
+    "reduced",       "reference: the reduced equations (GSL / SUNDIALS integrators)",
+    reduced_version, reduced_alloc,
+    reduced_reset,   reduced_advance,
+    reduced_stats,   reduced_free};

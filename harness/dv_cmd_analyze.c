@@ -44,7 +44,8 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
 }
 
 static const char *branch(double k) {
-  return k == 0.0 ? "closed form (C = 0)" : (k <= 0.25 ? "real parameters" : "complex-conjugate parameters");
+  return k == 0.0 ? "closed form (C = 0)"
+                  : (k <= 0.25 ? "real parameters" : "complex-conjugate parameters");
 }
 
 static cJSON *number_or_null(double v) {
@@ -64,7 +65,8 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   cJSON_AddItemToObject(o, "theta_range", cJSON_CreateDoubleArray(an->range, 2));
   cJSON_AddBoolToObject(o, "falls", an->falls);
   cJSON *init = cJSON_AddObjectToObject(o, "initial");
-  const char *names[RED_NSTATE] = {"theta", "theta_dot", "phi_dot", "psi_dot", "phi", "psi", "x", "y"};
+  const char *names[RED_NSTATE] = {"theta", "theta_dot", "phi_dot", "psi_dot",
+                                   "phi",   "psi",       "x",       "y"};
   for (int i = 0; i < RED_NSTATE; i++) cJSON_AddNumberToObject(init, names[i], y[i]);
   if (an->steady) {
     cJSON *s = cJSON_AddObjectToObject(o, "steady");

@@ -12,7 +12,8 @@ static const char HELP[] =
     "usage: diskval simulate SCENARIO --engine NAME [--set section.key=value]... [--out FILE]\n"
     "\n"
     "Simulate SCENARIO with one engine and write its trajectory as CSV:\n"
-    "  " DV_CSV_HEADER "\n"
+    "  " DV_CSV_HEADER
+    "\n"
     "one row every output_dt (and a last row where an event ends the run).\n"
     "  --engine NAME   engine to run (diskval engines lists them)\n"
     "  --set S.K=V     override key K of section S, e.g. --set engines.reduced.rtol=1e-10\n"

@@ -21,8 +21,9 @@ static const char HELP[] =
 
 int dv_cmd_engines(int argc, char **argv) {
   if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-    puts("usage: diskval engines\n\nList the engines, their library versions and the\n"
-         "reference's integrators ([engines.reduced] integrator = NAME).");
+    puts(
+        "usage: diskval engines\n\nList the engines, their library versions and the\n"
+        "reference's integrators ([engines.reduced] integrator = NAME).");
     return DV_EXIT_OK;
   }
   for (const dv_engine_type *const *e = dv_engines; *e; e++)
@@ -37,8 +38,8 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     int (*run)(int, char **);
-  } commands[] = {{"simulate", dv_cmd_simulate}, {"analyze", dv_cmd_analyze},
-                  {"engines", dv_cmd_engines}};
+  } commands[] = {
+      {"simulate", dv_cmd_simulate}, {"analyze", dv_cmd_analyze}, {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(HELP, argc < 2 ? stderr : stdout);

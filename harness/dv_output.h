@@ -18,6 +18,6 @@ typedef struct dv_output {
 
 int dv_output_open(dv_output *out, const char *path, dv_error *err);
 int dv_output_commit(dv_output *out, dv_error *err); /* flush, close, rename */
-void dv_output_abort(dv_output *out);                 /* NULL-safe, idempotent */
+void dv_output_abort(dv_output *out);                /* NULL-safe, idempotent */
 
 #endif

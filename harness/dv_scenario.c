@@ -23,22 +23,33 @@ typedef struct key_spec {
 } key_spec;
 
 static const key_spec KEYS[] = {
-    {"scenario", "name", REQUIRED | TEXT},  {"scenario", "description", TEXT},
-    {"scenario", "duration", REQUIRED},     {"scenario", "output_dt", REQUIRED},
-    {"disk", "radius", REQUIRED},           {"disk", "mass", REQUIRED},
-    {"disk", "A", 0},                       {"disk", "C", 0},
-    {"disk", "gravity", 0},                 {"initial", "theta", REQUIRED},
-    {"initial", "phi", 0},                  {"initial", "psi", 0},
-    {"initial", "x", 0},                    {"initial", "y", 0},
-    {"initial", "theta_dot", 0},            {"initial", "phi_dot", 0},
-    {"initial", "psi_dot", 0},              {"initial", "steady_circle_radius", 0},
-    {"initial", "steady_phi_dot", 0},       {"engines.reduced", "integrator", TEXT},
-    {"engines.reduced", "rtol", 0},         {"engines.reduced", "atol", 0},
+    {"scenario", "name", REQUIRED | TEXT},
+    {"scenario", "description", TEXT},
+    {"scenario", "duration", REQUIRED},
+    {"scenario", "output_dt", REQUIRED},
+    {"disk", "radius", REQUIRED},
+    {"disk", "mass", REQUIRED},
+    {"disk", "A", 0},
+    {"disk", "C", 0},
+    {"disk", "gravity", 0},
+    {"initial", "theta", REQUIRED},
+    {"initial", "phi", 0},
+    {"initial", "psi", 0},
+    {"initial", "x", 0},
+    {"initial", "y", 0},
+    {"initial", "theta_dot", 0},
+    {"initial", "phi_dot", 0},
+    {"initial", "psi_dot", 0},
+    {"initial", "steady_circle_radius", 0},
+    {"initial", "steady_phi_dot", 0},
+    {"engines.reduced", "integrator", TEXT},
+    {"engines.reduced", "rtol", 0},
+    {"engines.reduced", "atol", 0},
     {"engines.reduced", "theta_limit", 0},
 };
 #define NKEYS (sizeof KEYS / sizeof KEYS[0])
 
-static const char *const METRICS[] = {"theta_max_err", "theta_rms_err", "path_max_err",
+static const char *const METRICS[] = {"theta_max_err", "theta_rms_err",  "path_max_err",
                                       "path_rms_err",  "path_hausdorff", "energy_drift",
                                       "slip_max"};
 static const char *const ENGINES[] = {"reduced", "ode", "mujoco"};
@@ -48,10 +59,10 @@ static const char *const ENGINES[] = {"reduced", "ode", "mujoco"};
 #define MAX_SECTIONS 16
 
 typedef struct parse_ctx {
-  const char *path;  /* for messages */
-  int line;          /* current line, counted by the reader */
+  const char *path; /* for messages */
+  int line;         /* current line, counted by the reader */
   FILE *file;
-  int failed;        /* first error kept */
+  int failed; /* first error kept */
   dv_error *err;
   char value[NKEYS][256];
   int value_line[NKEYS]; /* 0: not given */
@@ -150,6 +161,7 @@ static int set_tolerance(parse_ctx *c, int line, const char *section, const char
 
 static int set_key(parse_ctx *c, int line, const char *section, const char *key,
                    const char *value) {
+  if (!section[0]) return fail_at(c, line, key, "key before any [section]");
   if (strncmp(section, "tolerance", 9) == 0 && (section[9] == '\0' || section[9] == '.'))
     return set_tolerance(c, line, section, key, value);
   int known_section = 0;
@@ -178,11 +190,9 @@ static int on_key(void *user, const char *section, const char *key, const char *
 static int apply_override(parse_ctx *c, int index, const char *text) {
   char buf[512], *eq, *dot;
   snprintf(buf, sizeof buf, "%s", text);
-  if (!(eq = strchr(buf, '=')))
-    return fail_at(c, -index, text, "expected section.key=value");
+  if (!(eq = strchr(buf, '='))) return fail_at(c, -index, text, "expected section.key=value");
   *eq = '\0';
-  if (!(dot = strrchr(buf, '.')))
-    return fail_at(c, -index, buf, "expected section.key=value");
+  if (!(dot = strrchr(buf, '.'))) return fail_at(c, -index, buf, "expected section.key=value");
   *dot = '\0';
   return set_key(c, -index, buf, dot + 1, eq + 1);
 }
@@ -218,8 +228,7 @@ static int read_ranges(parse_ctx *c, const range *r, size_t n) {
     const size_t i = key_index(r[k].section, r[k].key);
     if (KEYS[i].flags & REQUIRED && !c->value_line[i]) {
       const int line = section_line(c, r[k].section);
-      return fail_at(c, line ? line : 1, r[k].key, "missing (required in [%s])", r[k].section),
-             -1;
+      return fail_at(c, line ? line : 1, r[k].key, "missing (required in [%s])", r[k].section), -1;
     }
     double v;
     if (number(c, i, r[k].def, &v)) return -1;
@@ -240,9 +249,21 @@ static int line_of(const parse_ctx *c, const char *section, const char *key) {
   return s ? s : 1;
 }
 
+static int known_section(const char *name) {
+  if (!strcmp(name, "tolerance")) return 1;
+  if (!strncmp(name, "tolerance.", 10)) return find_in(ENGINES, NENGINES, name + 10) >= 0;
+  for (size_t i = 0; i < NKEYS; i++)
+    if (!strcmp(KEYS[i].section, name)) return 1;
+  return 0;
+}
+
 static int validate(parse_ctx *c) {
   dv_scenario *sc = c->sc;
   red_disk *d = &sc->disk;
+  for (int i = 0; i < c->nsections; i++) /* sections without keys never reach the handler */
+    if (!known_section(c->sections[i]))
+      return fail_at(c, c->section_line[i], c->sections[i], "unknown section [%s]", c->sections[i]),
+             -1;
   const char *sections[] = {"scenario", "disk", "initial"};
   for (size_t i = 0; i < 3; i++)
     if (!section_line(c, sections[i]))
@@ -289,8 +310,7 @@ static int validate(parse_ctx *c) {
   snprintf(rs->integrator, sizeof rs->integrator, "%s",
            c->value_line[iint] ? c->value[iint] : red_stepper_default()->name);
   if (!red_stepper_find(rs->integrator))
-    return fail_at(c, c->value_line[iint], "integrator", "unknown integrator '%s'",
-                   rs->integrator),
+    return fail_at(c, c->value_line[iint], "integrator", "unknown integrator '%s'", rs->integrator),
            -1;
   const range solver[] = {
       {"engines.reduced", "rtol", 1e-12, 0.0, 1.0, 0, &rs->rtol},
@@ -316,20 +336,22 @@ static int validate(parse_ctx *c) {
   if (read_ranges(c, init, 10)) return -1;
   const int has_radius = c->value_line[key_index("initial", "steady_circle_radius")] != 0;
   const int has_rate = c->value_line[key_index("initial", "steady_phi_dot")] != 0;
-  sc->init_mode = has_radius ? DV_INIT_STEADY_RADIUS : has_rate ? DV_INIT_STEADY_PHI_DOT : DV_INIT_STATE;
+  sc->init_mode = has_radius ? DV_INIT_STEADY_RADIUS
+                  : has_rate ? DV_INIT_STEADY_PHI_DOT
+                             : DV_INIT_STATE;
   if (sc->init_mode != DV_INIT_STATE) {
     const char *steady_key = has_radius ? "steady_circle_radius" : "steady_phi_dot";
     const char *rates[] = {"theta_dot", "phi_dot", "psi_dot", has_radius ? "steady_phi_dot" : NULL};
     for (size_t i = 0; i < 4 && rates[i]; i++)
       if (c->value_line[key_index("initial", rates[i])])
         return fail_at(c, line_of(c, "initial", rates[i]), rates[i],
-                       "cannot be combined with %s (the steady motion fixes the rates)", steady_key),
+                       "cannot be combined with %s (the steady motion fixes the rates)",
+                       steady_key),
                -1;
     dv_error e;
-    const int status = has_radius ? red_steady_from_radius(d, y[RED_TH], radius, &y[RED_VPH],
-                                                           &y[RED_VPS], &e)
-                                  : red_steady_from_phi_dot(d, y[RED_TH], steady_phi_dot,
-                                                            &y[RED_VPS], &e);
+    const int status =
+        has_radius ? red_steady_from_radius(d, y[RED_TH], radius, &y[RED_VPH], &y[RED_VPS], &e)
+                   : red_steady_from_phi_dot(d, y[RED_TH], steady_phi_dot, &y[RED_VPS], &e);
     if (has_rate) y[RED_VPH] = steady_phi_dot;
     if (status) return fail_at(c, line_of(c, "initial", steady_key), steady_key, "%s", e.msg), -1;
   }

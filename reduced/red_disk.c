@@ -14,8 +14,9 @@ int red_rhs(const red_disk *dk, const double y[RED_NSTATE], double f[RED_NSTATE]
   if (!(s > 0.0)) return -1;
   const double w3 = vps + vph * c; /* spin about the axis, omega . n */
   f[RED_TH] = vth;
-  f[RED_VTH] = (dk->A * vph * vph * c * s - dk->m * dk->g * dk->r * c - (dk->C + mr2) * w3 * vph * s) /
-               (dk->A + mr2);
+  f[RED_VTH] =
+      (dk->A * vph * vph * c * s - dk->m * dk->g * dk->r * c - (dk->C + mr2) * w3 * vph * s) /
+      (dk->A + mr2);
   f[RED_VPH] = vth / (dk->A * s) * (dk->C * w3 - 2.0 * dk->A * vph * c);
   f[RED_VPS] = (dk->C + 2.0 * mr2) / (dk->C + mr2) * vth * vph * s - c * f[RED_VPH];
   f[RED_PH] = vph;

@@ -24,11 +24,11 @@
 
 /* the physical disk */
 typedef struct red_disk {
-  double r;  /* radius, m */
-  double m;  /* mass, kg */
-  double A;  /* moment about a diameter, kg m^2 */
-  double C;  /* moment about the symmetry axis, kg m^2; 0 <= C <= 2A */
-  double g;  /* gravity, m/s^2 (>= 0) */
+  double r; /* radius, m */
+  double m; /* mass, kg */
+  double A; /* moment about a diameter, kg m^2 */
+  double C; /* moment about the symmetry axis, kg m^2; 0 <= C <= 2A */
+  double g; /* gravity, m/s^2 (>= 0) */
 } red_disk;
 
 /* indices into the 8-component state vector */

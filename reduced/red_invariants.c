@@ -63,8 +63,8 @@ int red_invariants(const red_disk *dk, const double y[RED_NSTATE], double *f1, d
   return 0;
 }
 
-int red_rates_from_invariants(const red_disk *dk, double th, double f1, double f2,
-                              double *v_phi, double *v_psi) {
+int red_rates_from_invariants(const red_disk *dk, double th, double f1, double f2, double *v_phi,
+                              double *v_psi) {
   const double mr2 = dk->m * dk->r * dk->r, s = sin(th);
   double u[2], du[2];
   if (red_rho_basis(dk, th, u, du)) return -1;

@@ -35,8 +35,7 @@ void red_state_from_lagrange(const double q[RED_LAGRANGE_DIM], double y[RED_NSTA
   y[RED_Y] = q[QY];
 }
 
-void red_lagrange_constraints(const red_disk *dk, const double q[RED_LAGRANGE_DIM],
-                              double res[2]) {
+void red_lagrange_constraints(const red_disk *dk, const double q[RED_LAGRANGE_DIM], double res[2]) {
   const double *v = q + NQ, sp = sin(q[QPH]), cp = cos(q[QPH]);
   res[0] = cp * v[QX] + sp * v[QY] - dk->r * sin(q[QTH]) * v[QTH];
   res[1] = -sp * v[QX] + cp * v[QY] + dk->r * cos(q[QTH]) * v[QPH] + dk->r * v[QPS];
@@ -64,7 +63,8 @@ int red_lagrange_rhs(double t, const double *q, double *f, void *params) {
       K[j * NK + NQ + i] = -a[i][j];
     }
   /* generalised forces: dT/dq - M' q' - dV/dq */
-  rhs[QTH] = mr2 * c * s * th_d * th_d + A * s * c * ph_d * ph_d - C * w3 * ph_d * s - m * dk->g * r * c;
+  rhs[QTH] =
+      mr2 * c * s * th_d * th_d + A * s * c * ph_d * ph_d - C * w3 * ph_d * s - m * dk->g * r * c;
   rhs[QPH] = -2.0 * (A - C) * s * c * th_d * ph_d + C * s * th_d * ps_d;
   rhs[QPS] = C * s * th_d * ph_d;
   /* -a' q' */

@@ -3,8 +3,7 @@
 
 #include "red_formulations.h"
 
-void red_momentum_from_state(const red_disk *dk, const double y[RED_NSTATE],
-                             double p[RED_NSTATE]) {
+void red_momentum_from_state(const red_disk *dk, const double y[RED_NSTATE], double p[RED_NSTATE]) {
   const double s = sin(y[RED_TH]), c = cos(y[RED_TH]), mr2 = dk->m * dk->r * dk->r;
   const double rho_psi = (dk->C + mr2) * (y[RED_VPS] + y[RED_VPH] * c);
   p[0] = y[RED_TH];
@@ -14,8 +13,7 @@ void red_momentum_from_state(const red_disk *dk, const double y[RED_NSTATE],
   for (int i = RED_PH; i < RED_NSTATE; i++) p[i] = y[i];
 }
 
-void red_state_from_momentum(const red_disk *dk, const double p[RED_NSTATE],
-                             double y[RED_NSTATE]) {
+void red_state_from_momentum(const red_disk *dk, const double p[RED_NSTATE], double y[RED_NSTATE]) {
   const double s = sin(p[0]), c = cos(p[0]), mr2 = dk->m * dk->r * dk->r;
   y[RED_TH] = p[0];
   y[RED_VTH] = p[1] / (dk->A + mr2);

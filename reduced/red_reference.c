@@ -26,6 +26,11 @@ static double frequency(const double *y, void *p) {
 void red_reference_init(red_reference *ref, const red_disk *disk, double theta_limit) {
   ref->disk = *disk;
   ref->theta_limit = theta_limit;
-  ref->sys = (red_system){RED_NSTATE, reduced_rhs, ref, frequency, 2, {theta_low, theta_high},
+  ref->sys = (red_system){RED_NSTATE,
+                          reduced_rhs,
+                          ref,
+                          frequency,
+                          2,
+                          {theta_low, theta_high},
                           {"theta_low", "theta_high"}};
 }

@@ -23,13 +23,13 @@ typedef int (*red_rhs_fn)(double t, const double *y, double *f, void *params);
 typedef double (*red_event_fn)(double t, const double *y, void *params);
 
 typedef struct red_system {
-  size_t dim;        /* number of states, <= RED_MAX_DIM */
-  red_rhs_fn rhs;    /* right-hand side */
-  void *params;      /* passed to rhs and events */
+  size_t dim;     /* number of states, <= RED_MAX_DIM */
+  red_rhs_fn rhs; /* right-hand side */
+  void *params;   /* passed to rhs and events */
   /* optional: the fastest angular frequency in the motion at y (rad/s); steppers
    * that interpolate from step ends bound h by it (see red_step_gsl.c) */
   double (*frequency)(const double *y, void *params);
-  size_t nevents;    /* <= RED_MAX_EVENTS */
+  size_t nevents; /* <= RED_MAX_EVENTS */
   red_event_fn events[RED_MAX_EVENTS];
   const char *event_names[RED_MAX_EVENTS];
 } red_system;
@@ -99,16 +99,16 @@ typedef int (*red_sample_fn)(double t, const double *y, void *ctx);
 
 typedef struct red_run {
   const red_stepper_type *stepper;
-  double rtol, atol;   /* tolerances passed to the stepper */
-  double t0, t_end;    /* s */
-  double output_dt;    /* sample spacing, s; samples at t0 + k output_dt and at the end */
+  double rtol, atol; /* tolerances passed to the stepper */
+  double t0, t_end;  /* s */
+  double output_dt;  /* sample spacing, s; samples at t0 + k output_dt and at the end */
   red_sample_fn sample;
   void *sample_ctx;
 } red_run;
 
 typedef struct red_result {
-  double t_final;      /* time of the last sample, s */
-  int event;           /* index of the event that ended the run, or -1 */
+  double t_final; /* time of the last sample, s */
+  int event;      /* index of the event that ended the run, or -1 */
   red_stats stats;
 } red_result;
 

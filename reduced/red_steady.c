@@ -9,13 +9,12 @@
 #include <math.h>
 #include <string.h>
 
-int red_steady_from_phi_dot(const red_disk *dk, double th, double vph, double *vps,
-                            dv_error *err) {
+int red_steady_from_phi_dot(const red_disk *dk, double th, double vph, double *vps, dv_error *err) {
   const double s = sin(th), c = cos(th), mr2 = dk->m * dk->r * dk->r;
   if (!(vph != 0.0) || !isfinite(vph))
     return dv_fail(err, DV_EINPUT, "a steady motion needs phi_dot != 0");
-  *vps = (dk->A * vph * vph * c * s - dk->m * dk->g * dk->r * c) / ((dk->C + mr2) * vph * s) -
-         vph * c;
+  *vps =
+      (dk->A * vph * vph * c * s - dk->m * dk->g * dk->r * c) / ((dk->C + mr2) * vph * s) - vph * c;
   return isfinite(*vps) ? DV_OK : dv_fail(err, DV_EINPUT, "no steady motion at this tilt");
 }
 

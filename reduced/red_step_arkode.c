@@ -99,6 +99,12 @@ static void ark_stats(const void *p, red_stats *out) {
 }
 
 const red_stepper_type red_arkode_fehlberg13 = {
-    "arkode-fehlberg13", "SUNDIALS ARKODE explicit Fehlberg 13-stage 8(7), Hermite output",
-    RED_CAP_DENSE, ark_alloc, ark_reset, ark_step, ark_dense, ark_stats, ark_free};
-
+    "arkode-fehlberg13",
+    "SUNDIALS ARKODE explicit Fehlberg 13-stage 8(7), Hermite output",
+    RED_CAP_DENSE,
+    ark_alloc,
+    ark_reset,
+    ark_step,
+    ark_dense,
+    ark_stats,
+    ark_free};

@@ -128,8 +128,13 @@ static void cv_stats(const void *p, red_stats *out) {
 
 const red_stepper_type red_cvode_adams = {
     "cvode-adams", "SUNDIALS CVODE Adams-Moulton (orders 1-12), fixed-point iteration",
-    RED_CAP_DENSE, alloc_adams, cv_reset, cv_step, cv_dense, cv_stats, cv_free};
+    RED_CAP_DENSE, alloc_adams,
+    cv_reset,      cv_step,
+    cv_dense,      cv_stats,
+    cv_free};
 const red_stepper_type red_cvode_bdf = {
-    "cvode-bdf", "SUNDIALS CVODE BDF (orders 1-5), Newton with dense LU",
-    RED_CAP_DENSE, alloc_bdf, cv_reset, cv_step, cv_dense, cv_stats, cv_free};
-
+    "cvode-bdf",   "SUNDIALS CVODE BDF (orders 1-5), Newton with dense LU",
+    RED_CAP_DENSE, alloc_bdf,
+    cv_reset,      cv_step,
+    cv_dense,      cv_stats,
+    cv_free};

@@ -31,12 +31,13 @@ typedef struct gsl_stepper {
   double step_fraction; /* h <= step_fraction / frequency */
   double y[RED_MAX_DIM];
   long rhs_evals;
-  int nodes;                               /* history length, <= NODES */
-  double tn[NODES];                        /* node times, oldest first */
-  double yn[RED_MAX_DIM][NODES];           /* y at the nodes, per component */
-  double fn[RED_MAX_DIM][NODES];           /* y' at the nodes */
-  double dd[RED_MAX_DIM][2 * NODES];       /* divided differences */
+  int nodes;                         /* history length, <= NODES */
+  double tn[NODES];                  /* node times, oldest first */
+  double yn[RED_MAX_DIM][NODES];     /* y at the nodes, per component */
+  double fn[RED_MAX_DIM][NODES];     /* y' at the nodes */
+  double dd[RED_MAX_DIM][2 * NODES]; /* divided differences */
   double z[2 * NODES];
+  int dd_valid; /* dd matches the nodes */
 } gsl_stepper;
 
 static int gsl_rhs(double t, const double y[], double f[], void *p) {
@@ -45,11 +46,15 @@ static int gsl_rhs(double t, const double y[], double f[], void *p) {
   return s->sys->rhs(t, y, f, s->sys->params) ? GSL_EBADFUNC : GSL_SUCCESS;
 }
 
-/* append (t, y, y') to the history and rebuild the interpolant */
-static int push_node(gsl_stepper *s, dv_error *err) {
+/* append (t, y, y') to the history; the interpolant is rebuilt when needed.
+ * f is y' at the new node (evolve's dydt_out after a step), or NULL */
+static int push_node(gsl_stepper *s, const double *f_node, dv_error *err) {
   const size_t n = s->sys->dim;
   double f[RED_MAX_DIM];
-  if (gsl_rhs(s->t, s->y, f, s)) return dv_fail(err, DV_ENUMERIC, "state left the domain");
+  if (f_node)
+    memcpy(f, f_node, n * sizeof(double));
+  else if (gsl_rhs(s->t, s->y, f, s))
+    return dv_fail(err, DV_ENUMERIC, "state left the domain");
   if (s->nodes == NODES) {
     memmove(s->tn, s->tn + 1, (NODES - 1) * sizeof(double));
     for (size_t i = 0; i < n; i++) {
@@ -64,8 +69,7 @@ static int push_node(gsl_stepper *s, dv_error *err) {
     s->fn[i][s->nodes] = f[i];
   }
   s->nodes++;
-  for (size_t i = 0; i < n; i++)
-    gsl_poly_dd_hermite_init(s->dd[i], s->z, s->tn, s->yn[i], s->fn[i], (size_t)s->nodes);
+  s->dd_valid = 0;
   return DV_OK;
 }
 
@@ -111,7 +115,7 @@ static int gsl_reset(void *p, double t0, const double *y0, dv_error *err) {
   s->h = 1e-4; /* small first steps keep the low-degree start of the interpolant accurate */
   memcpy(s->y, y0, s->sys->dim * sizeof(double));
   s->nodes = 0;
-  return push_node(s, err);
+  return push_node(s, NULL, err);
 }
 
 static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
@@ -120,13 +124,14 @@ static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
     const double h_max = s->step_fraction / s->sys->frequency(s->y, s->sys->params);
     if (s->h > h_max) s->h = h_max;
   }
-  int status = gsl_odeiv2_evolve_apply(s->evolve, s->control, s->step, &s->gsys, &s->t, t_max,
-                                       &s->h, s->y);
+  int status =
+      gsl_odeiv2_evolve_apply(s->evolve, s->control, s->step, &s->gsys, &s->t, t_max, &s->h, s->y);
   if (status != GSL_SUCCESS)
     return dv_fail(err, DV_ENUMERIC, "GSL %s failed at t = %.17g: %s", s->step->type->name, s->t,
                    gsl_strerror(status));
   *t = s->t;
-  return push_node(s, err);
+  /* rk8pd and msadams leave y' at the step's end in dydt_out */
+  return push_node(s, s->evolve->dydt_out, err);
 }
 
 static int gsl_dense(void *p, double t, double *y, dv_error *err) {
@@ -135,6 +140,11 @@ static int gsl_dense(void *p, double t, double *y, dv_error *err) {
   if (t == s->t) {
     memcpy(y, s->y, s->sys->dim * sizeof(double));
     return DV_OK;
+  }
+  if (!s->dd_valid) {
+    for (size_t i = 0; i < s->sys->dim; i++)
+      gsl_poly_dd_hermite_init(s->dd[i], s->z, s->tn, s->yn[i], s->fn[i], (size_t)s->nodes);
+    s->dd_valid = 1;
   }
   for (size_t i = 0; i < s->sys->dim; i++)
     y[i] = gsl_poly_dd_eval(s->dd[i], s->z, 2 * (size_t)s->nodes, t);
@@ -149,12 +159,28 @@ static void gsl_stats(const void *p, red_stats *out) {
 }
 
 const red_stepper_type red_gsl_rk8pd = {
-    "gsl-rk8pd", "GSL Prince-Dormand 8(9), free steps, degree-7 Hermite output",
-    RED_CAP_DENSE, alloc_rk8pd, gsl_reset, gsl_step, gsl_dense, gsl_stats, gsl_free_stepper};
+    "gsl-rk8pd",     "GSL Prince-Dormand 8(9), free steps, degree-7 Hermite output",
+    RED_CAP_DENSE,   alloc_rk8pd,
+    gsl_reset,       gsl_step,
+    gsl_dense,       gsl_stats,
+    gsl_free_stepper};
 const red_stepper_type red_gsl_rk8pd_stepped = {
-    "gsl-rk8pd-stepped", "GSL Prince-Dormand 8(9) stepping onto every output time",
-    0, alloc_rk8pd, gsl_reset, gsl_step, gsl_dense, gsl_stats, gsl_free_stepper};
+    "gsl-rk8pd-stepped",
+    "GSL Prince-Dormand 8(9) stepping onto every output time",
+    0,
+    alloc_rk8pd,
+    gsl_reset,
+    gsl_step,
+    gsl_dense,
+    gsl_stats,
+    gsl_free_stepper};
 const red_stepper_type red_gsl_msadams = {
-    "gsl-msadams", "GSL variable-order Adams (orders 1-12) stepping onto every output time",
-    0, alloc_msadams, gsl_reset, gsl_step, gsl_dense, gsl_stats, gsl_free_stepper};
-
+    "gsl-msadams",
+    "GSL variable-order Adams (orders 1-12) stepping onto every output time",
+    0,
+    alloc_msadams,
+    gsl_reset,
+    gsl_step,
+    gsl_dense,
+    gsl_stats,
+    gsl_free_stepper};

@@ -4,8 +4,12 @@
 #include "red_solver.h"
 
 const red_stepper_type *const red_steppers[] = {
-    &red_gsl_rk8pd,     &red_gsl_rk8pd_stepped, &red_gsl_msadams,
-    &red_cvode_adams,   &red_cvode_bdf,         &red_arkode_fehlberg13,
+    &red_gsl_rk8pd,
+    &red_gsl_rk8pd_stepped,
+    &red_gsl_msadams,
+    &red_cvode_adams,
+    &red_cvode_bdf,
+    &red_arkode_fehlberg13,
     NULL,
 };
 

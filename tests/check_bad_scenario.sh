@@ -89,7 +89,7 @@ case $mode in
     esac ;;
 esac
 
-(cd "$tmp" && exec timeout 20 "$diskval" simulate "$file" --engine reduced --out "$tmp/out.csv" \
+(cd "$tmp" && exec timeout -k 5 20 "$diskval" simulate "$file" --engine reduced --out "$tmp/out.csv" \
   >"$tmp/stdout" 2>"$tmp/stderr" </dev/null)
 status=$?
 [ "$status" -eq 124 ] && fail "timed out after 20 s"

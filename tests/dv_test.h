@@ -8,21 +8,22 @@
 
 static int dv_test_failures = 0;
 
-#define CHECK(cond, ...)                                           \
-  do {                                                             \
-    if (!(cond)) {                                                 \
-      dv_test_failures++;                                          \
+#define CHECK(cond, ...)                                                       \
+  do {                                                                         \
+    if (!(cond)) {                                                             \
+      dv_test_failures++;                                                      \
       fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond); \
-      fprintf(stderr, __VA_ARGS__);                                \
-      fputc('\n', stderr);                                         \
-    }                                                              \
+      fprintf(stderr, __VA_ARGS__);                                            \
+      fputc('\n', stderr);                                                     \
+    }                                                                          \
   } while (0)
 
 /* |got - want| <= tol, printing both on failure */
-#define CHECK_NEAR(got, want, tol, what)                                        \
-  CHECK(fabs((got) - (want)) <= (tol), "%s: got %.17g want %.17g (|diff| %.3g > %.3g)", \
-        what, (double)(got), (double)(want), fabs((got) - (want)), (double)(tol))
+#define CHECK_NEAR(got, want, tol, what)                                                      \
+  CHECK(fabs((got) - (want)) <= (tol), "%s: got %.17g want %.17g (|diff| %.3g > %.3g)", what, \
+        (double)(got), (double)(want), fabs((got) - (want)), (double)(tol))
 
-#define TEST_RESULT() (dv_test_failures ? (fprintf(stderr, "%d check(s) failed\n", dv_test_failures), 1) : 0)
+#define TEST_RESULT() \
+  (dv_test_failures ? (fprintf(stderr, "%d check(s) failed\n", dv_test_failures), 1) : 0)
 
 #endif

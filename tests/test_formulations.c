@@ -16,8 +16,8 @@
 static void compare(const red_disk *dk, const tl_traj *ref, const tl_traj *other, const char *what,
                     int state) {
   double th, path;
-  CHECK(other->status == DV_OK && other->n == ref->n, "%s: state %d: status %d, %ld samples",
-        what, state, other->status, other->n);
+  CHECK(other->status == DV_OK && other->n == ref->n, "%s: state %d: status %d, %ld samples", what,
+        state, other->status, other->n);
   tl_compare(dk, ref, other, &th, &path);
   printf("state %d %-28s theta %.2e rad  contact %.2e m\n", state, what, th, path);
   CHECK(th <= LIMIT && path <= LIMIT, "%s: state %d: theta %.3g, contact point %.3g", what, state,

@@ -82,8 +82,11 @@ int main(void) {
   const struct {
     double a, c;
     const char *name;
-  } disks[] = {{0.25, 0.5, "uniform"}, {0.25, 0.01, "C = 0.01 m r^2"}, {0.25, 0.0, "C = 0"},
-               {0.28, 0.5, "A = 0.28, C = 0.5"}, {0.25, 0.25 / (1.0 + 0.25) * 0.25 / 0.25, "k = 1/4"}};
+  } disks[] = {{0.25, 0.5, "uniform"},
+               {0.25, 0.01, "C = 0.01 m r^2"},
+               {0.25, 0.0, "C = 0"},
+               {0.28, 0.5, "A = 0.28, C = 0.5"},
+               {0.25, 0.25 / (1.0 + 0.25) * 0.25 / 0.25, "k = 1/4"}};
   /* k = 1/4 exactly: C/(C + m r^2) = A/(m r^2) / 4 ... solved below */
   for (size_t i = 0; i < sizeof disks / sizeof disks[0]; i++) {
     red_disk dk = tl_disk(disks[i].a, disks[i].c);

@@ -41,8 +41,8 @@ static void check_convergence(void) {
       tl_compare(&dk, &ref, &tr, &err[k], &path);
       tl_free(&tr);
     }
-    printf("%-20s theta error at rtol 1e-3, 1e-6, 1e-9, 1e-12: %.2e %.2e %.2e %.2e\n",
-           (*T)->name, err[0], err[1], err[2], err[3]);
+    printf("%-20s theta error at rtol 1e-3, 1e-6, 1e-9, 1e-12: %.2e %.2e %.2e %.2e\n", (*T)->name,
+           err[0], err[1], err[2], err[3]);
     CHECK(err[3] < 1e-2 * err[0], "%s does not converge", (*T)->name);
     for (int k = 1; k < 4; k++)
       CHECK(err[k] < 2.0 * err[k - 1], "%s: error grows from rtol 1e%d", (*T)->name, -3 * k);
@@ -63,7 +63,8 @@ static void check_turning_points(double a_ratio, double c_ratio) {
   }
   printf("C/mr^2 %.2f: turning points [%.9f, %.9f], integrated [%.9f, %.9f]\n", c_ratio, range[0],
          range[1], lo, hi);
-  /* sampled every 1 ms, the extremes are within ~(1e-3)^2 theta'' / 2 ~ 1e-5 of the turning points */
+  /* sampled every 1 ms, the extremes are within ~(1e-3)^2 theta'' / 2 ~ 1e-5 of the turning points
+   */
   CHECK(!falls && lo >= range[0] - 1e-9 && hi <= range[1] + 1e-9, "trajectory leaves the range");
   CHECK(lo - range[0] < 1e-4 && range[1] - hi < 1e-4, "turning points not reached");
   tl_free(&tr);
