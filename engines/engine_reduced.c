@@ -55,10 +55,14 @@ static int reduced_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   return red_integrator_reset(e->in, 0.0, e->t_end, state, err);
 }
 
-static int reduced_advance(void *p, double t, double *t_reached, double state[RED_NSTATE],
-                           dv_error *err) {
+static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
   reduced_engine *e = p;
-  return red_integrator_advance(e->in, t, t_reached, state, &e->event, err);
+  const int status = red_integrator_advance(e->in, t, &out->t, out->y, &e->event, err);
+  red_contact_point(&e->ref.disk, out->y, out->contact);
+  out->energy = red_energy(&e->ref.disk, out->y);
+  out->slip = out->penetration = 0.0;
+  out->contacts = 1;
+  return status;
 }
 
 static void reduced_stats(const void *p, dv_engine_stats *out) {
@@ -68,7 +72,8 @@ static void reduced_stats(const void *p, dv_engine_stats *out) {
   memset(out, 0, sizeof *out);
   out->steps = s.steps;
   out->rhs_evals = s.rhs_evals;
-  snprintf(out->outcome, sizeof out->outcome, "%s", e->event >= 0 ? "event" : "completed");
+  out->contacts_max = 1;
+  out->outcome = e->event >= 0 ? DV_OUTCOME_EVENT : DV_OUTCOME_COMPLETED;
   if (e->event >= 0)
     snprintf(out->detail, sizeof out->detail, "theta reached %s limit %g rad",
              e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper",

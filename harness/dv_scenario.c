@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -57,6 +58,7 @@ static const char *const ENGINES[] = {"reduced", "ode", "mujoco"};
 #define NENGINES (sizeof ENGINES / sizeof ENGINES[0])
 
 #define MAX_SECTIONS 16
+#define MAX_SPECS 64
 
 typedef struct parse_ctx {
   const char *path; /* for messages */
@@ -66,6 +68,8 @@ typedef struct parse_ctx {
   dv_error *err;
   char value[NKEYS][256];
   int value_line[NKEYS]; /* 0: not given */
+  char spec_value[MAX_SPECS][128];
+  int spec_line[MAX_SPECS];
   char sections[MAX_SECTIONS][64];
   int section_line[MAX_SECTIONS];
   int nsections;
@@ -118,8 +122,9 @@ static int section_line(const parse_ctx *c, const char *section) {
   return 0;
 }
 
+/* index of s in list (n entries, or up to a NULL entry), or -1 */
 static int find_in(const char *const *list, size_t n, const char *s) {
-  for (size_t i = 0; i < n; i++)
+  for (size_t i = 0; i < n && list[i]; i++)
     if (strcmp(list[i], s) == 0) return (int)i;
   return -1;
 }
@@ -174,6 +179,18 @@ static int set_key(parse_ctx *c, int line, const char *section, const char *key,
                      c->value_line[i]);
     snprintf(c->value[i], sizeof c->value[i], "%s", value);
     c->value_line[i] = line;
+    return 1;
+  }
+  for (size_t i = 0; i < dv_nsetting_specs && i < MAX_SPECS; i++) {
+    const dv_setting_spec *sp = &dv_setting_specs[i];
+    if (strcmp(sp->section, section) != 0) continue;
+    known_section = 1;
+    if (strcmp(sp->key, key) != 0) continue;
+    if (c->spec_line[i] > 0 && line > 0)
+      return fail_at(c, line, key, "given twice in [%s] (first on line %d)", section,
+                     c->spec_line[i]);
+    snprintf(c->spec_value[i], sizeof c->spec_value[i], "%s", value);
+    c->spec_line[i] = line;
     return 1;
   }
   if (!known_section) return fail_at(c, line, section, "unknown section [%s]", section);
@@ -251,9 +268,43 @@ static int line_of(const parse_ctx *c, const char *section, const char *key) {
 
 static int known_section(const char *name) {
   if (!strcmp(name, "tolerance")) return 1;
+  for (size_t i = 0; i < dv_nsetting_specs; i++)
+    if (!strcmp(dv_setting_specs[i].section, name)) return 1;
   if (!strncmp(name, "tolerance.", 10)) return find_in(ENGINES, NENGINES, name + 10) >= 0;
   for (size_t i = 0; i < NKEYS; i++)
     if (!strcmp(KEYS[i].section, name)) return 1;
+  return 0;
+}
+
+/* the engine settings: defaults, names of choices, ranges */
+static int read_settings(parse_ctx *c) {
+  for (size_t i = 0; i < dv_nsetting_specs && i < MAX_SPECS; i++) {
+    const dv_setting_spec *sp = &dv_setting_specs[i];
+    double v = sp->def;
+    const char *text = c->spec_value[i];
+    if (c->spec_line[i] && sp->choices) {
+      int k = find_in(sp->choices, SIZE_MAX, text);
+      if (k < 0) {
+        char list[160] = "";
+        for (size_t j = 0; sp->choices[j]; j++)
+          snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", j ? ", " : "",
+                   sp->choices[j]);
+        return fail_at(c, c->spec_line[i], sp->key, "'%s' is not one of %s", text, list), -1;
+      }
+      v = k;
+    } else if (c->spec_line[i] && parse_number(text, &v)) {
+      return fail_at(c, c->spec_line[i], sp->key, "not a number: '%s'", text), -1;
+    }
+    if (sp->is_int && v != floor(v))
+      return fail_at(c, c->spec_line[i], sp->key, "%g is not a whole number", v), -1;
+    if (!(v >= sp->lo && v <= sp->hi))
+      return fail_at(c, c->spec_line[i], sp->key, "%g is outside [%g, %g]", v, sp->lo, sp->hi), -1;
+    char *field = (char *)c->sc + sp->offset;
+    if (sp->is_int)
+      *(int *)field = (int)v;
+    else
+      *(double *)field = v;
+  }
   return 0;
 }
 
@@ -318,6 +369,7 @@ static int validate(parse_ctx *c) {
       {"engines.reduced", "theta_limit", 0.01, 0.0, M_PI / 2, 0, &rs->theta_limit},
   };
   if (read_ranges(c, solver, 3)) return -1;
+  if (read_settings(c)) return -1;
 
   double *y = sc->initial;
   double radius = 0.0, steady_phi_dot = 0.0;

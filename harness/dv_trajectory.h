@@ -14,8 +14,8 @@
 
 #define DV_CSV_HEADER "t,theta,phi,psi,x,y,contact_x,contact_y,theta_dot,phi_dot,psi_dot,energy"
 
-/* one CSV row for state y at time t */
-void dv_csv_row(FILE *fp, const red_disk *disk, double t, const double y[RED_NSTATE]);
+/* one CSV row */
+void dv_csv_row(FILE *fp, const dv_sample *s);
 
 /* run engine over sc, writing CSV rows to fp; stats filled in any case.
  * Returns DV_OK, DV_EVENT (ended early) or < 0 with err set. */

@@ -1,0 +1,113 @@
+/* dv_pose: the DESIGN section 1 mapping, both ways; checked by
+ * tests/test_pose (round trip, rim point at rest, equal energies). */
+#include "dv_pose.h"
+
+#include <math.h>
+#include <string.h>
+
+static void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* body axis k (column k of R) */
+static void axis(const double R[9], int k, double v[3]) {
+  v[0] = R[k];
+  v[1] = R[3 + k];
+  v[2] = R[6 + k];
+}
+
+void dv_geometry_contact_vector(const dv_geometry *g, const double R[9], double rho[3]) {
+  double n[3];
+  axis(R, 2, n);
+  const double c = n[2], s = sqrt(fmax(0.0, 1.0 - c * c));
+  if (g->shape == DV_SHAPE_ELLIPSOID) {
+    /* support point in -ez of the ellipsoid diag(r, r, e): -E^2 u / |E u|, u = R^T ez */
+    const double u[3] = {R[6], R[7], R[8]};
+    const double E2[3] = {g->radius * g->radius, g->radius * g->radius,
+                          g->half_thickness * g->half_thickness};
+    const double norm = sqrt(E2[0] * u[0] * u[0] + E2[1] * u[1] * u[1] + E2[2] * u[2] * u[2]);
+    double b[3];
+    for (int i = 0; i < 3; i++) b[i] = -E2[i] * u[i] / norm;
+    for (int i = 0; i < 3; i++) rho[i] = R[3 * i] * b[0] + R[3 * i + 1] * b[1] + R[3 * i + 2] * b[2];
+    return;
+  }
+  /* d = (cos(theta) n - ez) / sin(theta) */
+  const double sg = (c > 0.0) - (c < 0.0);
+  for (int i = 0; i < 3; i++) {
+    const double d = (s > 0.0) ? (c * n[i] - (i == 2)) / s : 0.0;
+    rho[i] = g->radius * d - g->half_thickness * sg * n[i];
+  }
+}
+
+void dv_pose_from_state(const dv_geometry *g, const double y[RED_NSTATE], dv_pose *p) {
+  const double th = y[RED_TH], ph = y[RED_PH], ps = y[RED_PS];
+  const double s = sin(th), c = cos(th), sp = sin(ph), cp = cos(ph);
+  const double a[3] = {cp, sp, 0.0}, t[3] = {sp, -cp, 0.0};
+  const double d[3] = {c * a[0], c * a[1], -s}, n[3] = {s * a[0], s * a[1], c};
+  const double cs = cos(ps), ss = sin(ps);
+  for (int i = 0; i < 3; i++) {
+    p->R[3 * i + 0] = cs * t[i] + ss * d[i];
+    p->R[3 * i + 1] = -ss * t[i] + cs * d[i];
+    p->R[3 * i + 2] = n[i];
+  }
+  for (int i = 0; i < 3; i++)
+    p->omega[i] = y[RED_VPH] * (i == 2) - y[RED_VTH] * t[i] + y[RED_VPS] * n[i];
+  double rho[3], w_rho[3];
+  dv_geometry_contact_vector(g, p->R, rho);
+  cross(p->omega, rho, w_rho);
+  for (int i = 0; i < 3; i++) p->vel[i] = -w_rho[i];
+  p->pos[0] = y[RED_X];
+  p->pos[1] = y[RED_Y];
+  p->pos[2] = -rho[2];
+}
+
+/* the value of angle nearest prev, modulo 2 pi */
+static double unwrap(double angle, double prev) {
+  return angle + 2.0 * M_PI * round((prev - angle) / (2.0 * M_PI));
+}
+
+void dv_state_from_pose(const dv_pose *p, const double *prev, double y[RED_NSTATE]) {
+  double n[3], x1[3];
+  axis(p->R, 2, n);
+  axis(p->R, 0, x1);
+  const double c = fmax(-1.0, fmin(1.0, n[2])), th = acos(c), s = sin(th);
+  const double ph = atan2(n[1], n[0]);
+  const double a[3] = {cos(ph), sin(ph), 0.0}, t[3] = {a[1], -a[0], 0.0};
+  const double d[3] = {c * a[0], c * a[1], -s};
+  const double ps = atan2(dot(x1, d), dot(x1, t));
+  const double wz = p->omega[2], wn = dot(p->omega, n), s2 = s * s;
+  y[RED_TH] = th;
+  y[RED_VTH] = -dot(p->omega, t);
+  y[RED_VPH] = (wz - wn * c) / s2;
+  y[RED_VPS] = (wn - wz * c) / s2;
+  y[RED_PH] = prev ? unwrap(ph, prev[RED_PH]) : ph;
+  y[RED_PS] = prev ? unwrap(ps, prev[RED_PS]) : ps;
+  y[RED_X] = p->pos[0];
+  y[RED_Y] = p->pos[1];
+}
+
+double dv_pose_energy(const red_disk *dk, const dv_pose *p) {
+  double n[3];
+  axis(p->R, 2, n);
+  /* I = A 1 + (C - A) n n^T */
+  const double wn = dot(p->omega, n);
+  const double rot = dk->A * dot(p->omega, p->omega) + (dk->C - dk->A) * wn * wn;
+  return 0.5 * dk->m * dot(p->vel, p->vel) + 0.5 * rot + dk->m * dk->g * p->pos[2];
+}
+
+void dv_pose_lowest_point(const dv_geometry *g, const dv_pose *p, double pt[3], double *slip) {
+  double rho[3], w_rho[3], v[3];
+  dv_geometry_contact_vector(g, p->R, rho);
+  cross(p->omega, rho, w_rho);
+  for (int i = 0; i < 3; i++) {
+    pt[i] = p->pos[i] + rho[i];
+    v[i] = p->vel[i] + w_rho[i];
+  }
+  *slip = sqrt(dot(v, v));
+}
