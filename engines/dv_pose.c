@@ -34,7 +34,8 @@ void dv_geometry_contact_vector(const dv_geometry *g, const double R[9], double 
     const double norm = sqrt(E2[0] * u[0] * u[0] + E2[1] * u[1] * u[1] + E2[2] * u[2] * u[2]);
     double b[3];
     for (int i = 0; i < 3; i++) b[i] = -E2[i] * u[i] / norm;
-    for (int i = 0; i < 3; i++) rho[i] = R[3 * i] * b[0] + R[3 * i + 1] * b[1] + R[3 * i + 2] * b[2];
+    for (int i = 0; i < 3; i++)
+      rho[i] = R[3 * i] * b[0] + R[3 * i + 1] * b[1] + R[3 * i + 2] * b[2];
     return;
   }
   /* d = (cos(theta) n - ez) / sin(theta) */

@@ -43,32 +43,32 @@ typedef struct dv_reduced_settings {
 
 /* [engines.mujoco]: MuJoCo 2.2 settings (defaults: dv_setting_specs) */
 typedef struct dv_mujoco_settings {
-  double timestep;          /* s */
-  int integrator;           /* 0 euler, 1 rk4, 2 implicit */
-  int cone;                 /* 0 pyramidal, 1 elliptic */
-  double impratio;          /* frictional-to-normal impedance ratio */
-  int solver;               /* 0 pgs, 1 cg, 2 newton */
-  double tolerance;         /* solver tolerance */
-  int iterations;           /* solver iterations */
-  int noslip_iterations;    /* noslip solver iterations */
-  double solref_timeconst;  /* s (MuJoCo raises it to >= 2 timestep) */
-  double solref_dampratio;  /* 1: critical damping */
+  double timestep;                               /* s */
+  int integrator;                                /* 0 euler, 1 rk4, 2 implicit */
+  int cone;                                      /* 0 pyramidal, 1 elliptic */
+  double impratio;                               /* frictional-to-normal impedance ratio */
+  int solver;                                    /* 0 pgs, 1 cg, 2 newton */
+  double tolerance;                              /* solver tolerance */
+  int iterations;                                /* solver iterations */
+  int noslip_iterations;                         /* noslip solver iterations */
+  double solref_timeconst;                       /* s (MuJoCo raises it to >= 2 timestep) */
+  double solref_dampratio;                       /* 1: critical damping */
   double solimp_dmin, solimp_dmax, solimp_width; /* impedance, width in m */
-  double friction;          /* sliding friction coefficient */
-  int geom;                 /* 0 cylinder, 1 ellipsoid */
-  double half_thickness;    /* m: cylinder half-length or ellipsoid semi-axis */
+  double friction;                               /* sliding friction coefficient */
+  int geom;                                      /* 0 cylinder, 1 ellipsoid */
+  double half_thickness; /* m: cylinder half-length or ellipsoid semi-axis */
 } dv_mujoco_settings;
 
 /* [engines.ode]: ODE 0.16 settings */
 typedef struct dv_ode_settings {
-  double timestep;          /* s */
-  int stepper;              /* 0 dWorldStep, 1 dWorldQuickStep */
-  int iterations;           /* QuickStep iterations */
-  double erp, cfm;          /* world error reduction, constraint force mixing */
-  int friction_model;       /* 0 coefficient (dContactApprox1), 1 force limit (N) */
-  double friction;          /* coefficient, or force limit in N */
+  double timestep;           /* s */
+  int stepper;               /* 0 dWorldStep, 1 dWorldQuickStep */
+  int iterations;            /* QuickStep iterations */
+  double erp, cfm;           /* world error reduction, constraint force mixing */
+  int friction_model;        /* 0 coefficient (dContactApprox1), 1 force limit (N) */
+  double friction;           /* coefficient, or force limit in N */
   double soft_erp, soft_cfm; /* contact softness */
-  double half_thickness;    /* m, cylinder half-length */
+  double half_thickness;     /* m, cylinder half-length */
 } dv_ode_settings;
 
 /* [engines.matched]: the reference for the disk an engine simulates */
@@ -81,11 +81,11 @@ typedef struct dv_matched_settings {
 typedef struct dv_setting_spec {
   const char *section;
   const char *key;
-  size_t offset;                /* into dv_scenario */
-  int is_int;                   /* stored as int (choices and counts) */
-  double def, lo, hi;           /* default and inclusive range */
-  const char *const *choices;   /* NULL-terminated names; value = index */
-  const char *doc;              /* units and meaning */
+  size_t offset;              /* into dv_scenario */
+  int is_int;                 /* stored as int (choices and counts) */
+  double def, lo, hi;         /* default and inclusive range */
+  const char *const *choices; /* NULL-terminated names; value = index */
+  const char *doc;            /* units and meaning */
 } dv_setting_spec;
 
 extern const dv_setting_spec dv_setting_specs[];

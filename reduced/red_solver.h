@@ -14,7 +14,7 @@
 #include "../common/dv_error.h"
 
 #define RED_MAX_DIM 16
-#define RED_MAX_EVENTS 4
+#define RED_MAX_EVENTS 6
 
 /* y' = f(t, y); returns 0, or non-zero when y is outside the domain */
 typedef int (*red_rhs_fn)(double t, const double *y, double *f, void *params);
