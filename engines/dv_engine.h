@@ -18,13 +18,13 @@
 
 /* one output sample */
 typedef struct dv_sample {
-  double t;               /* s */
-  double y[RED_NSTATE];   /* canonical state */
-  double contact[2];      /* lowest point of the body on the ground (x, y), m */
-  double energy;          /* mechanical energy, J */
-  double slip;            /* speed of the body's lowest point, m/s */
-  double penetration;     /* depth of the lowest point below the ground, m (>= 0) */
-  int contacts;           /* contact points the engine reports */
+  double t;             /* s */
+  double y[RED_NSTATE]; /* canonical state */
+  double contact[2];    /* lowest point of the body on the ground (x, y), m */
+  double energy;        /* mechanical energy, J */
+  double slip;          /* speed of the body's lowest point, m/s */
+  double penetration;   /* depth of the lowest point below the ground, m (>= 0) */
+  int contacts;         /* contact points the engine reports */
 } dv_sample;
 
 /* outcomes of a run */
@@ -39,14 +39,14 @@ typedef enum dv_outcome {
 const char *dv_outcome_name(dv_outcome outcome);
 
 typedef struct dv_engine_stats {
-  long steps;          /* internal steps taken */
-  long rhs_evals;      /* right-hand side evaluations (reference), 0 for contact engines */
-  double slip_max;     /* largest slip speed seen at a sample, m/s */
+  long steps;             /* internal steps taken */
+  long rhs_evals;         /* right-hand side evaluations (reference), 0 for contact engines */
+  double slip_max;        /* largest slip speed seen at a sample, m/s */
   double penetration_max; /* m */
-  int contacts_max;    /* most contact points at a sample */
-  long warnings;       /* library warnings counted (MuJoCo) */
+  int contacts_max;       /* most contact points at a sample */
+  long warnings;          /* library warnings counted (MuJoCo) */
   dv_outcome outcome;
-  char detail[256];    /* why the run ended, when not completed */
+  char detail[256]; /* why the run ended, when not completed */
 } dv_engine_stats;
 
 typedef struct dv_engine_type {
