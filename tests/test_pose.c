@@ -1,0 +1,70 @@
+/* test_pose: the state <-> pose mapping of DESIGN section 1: round trip,
+ * the rim point at rest, the lowest point on the ground, equal energies. */
+#include <math.h>
+
+#include "dv_pose.h"
+#include "dv_test.h"
+#include "red_rolling.h"
+
+static const double STATES[][RED_NSTATE] = {
+    {1.2, 0.3, 2.0, -8.0, 0.1, 0.4, 0.5, -0.2},
+    {M_PI / 2 + 0.3, -0.5, -3.0, 12.0, -2.0, 3.0, 0.2, -0.1},
+    {0.2, 1.0, 0.5, 3.0, 3.1, -3.1, 0.0, 0.0},
+    {2.9, 0.0, -4.0, 0.0, 1.0, 2.0, 0.0, 0.0},
+    {M_PI / 2 - 1e-3, 0.0, 0.0, 20.0, 0.0, 0.0, 0.0, 0.0},
+};
+
+static void check_state(const double y[RED_NSTATE], const dv_geometry *g, const char *label) {
+  const red_disk dk = red_disk_uniform(0.1, 1.0, 9.81);
+  dv_pose p;
+  double back[RED_NSTATE], pt[3], slip;
+  dv_pose_from_state(g, y, &p);
+  dv_state_from_pose(&p, y, back);
+  for (int i = 0; i < RED_NSTATE; i++)
+    CHECK(fabs(back[i] - y[i]) <= 1e-12 * (1.0 + fabs(y[i])), "%s: component %d: %.17g -> %.17g",
+          label, i, y[i], back[i]);
+  /* the body frame is a rotation: orthonormal, right-handed */
+  double det = p.R[0] * (p.R[4] * p.R[8] - p.R[5] * p.R[7]) -
+               p.R[1] * (p.R[3] * p.R[8] - p.R[5] * p.R[6]) +
+               p.R[2] * (p.R[3] * p.R[7] - p.R[4] * p.R[6]);
+  CHECK(fabs(det - 1.0) < 1e-14, "%s: det R = %.17g", label, det);
+  dv_pose_lowest_point(g, &p, pt, &slip);
+  CHECK(fabs(pt[2]) < 1e-15 && slip < 1e-13, "%s: lowest point z %.3g, slip %.3g m/s", label,
+        pt[2], slip);
+  if (g->shape == DV_SHAPE_CYLINDER) {
+    red_rolling rr;
+    double s[RR_NSTATE];
+    red_rolling_init(&rr, &dk, g->half_thickness, 1.0, 0.01);
+    red_rolling_from_state(&rr, y, s);
+    const double e_ref = g->half_thickness == 0.0 ? red_energy(&dk, y) : red_rolling_energy(&rr, s);
+    const double e = dv_pose_energy(&dk, &p);
+    CHECK(fabs(e - e_ref) <= 1e-12 * fabs(e_ref), "%s: energy %.17g vs reference %.17g", label, e,
+          e_ref);
+  } else {
+    /* no point of the ellipsoid's surface lies below the support point */
+    double lowest = INFINITY;
+    for (int i = 0; i < 200; i++)
+      for (int j = 0; j < 100; j++) {
+        const double u = 2 * M_PI * i / 200, v = M_PI * (j + 0.5) / 100;
+        const double b[3] = {g->radius * cos(u) * sin(v), g->radius * sin(u) * sin(v),
+                             g->half_thickness * cos(v)};
+        const double z = p.pos[2] + p.R[6] * b[0] + p.R[7] * b[1] + p.R[8] * b[2];
+        lowest = fmin(lowest, z);
+      }
+    CHECK(lowest >= -1e-12, "%s: a surface point at z = %.3g", label, lowest);
+  }
+}
+
+int main(void) {
+  const dv_geometry geoms[] = {{DV_SHAPE_CYLINDER, 0.1, 0.0},
+                               {DV_SHAPE_CYLINDER, 0.1, 0.002},
+                               {DV_SHAPE_ELLIPSOID, 0.1, 0.002}};
+  const char *names[] = {"thin", "cylinder h 2 mm", "ellipsoid e 2 mm"};
+  for (size_t g = 0; g < 3; g++)
+    for (size_t k = 0; k < sizeof STATES / sizeof STATES[0]; k++) {
+      char label[64];
+      snprintf(label, sizeof label, "%s, state %zu", names[g], k);
+      check_state(STATES[k], &geoms[g], label);
+    }
+  return TEST_RESULT();
+}
