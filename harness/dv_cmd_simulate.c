@@ -5,6 +5,7 @@
 
 #include "dv_commands.h"
 #include "dv_engine.h"
+#include "dv_meta.h"
 #include "dv_output.h"
 #include "dv_trajectory.h"
 
@@ -17,7 +18,9 @@ static const char HELP[] =
     "one row every output_dt (and a last row where an event ends the run).\n"
     "  --engine NAME   engine to run (diskval engines lists them)\n"
     "  --set S.K=V     override key K of section S, e.g. --set engines.reduced.rtol=1e-10\n"
-    "  --out FILE      write to FILE (default, or '-': stdout); written whole or not at all\n";
+    "  --out FILE      write to FILE (default, or '-': stdout); written whole or not at all,\n"
+    "                  with FILE.json beside it: engine, versions, settings, outcome, stats\n"
+    "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
 
 int dv_usage_error(const char *command, const char *fmt, ...) {
   va_list ap;
@@ -78,12 +81,21 @@ int dv_cmd_simulate(int argc, char **argv) {
   int status = dv_trajectory_run(engine, &sc, out.fp, &stats, &err);
   if (status < 0) {
     dv_output_abort(&out);
-    fprintf(stderr, "diskval simulate: %s: %s: %s\n", sc.name, engine->name, err.msg);
+    fprintf(stderr, "diskval simulate: %s: %s: %s: %s\n", sc.name, engine->name,
+            dv_outcome_name(stats.outcome), err.msg);
     return DV_EXIT_ERROR;
   }
   if (dv_output_commit(&out, &err)) {
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
+  }
+  if (strcmp(out_path, "-") != 0) {
+    char meta[1100];
+    snprintf(meta, sizeof meta, "%s.json", out_path);
+    if (dv_meta_write(meta, engine, &sc, &stats, &err)) {
+      fprintf(stderr, "diskval simulate: %s\n", err.msg);
+      return DV_EXIT_ERROR;
+    }
   }
   if (status == DV_EVENT)
     fprintf(stderr, "diskval simulate: %s: %s: the run ended early: %s\n", sc.name, engine->name,

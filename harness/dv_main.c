@@ -6,6 +6,7 @@
 
 #include "dv_commands.h"
 #include "dv_engine.h"
+#include "dv_scenario.h"
 #include "red_solver.h"
 
 static const char HELP[] =
@@ -26,8 +27,24 @@ int dv_cmd_engines(int argc, char **argv) {
         "reference's integrators ([engines.reduced] integrator = NAME).");
     return DV_EXIT_OK;
   }
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engines; *e; e++) {
+    char section[64];
     printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
+    snprintf(section, sizeof section, "engines.%s", (*e)->name);
+    for (size_t i = 0; i < dv_nsetting_specs; i++) {
+      const dv_setting_spec *sp = &dv_setting_specs[i];
+      if (strcmp(sp->section, section) != 0) continue;
+      printf("    %-20s default ", sp->key);
+      if (sp->choices) {
+        printf("%-10s (", sp->choices[(int)sp->def]);
+        for (size_t j = 0; sp->choices[j]; j++) printf("%s%s", j ? ", " : "", sp->choices[j]);
+        printf(")");
+      } else {
+        printf("%-10g [%g, %g]", sp->def, sp->lo, sp->hi);
+      }
+      printf("%s%s\n", sp->doc[0] ? "  " : "", sp->doc);
+    }
+  }
   printf("\nreference integrators (default %s):\n", red_stepper_default()->name);
   for (const red_stepper_type *const *t = red_steppers; *t; t++)
     printf("  %-20s %s\n", (*t)->name, (*t)->description);

@@ -1,6 +1,7 @@
 /* dv_trajectory: the sampling loop over any engine. */
 #include "dv_trajectory.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "red_solver.h"
@@ -10,6 +11,12 @@ void dv_csv_row(FILE *fp, const dv_sample *s) {
   fprintf(fp, "%.12g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", s->t,
           y[RED_TH], y[RED_PH], y[RED_PS], y[RED_X], y[RED_Y], s->contact[0], s->contact[1],
           y[RED_VTH], y[RED_VPH], y[RED_VPS], s->energy);
+}
+
+static int sample_finite(const dv_sample *s) {
+  double sum = s->t + s->contact[0] + s->contact[1] + s->energy;
+  for (int i = 0; i < RED_NSTATE; i++) sum += s->y[i];
+  return isfinite(sum);
 }
 
 int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *fp,
@@ -30,10 +37,19 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
     status = type->advance(engine, t, &s, err);
+    if (status >= 0 && !sample_finite(&s)) {
+      status = dv_fail(err, DV_ENUMERIC, "non-finite state at t = %g s", t);
+      break;
+    }
     if (status >= 0 && fp) dv_csv_row(fp, &s);
     if (t >= sc->duration) break;
   }
   type->stats(engine, stats);
+  if (status == DV_ENUMERIC && stats->outcome < DV_OUTCOME_DIVERGED) {
+    /* the engine did not see it: the harness's own check caught it */
+    stats->outcome = DV_OUTCOME_DIVERGED;
+    snprintf(stats->detail, sizeof stats->detail, "%.255s", err ? err->msg : "diverged");
+  }
   type->free(engine);
   return status;
 }

@@ -1,0 +1,64 @@
+/* dv_meta: run metadata as JSON (cJSON). */
+#include "dv_meta.h"
+
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dv_output.h"
+
+void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) {
+  cJSON *o = cJSON_CreateObject();
+  char section[64];
+  snprintf(section, sizeof section, "engines.%s", engine->name);
+  /* both references integrate with the [engines.reduced] solver settings */
+  if (!strcmp(engine->name, "reduced") || !strcmp(engine->name, "matched")) {
+    cJSON_AddStringToObject(o, "integrator", sc->reduced.integrator);
+    cJSON_AddNumberToObject(o, "rtol", sc->reduced.rtol);
+    cJSON_AddNumberToObject(o, "atol", sc->reduced.atol);
+    cJSON_AddNumberToObject(o, "theta_limit", sc->reduced.theta_limit);
+  }
+  for (size_t i = 0; i < dv_nsetting_specs; i++) {
+    const dv_setting_spec *sp = &dv_setting_specs[i];
+    if (strcmp(sp->section, section) != 0) continue;
+    const char *field = (const char *)sc + sp->offset;
+    if (sp->choices)
+      cJSON_AddStringToObject(o, sp->key, sp->choices[*(const int *)field]);
+    else if (sp->is_int)
+      cJSON_AddNumberToObject(o, sp->key, *(const int *)field);
+    else
+      cJSON_AddNumberToObject(o, sp->key, *(const double *)field);
+  }
+  return o;
+}
+
+int dv_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
+                  const dv_engine_stats *st, dv_error *err) {
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddStringToObject(o, "engine", engine->name);
+  cJSON_AddStringToObject(o, "version", engine->version());
+  cJSON_AddItemToObject(o, "settings", dv_meta_settings(engine, sc));
+  cJSON *s = cJSON_AddObjectToObject(o, "run");
+  cJSON_AddStringToObject(s, "outcome", dv_outcome_name(st->outcome));
+  cJSON_AddStringToObject(s, "detail", st->detail);
+  cJSON_AddNumberToObject(s, "steps", (double)st->steps);
+  cJSON_AddNumberToObject(s, "rhs_evals", (double)st->rhs_evals);
+  cJSON_AddNumberToObject(s, "slip_max", st->slip_max);
+  cJSON_AddNumberToObject(s, "penetration_max", st->penetration_max);
+  cJSON_AddNumberToObject(s, "contacts_max", st->contacts_max);
+  cJSON_AddNumberToObject(s, "warnings", (double)st->warnings);
+  char *text = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  dv_output out;
+  int status = dv_output_open(&out, path, err);
+  if (!status) {
+    fputs(text, out.fp);
+    fputc('\n', out.fp);
+    status = dv_output_commit(&out, err);
+  }
+  free(text);
+  return status;
+}

@@ -1,0 +1,16 @@
+/* dv_meta: what a run used and how it ended, as JSON beside its output:
+ * engine, library versions, every setting of that engine, the run's stats. */
+#ifndef DV_META_H
+#define DV_META_H
+
+#include "dv_engine.h"
+#include "dv_scenario.h"
+
+/* a JSON object (cJSON *) describing engine's settings in sc */
+void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc);
+
+/* write path atomically: scenario, engine, version, settings, stats */
+int dv_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
+                  const dv_engine_stats *stats, dv_error *err);
+
+#endif
