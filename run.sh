@@ -36,6 +36,7 @@ case "${1:-run}" in
     ;;
   bench)
     "$BUILD_DIR/bench/bench_reduced"
+    "$BUILD_DIR/bench/bench_engines"
     ;;
   run)
     mkdir -p out
