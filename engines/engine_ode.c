@@ -1,14 +1,341 @@
-/* engine_ode: placeholder, replaced by the ode contact engine. */
+/* engine_ode: the disk as one rigid cylinder on a plane in ODE 0.16 (double
+ * precision, DESIGN section 4).
+ *
+ * Each step collides the cylinder with the plane directly (dCollide, at most
+ * 4 points), makes contact joints (Coulomb friction; no rolling or pivot
+ * friction), steps (dWorldStep or dWorldQuickStep; ODE's implicit gyroscopic
+ * term stays on) and empties the joint group. The world's ERP/CFM are set
+ * but only matter to non-contact joints: the contacts use soft_erp/soft_cfm.
+ *
+ * Faults end the run, never the process. ODE's error and debug handlers must
+ * not return (ODE calls exit or abort after them), so every entry point runs
+ * its ODE calls under setjmp and the handlers longjmp back with the message
+ * in a static buffer. The handlers, the jump target and that buffer are
+ * process-wide: one engine calls into ODE at a time (each run is
+ * single-threaded). After such a jump the world is only destroyed, not
+ * stepped again. Run-time checks, each step: a non-finite body state, a
+ * runaway energy, E > E0 + |E0|/2 + m g r, or the lowest point sunk deeper
+ * than r/20 (a few 1e-5 m is normal) is diverged; the lowest point more than
+ * r/100 above the ground for longer than 0.05 s is lost_contact.
+ */
+#include <math.h>
+#include <ode/ode.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
 #include "dv_engine.h"
+#include "dv_pose.h"
 
-static const char *version(void) { return "?"; }
-static void *alloc(const dv_scenario *sc, dv_error *err) {
-  (void)sc;
-  return dv_fail(err, DV_ESYSTEM, "the ode engine is not built yet"), (void *)0;
+#define ODE_MAX_CONTACTS 4
+#define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
+#define AIR_TIME 0.05   /* and for longer than this, s */
+#define SUNK_DEPTH 0.05 /* diverged: lowest point this deep below the ground, in radii */
+
+typedef struct ode_engine {
+  dv_ode_settings set;
+  red_disk disk;
+  dv_geometry geom;
+  dWorldID world;
+  dBodyID body;
+  dGeomID cylinder, plane;
+  dJointGroupID group;
+  long k;                    /* steps since reset: time = k timestep */
+  double prev_y[RED_NSTATE]; /* last canonical state, for unwrapping */
+  double e0;                 /* energy at reset, J */
+  double airborne;           /* s the lowest point has been off the ground */
+  int ncontacts;             /* contacts of the last collision */
+  int status;                /* < 0 once the run failed */
+  int broken;                /* an ODE error jumped out: the world is only destroyed */
+  dv_engine_stats st;
+} ode_engine;
+
+typedef int (*ode_call)(ode_engine *e, void *arg, dv_error *err);
+
+static jmp_buf *ode_jump;       /* where the error handlers return to */
+static ode_engine *ode_current; /* the engine inside a guarded call */
+static char ode_message[200];   /* the last message from ODE */
+
+/* error and debug handler: keep the message, jump back to the guard */
+static void ode_on_error(int num, const char *msg, va_list ap) {
+  vsnprintf(ode_message, sizeof ode_message, msg, ap);
+  if (ode_jump) longjmp(*ode_jump, num ? num : 1);
+  /* unreachable: every ODE call that can fail runs guarded; ODE aborts now */
+  fprintf(stderr, "ODE error outside a guarded call: %s\n", ode_message);
 }
-static int reset(void *e, const double s[RED_NSTATE], dv_error *err) { return DV_ESYSTEM; }
-static int advance(void *e, double t, dv_sample *out, dv_error *err) { return DV_ESYSTEM; }
-static void stats(const void *e, dv_engine_stats *out) {}
-static void release(void *e) {}
 
-const dv_engine_type dv_engine_ode = {"ode", "placeholder", version, alloc, reset, advance, stats, release};
+/* message handler (warnings, e.g. from dMassCheck): count and keep */
+static void ode_on_message(int num, const char *msg, va_list ap) {
+  vsnprintf(ode_message, sizeof ode_message, msg, ap);
+  if (ode_current) ode_current->st.warnings++;
+}
+
+/* initialise ODE and install the handlers, once per process (not thread-safe) */
+static void ode_init_once(void) {
+  static int done = 0;
+  if (done) return;
+  dInitODE2(0);
+  dSetErrorHandler(ode_on_error);
+  dSetDebugHandler(ode_on_error);
+  dSetMessageHandler(ode_on_message);
+  done = 1;
+}
+
+/* "ODE 0.16.2 double precision": the header's version, dGetConfiguration()'s precision */
+static const char *ode_version(void) {
+  static char text[64];
+  if (!text[0]) {
+    const char *conf = dGetConfiguration();
+    snprintf(text, sizeof text, "ODE %s %s precision", dODE_VERSION,
+             strstr(conf, "ODE_double_precision") ? "double" : "single");
+  }
+  return text;
+}
+
+/* mark the run failed: stats outcome and detail, err, and the status kept */
+static int ode_failed(ode_engine *e, dv_outcome outcome, dv_error *err, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(e->st.detail, sizeof e->st.detail, fmt, ap);
+  va_end(ap);
+  e->st.outcome = outcome;
+  e->status = DV_ENUMERIC;
+  return dv_fail(err, DV_ENUMERIC, "%s: %s", dv_outcome_name(outcome), e->st.detail);
+}
+
+/* the body's pose and velocities (world frame) */
+static void ode_read_pose(const ode_engine *e, dv_pose *p) {
+  const dReal *pos = dBodyGetPosition(e->body), *R = dBodyGetRotation(e->body);
+  const dReal *v = dBodyGetLinearVel(e->body), *w = dBodyGetAngularVel(e->body);
+  for (int i = 0; i < 3; i++) {
+    p->pos[i] = pos[i];
+    p->vel[i] = v[i];
+    p->omega[i] = w[i];
+    for (int j = 0; j < 3; j++) p->R[3 * i + j] = R[4 * i + j];
+  }
+}
+
+/* all 18 pose numbers are finite */
+static int ode_pose_finite(const dv_pose *p) {
+  double sum = 0.0;
+  for (int i = 0; i < 3; i++) sum += p->pos[i] + p->vel[i] + p->omega[i];
+  for (int i = 0; i < 9; i++) sum += p->R[i];
+  return isfinite(sum);
+}
+
+/* run fn under the error guard; an ODE error or debug message fails the run */
+static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
+  jmp_buf here;
+  jmp_buf *volatile outer = ode_jump;
+  ode_engine *volatile outer_engine = ode_current;
+  ode_jump = &here;
+  ode_current = e;
+  int status;
+  if (setjmp(here) == 0) {
+    status = fn(e, arg, err);
+  } else {
+    e->broken = 1;
+    dv_pose p;
+    ode_read_pose(e, &p);
+    status =
+        ode_pose_finite(&p)
+            ? ode_failed(e, DV_OUTCOME_ERROR, err, "ODE error: %s", ode_message)
+            : ode_failed(e, DV_OUTCOME_DIVERGED, err, "non-finite state (ODE: %s)", ode_message);
+  }
+  ode_jump = outer;
+  ode_current = outer_engine;
+  return status;
+}
+
+/* destroy the ODE objects (NULL-safe) */
+static int ode_destroy(ode_engine *e, void *arg, dv_error *err) {
+  if (e->group) dJointGroupDestroy(e->group);
+  if (e->cylinder) dGeomDestroy(e->cylinder);
+  if (e->plane) dGeomDestroy(e->plane);
+  if (e->world) dWorldDestroy(e->world); /* destroys the body too */
+  e->group = NULL, e->cylinder = e->plane = NULL, e->world = NULL, e->body = NULL;
+  return DV_OK;
+}
+
+/* NULL-safe free */
+static void ode_free(void *p) {
+  ode_engine *e = p;
+  if (!e) return;
+  ode_guarded(e, ode_destroy, NULL, NULL);
+  free(e);
+}
+
+/* world, body, cylinder and plane */
+static int ode_build(ode_engine *e, void *arg, dv_error *err) {
+  e->world = dWorldCreate();
+  dWorldSetGravity(e->world, 0.0, 0.0, -e->disk.g);
+  dWorldSetERP(e->world, e->set.erp);
+  dWorldSetCFM(e->world, e->set.cfm);
+  dWorldSetQuickStepNumIterations(e->world, e->set.iterations);
+  e->body = dBodyCreate(e->world);
+  dMass mass;
+  dMassSetParameters(&mass, e->disk.m, 0.0, 0.0, 0.0, e->disk.A, e->disk.A, e->disk.C, 0.0, 0.0,
+                     0.0);
+  dBodySetMass(e->body, &mass);
+  /* ODE's cylinder: axis along local z, length the full thickness */
+  e->cylinder = dCreateCylinder(NULL, e->geom.radius, 2.0 * e->geom.half_thickness);
+  dGeomSetBody(e->cylinder, e->body);
+  e->plane = dCreatePlane(NULL, 0.0, 0.0, 1.0, 0.0);
+  e->group = dJointGroupCreate(0);
+  return DV_OK;
+}
+
+/* an engine for the scenario's disk and [engines.ode] settings */
+static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
+  if (!(sc->disk.A > 0.0 && sc->disk.C > 0.0))
+    return dv_fail(err, DV_EINPUT, "ODE needs a positive definite inertia (A = %g, C = %g)",
+                   sc->disk.A, sc->disk.C),
+           NULL;
+  ode_engine *e = calloc(1, sizeof *e);
+  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  ode_init_once();
+  e->set = sc->ode;
+  e->disk = sc->disk;
+  e->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, sc->ode.half_thickness};
+  if (ode_guarded(e, ode_build, NULL, err) < 0) return ode_free(e), NULL;
+  return e;
+}
+
+/* collide the cylinder with the plane; with joints, add contact joints */
+static int ode_collide(ode_engine *e, int joints) {
+  dContactGeom cg[ODE_MAX_CONTACTS];
+  const int n = dCollide(e->cylinder, e->plane, ODE_MAX_CONTACTS, cg, sizeof cg[0]);
+  for (int i = 0; joints && i < n; i++) {
+    dContact c;
+    memset(&c, 0, sizeof c);
+    c.surface.mode = dContactSoftERP | dContactSoftCFM;
+    if (e->set.friction_model == 0) c.surface.mode |= dContactApprox1;
+    c.surface.mu = e->set.friction;
+    c.surface.soft_erp = e->set.soft_erp;
+    c.surface.soft_cfm = e->set.soft_cfm;
+    c.geom = cg[i];
+    dJointAttach(dJointCreateContact(e->world, e->group, &c), e->body, NULL);
+  }
+  return e->ncontacts = n;
+}
+
+/* place the body in the state (guarded part of reset) */
+static int ode_place(ode_engine *e, void *arg, dv_error *err) {
+  const double *state = arg;
+  dv_pose p;
+  dv_pose_from_state(&e->geom, state, &p);
+  dMatrix3 R = {0};
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) R[4 * i + j] = p.R[3 * i + j];
+  dJointGroupEmpty(e->group);
+  dBodySetPosition(e->body, p.pos[0], p.pos[1], p.pos[2]);
+  dBodySetRotation(e->body, R);
+  dBodySetLinearVel(e->body, p.vel[0], p.vel[1], p.vel[2]);
+  dBodySetAngularVel(e->body, p.omega[0], p.omega[1], p.omega[2]);
+  dBodySetForce(e->body, 0.0, 0.0, 0.0);
+  dBodySetTorque(e->body, 0.0, 0.0, 0.0);
+  ode_read_pose(e, &p);
+  e->e0 = dv_pose_energy(&e->disk, &p);
+  ode_collide(e, 0);
+  if (!ode_pose_finite(&p) || !isfinite(e->e0))
+    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "the initial pose or energy is not finite");
+  return DV_OK;
+}
+
+/* start a run from a canonical state */
+static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
+  ode_engine *e = p;
+  if (e->broken) return dv_fail(err, DV_ENUMERIC, "ODE failed earlier: %s", e->st.detail);
+  memset(&e->st, 0, sizeof e->st);
+  e->k = 0;
+  e->airborne = 0.0;
+  e->status = DV_OK;
+  memcpy(e->prev_y, state, sizeof e->prev_y);
+  for (int i = 0; i < RED_NSTATE; i++)
+    if (!isfinite(state[i]))
+      return ode_failed(e, DV_OUTCOME_ERROR, err, "non-finite initial state");
+  return ode_guarded(e, ode_place, (void *)state, err);
+}
+
+/* one step, then the divergence and lost-contact checks */
+static int ode_step(ode_engine *e, dv_error *err) {
+  const double dt = e->set.timestep;
+  ode_collide(e, 1);
+  if (e->set.stepper == 1)
+    dWorldQuickStep(e->world, dt);
+  else
+    dWorldStep(e->world, dt);
+  dJointGroupEmpty(e->group);
+  e->k++;
+  e->st.steps++;
+  dv_pose p;
+  ode_read_pose(e, &p);
+  const double t = e->k * dt;
+  if (!ode_pose_finite(&p))
+    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "non-finite state at t = %g s", t);
+  const double energy = dv_pose_energy(&e->disk, &p);
+  const double limit = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
+  if (!(energy <= limit))
+    return ode_failed(e, DV_OUTCOME_DIVERGED, err,
+                      "runaway energy at t = %g s: %g J > %g J (E0 = %g J)", t, energy, limit,
+                      e->e0);
+  double rho[3];
+  dv_geometry_contact_vector(&e->geom, p.R, rho);
+  const double height = p.pos[2] + rho[2];
+  if (height < -SUNK_DEPTH * e->disk.r)
+    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "sank %g m into the ground at t = %g s", -height,
+                      t);
+  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + dt : 0.0;
+  if (e->airborne > AIR_TIME)
+    return ode_failed(e, DV_OUTCOME_LOST_CONTACT, err,
+                      "lowest point %g m above the ground for %g s at t = %g s", height,
+                      e->airborne, t);
+  return DV_OK;
+}
+
+typedef struct ode_target {
+  double t;
+  dv_sample *out;
+} ode_target;
+
+/* step to the target time and read the sample (guarded part of advance) */
+static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
+  ode_target *g = arg;
+  const double dt = e->set.timestep;
+  while (e->k * dt < g->t - 0.5 * dt) {
+    const int status = ode_step(e, err);
+    if (status < 0) return status;
+  }
+  dv_pose p;
+  ode_read_pose(e, &p);
+  dv_sample_from_pose(&e->disk, &e->geom, &p, g->t, e->prev_y, g->out);
+  g->out->contacts = e->ncontacts;
+  memcpy(e->prev_y, g->out->y, sizeof e->prev_y);
+  e->st.slip_max = fmax(e->st.slip_max, g->out->slip);
+  e->st.penetration_max = fmax(e->st.penetration_max, g->out->penetration);
+  if (g->out->contacts > e->st.contacts_max) e->st.contacts_max = g->out->contacts;
+  return DV_OK;
+}
+
+/* advance to time t; a failed run keeps returning its failure */
+static int ode_advance(void *p, double t, dv_sample *out, dv_error *err) {
+  ode_engine *e = p;
+  if (e->status < 0)
+    return dv_fail(err, e->status, "%s: %s", dv_outcome_name(e->st.outcome), e->st.detail);
+  ode_target g = {t, out};
+  return ode_guarded(e, ode_run_to, &g, err);
+}
+
+/* statistics of the run so far */
+static void ode_stats(const void *p, dv_engine_stats *out) {
+  const ode_engine *e = p;
+  *out = e->st;
+}
+
+const dv_engine_type dv_engine_ode = {
+    "ode",       "ODE 0.16 contact simulation: a thin cylinder on a plane",
+    ode_version, ode_alloc,
+    ode_reset,   ode_advance,
+    ode_stats,   ode_free};
