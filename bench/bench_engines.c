@@ -46,7 +46,7 @@ static double time_run(const dv_engine_type *e, const dv_scenario *sc, int mode,
     const double t0 = now();
     if (mode) {
       FILE *sink = mode == 2 ? fopen("/dev/null", "w") : NULL;
-      dv_trajectory_run(e, sc, sink, &st, &err);
+      dv_trajectory_run(e, sc, sink, NULL, &st, &err);
       if (sink) fclose(sink);
     } else {
       dv_sample s;

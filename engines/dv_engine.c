@@ -30,4 +30,5 @@ void dv_sample_from_pose(const red_disk *disk, const dv_geometry *geom, const dv
   out->contact[1] = p[1];
   out->penetration = fmax(0.0, -p[2]);
   out->energy = dv_pose_energy(disk, pose);
+  out->force[0] = out->force[1] = out->force[2] = NAN;
 }

@@ -25,6 +25,7 @@ typedef struct dv_sample {
   double slip;          /* speed of the body's lowest point, m/s */
   double penetration;   /* depth of the lowest point below the ground, m (>= 0) */
   int contacts;         /* contact points the engine reports */
+  double force[3];      /* contact force on the disk (N), NaN where the engine has none */
 } dv_sample;
 
 /* outcomes of a run */

@@ -61,6 +61,9 @@ static int matched_advance(void *p, double t, dv_sample *out, dv_error *err) {
   out->energy = red_rolling_energy(&e->rr, s);
   out->slip = out->penetration = 0.0;
   out->contacts = 1;
+  double wdot[3];
+  if (red_rolling_dynamics(&e->rr, s, wdot, out->force))
+    out->force[0] = out->force[1] = out->force[2] = NAN;
   return status;
 }
 

@@ -8,9 +8,11 @@
 
 #include "dv_engine.h"
 #include "red_reference.h"
+#include "red_rolling.h"
 
 typedef struct reduced_engine {
   red_reference ref;
+  red_rolling thin; /* the same disk in Newton-Euler form, for the contact force */
   red_integrator *in;
   double t_end;
   int event;
@@ -37,6 +39,7 @@ static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
   reduced_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
   red_reference_init(&e->ref, &sc->disk, sc->reduced.theta_limit);
+  red_rolling_init(&e->thin, &sc->disk, 0.0, INFINITY, sc->reduced.theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
   const red_stepper_type *T = red_stepper_find(sc->reduced.integrator);
@@ -62,6 +65,10 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
   out->energy = red_energy(&e->ref.disk, out->y);
   out->slip = out->penetration = 0.0;
   out->contacts = 1;
+  double s[RR_NSTATE], wdot[3];
+  red_rolling_from_state(&e->thin, out->y, s);
+  if (red_rolling_dynamics(&e->thin, s, wdot, out->force))
+    out->force[0] = out->force[1] = out->force[2] = NAN;
   return status;
 }
 

@@ -11,6 +11,7 @@
 
 static const char HELP[] =
     "usage: diskval simulate SCENARIO --engine NAME [--set section.key=value]... [--out FILE]\n"
+    "                        [--forces FILE]\n"
     "\n"
     "Simulate SCENARIO with one engine and write its trajectory as CSV:\n"
     "  " DV_CSV_HEADER
@@ -20,6 +21,8 @@ static const char HELP[] =
     "  --set S.K=V     override key K of section S, e.g. --set engines.reduced.rtol=1e-10\n"
     "  --out FILE      write to FILE (default, or '-': stdout); written whole or not at all,\n"
     "                  with FILE.json beside it: engine, versions, settings, outcome, stats\n"
+    "  --forces FILE   the contact force along the run (references: the force rolling needs)\n"
+    "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
     "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
 
 int dv_usage_error(const char *command, const char *fmt, ...) {
@@ -41,7 +44,7 @@ int dv_take_set(dv_common_args *a, int argc, char **argv, int *i) {
 
 int dv_cmd_simulate(int argc, char **argv) {
   dv_common_args a = {0};
-  const char *engine_name = NULL, *out_path = "-";
+  const char *engine_name = NULL, *out_path = "-", *forces_path = NULL;
   for (int i = 1; i < argc; i++) {
     const int set = dv_take_set(&a, argc, argv, &i);
     if (set < 0) return dv_usage_error("simulate", "--set needs section.key=value");
@@ -53,6 +56,8 @@ int dv_cmd_simulate(int argc, char **argv) {
       engine_name = argv[++i];
     } else if (!strcmp(argv[i], "--out") && i + 1 < argc) {
       out_path = argv[++i];
+    } else if (!strcmp(argv[i], "--forces") && i + 1 < argc) {
+      forces_path = argv[++i];
     } else if (argv[i][0] == '-' && argv[i][1]) {
       return dv_usage_error("simulate", "unknown or incomplete option '%s'", argv[i]);
     } else if (!a.scenario) {
@@ -72,20 +77,24 @@ int dv_cmd_simulate(int argc, char **argv) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }
-  dv_output out;
-  if (dv_output_open(&out, out_path, &err)) {
+  dv_output out, forces = {0};
+  if (dv_output_open(&out, out_path, &err) ||
+      (forces_path && dv_output_open(&forces, forces_path, &err))) {
+    dv_output_abort(&out);
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
   }
   dv_engine_stats stats;
-  int status = dv_trajectory_run(engine, &sc, out.fp, &stats, &err);
+  int status = dv_trajectory_run(engine, &sc, out.fp, forces.fp, &stats, &err);
   if (status < 0) {
     dv_output_abort(&out);
+    dv_output_abort(&forces);
     fprintf(stderr, "diskval simulate: %s: %s: %s: %s\n", sc.name, engine->name,
             dv_outcome_name(stats.outcome), err.msg);
     return DV_EXIT_ERROR;
   }
-  if (dv_output_commit(&out, &err)) {
+  if (dv_output_commit(&out, &err) || (forces_path && dv_output_commit(&forces, &err))) {
+    dv_output_abort(&forces);
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
   }

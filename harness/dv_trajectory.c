@@ -19,7 +19,12 @@ static int sample_finite(const dv_sample *s) {
   return isfinite(sum);
 }
 
-int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *fp,
+static void force_row(FILE *fp, const dv_sample *s) {
+  const double *F = s->force;
+  fprintf(fp, "%.12g,%.17g,%.17g,%.17g,%.17g\n", s->t, F[0], F[1], F[2], hypot(F[0], F[1]) / F[2]);
+}
+
+int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *fp, FILE *forces,
                       dv_engine_stats *stats, dv_error *err) {
   dv_sample s;
   memset(stats, 0, sizeof *stats);
@@ -31,9 +36,11 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
   }
   int status = type->reset(engine, sc->initial, err);
   if (fp) fputs(DV_CSV_HEADER "\n", fp);
+  if (forces) fputs(DV_FORCES_HEADER "\n", forces);
   /* the first sample is read back from the engine: its own view of the start */
   if (!status) status = type->advance(engine, 0.0, &s, err);
   if (!status && fp) dv_csv_row(fp, &s);
+  if (!status && forces) force_row(forces, &s);
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
     status = type->advance(engine, t, &s, err);
@@ -42,6 +49,7 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
       break;
     }
     if (status >= 0 && fp) dv_csv_row(fp, &s);
+    if (status >= 0 && forces) force_row(forces, &s);
     if (t >= sc->duration) break;
   }
   type->stats(engine, stats);

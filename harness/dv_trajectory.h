@@ -17,9 +17,13 @@
 /* one CSV row */
 void dv_csv_row(FILE *fp, const dv_sample *s);
 
-/* run engine over sc, writing CSV rows to fp; stats filled in any case.
+#define DV_FORCES_HEADER "t,force_x,force_y,force_z,friction_ratio"
+
+/* run engine over sc, writing CSV rows to fp and, when forces is not NULL,
+ * the contact force (N; friction_ratio = |F_h| / F_z) to forces; either may
+ * be NULL. Stats are filled in any case.
  * Returns DV_OK, DV_EVENT (ended early) or < 0 with err set. */
-int dv_trajectory_run(const dv_engine_type *engine, const dv_scenario *sc, FILE *fp,
+int dv_trajectory_run(const dv_engine_type *engine, const dv_scenario *sc, FILE *fp, FILE *forces,
                       dv_engine_stats *stats, dv_error *err);
 
 #endif
