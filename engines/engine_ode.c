@@ -46,6 +46,7 @@ typedef struct ode_engine {
   double prev_y[RED_NSTATE]; /* last canonical state, for unwrapping */
   double e0;                 /* energy at reset, J */
   double airborne;           /* s the lowest point has been off the ground */
+  double theta_limit;        /* rad: the run ends at an event outside (limit, pi - limit) */
   int ncontacts;             /* contacts of the last collision */
   int status;                /* < 0 once the run failed */
   int broken;                /* an ODE error jumped out: the world is only destroyed */
@@ -199,6 +200,7 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
   e->set = sc->ode;
   e->disk = sc->disk;
   e->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, sc->ode.half_thickness};
+  e->theta_limit = sc->reduced.theta_limit;
   if (ode_guarded(e, ode_build, NULL, err) < 0) return ode_free(e), NULL;
   return e;
 }
@@ -275,6 +277,15 @@ static int ode_step(ode_engine *e, dv_error *err) {
   const double t = e->k * dt;
   if (!ode_pose_finite(&p))
     return ode_failed(e, DV_OUTCOME_DIVERGED, err, "non-finite state at t = %g s", t);
+  /* like the references: a disk lying down ends the run (n.z = cos theta) */
+  if (fabs(p.R[8]) > cos(e->theta_limit)) {
+    snprintf(e->st.detail, sizeof e->st.detail, "theta reached %s limit %g rad at t = %g s",
+             p.R[8] > 0.0 ? "the lower" : "the upper",
+             p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, t);
+    e->st.outcome = DV_OUTCOME_EVENT;
+    e->status = DV_EVENT;
+    return DV_EVENT;
+  }
   const double energy = dv_pose_energy(&e->disk, &p);
   const double limit = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   if (!(energy <= limit))
@@ -304,19 +315,19 @@ typedef struct ode_target {
 static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
   ode_target *g = arg;
   const double dt = e->set.timestep;
-  while (e->k * dt < g->t - 0.5 * dt) {
-    const int status = ode_step(e, err);
-    if (status < 0) return status;
-  }
+  int status = DV_OK;
+  while (status == DV_OK && e->k * dt < g->t - 0.5 * dt) status = ode_step(e, err);
+  if (status < 0) return status;
   dv_pose p;
   ode_read_pose(e, &p);
-  dv_sample_from_pose(&e->disk, &e->geom, &p, g->t, e->prev_y, g->out);
+  dv_sample_from_pose(&e->disk, &e->geom, &p, status == DV_EVENT ? e->k * dt : g->t, e->prev_y,
+                      g->out);
   g->out->contacts = e->ncontacts;
   memcpy(e->prev_y, g->out->y, sizeof e->prev_y);
   e->st.slip_max = fmax(e->st.slip_max, g->out->slip);
   e->st.penetration_max = fmax(e->st.penetration_max, g->out->penetration);
   if (g->out->contacts > e->st.contacts_max) e->st.contacts_max = g->out->contacts;
-  return DV_OK;
+  return status;
 }
 
 /* advance to time t; a failed run keeps returning its failure */
@@ -324,6 +335,7 @@ static int ode_advance(void *p, double t, dv_sample *out, dv_error *err) {
   ode_engine *e = p;
   if (e->status < 0)
     return dv_fail(err, e->status, "%s: %s", dv_outcome_name(e->st.outcome), e->st.detail);
+  if (e->status == DV_EVENT) return DV_EVENT;
   ode_target g = {t, out};
   return ode_guarded(e, ode_run_to, &g, err);
 }
