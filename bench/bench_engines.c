@@ -24,13 +24,7 @@ static dv_scenario circle(void) {
   sc.duration = 5.0;
   sc.output_dt = 0.01;
   sc.disk = red_disk_uniform(0.1, 1.0, 9.81);
-  for (size_t i = 0; i < dv_nsetting_specs; i++) {
-    char *field = (char *)&sc + dv_setting_specs[i].offset;
-    if (dv_setting_specs[i].is_int)
-      *(int *)field = (int)dv_setting_specs[i].def;
-    else
-      *(double *)field = dv_setting_specs[i].def;
-  }
+  dv_scenario_defaults(&sc);
   const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};
   memcpy(sc.initial, y, sizeof y);
   return sc;

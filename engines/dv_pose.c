@@ -1,19 +1,10 @@
 /* dv_pose: the DESIGN section 1 mapping, both ways; checked by
  * tests/test_pose (round trip, rim point at rest, equal energies). */
 #include "dv_pose.h"
+#include "red_vec3.h"
 
 #include <math.h>
 #include <string.h>
-
-static void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double a[3], const double b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 /* body axis k (column k of R) */
 static void axis(const double R[9], int k, double v[3]) {
@@ -61,7 +52,7 @@ void dv_pose_from_state(const dv_geometry *g, const double y[RED_NSTATE], dv_pos
     p->omega[i] = y[RED_VPH] * (i == 2) - y[RED_VTH] * t[i] + y[RED_VPS] * n[i];
   double rho[3], w_rho[3];
   dv_geometry_contact_vector(g, p->R, rho);
-  cross(p->omega, rho, w_rho);
+  red_cross(p->omega, rho, w_rho);
   for (int i = 0; i < 3; i++) p->vel[i] = -w_rho[i];
   p->pos[0] = y[RED_X];
   p->pos[1] = y[RED_Y];
@@ -81,10 +72,10 @@ void dv_state_from_pose(const dv_pose *p, const double *prev, double y[RED_NSTAT
   const double ph = atan2(n[1], n[0]);
   const double a[3] = {cos(ph), sin(ph), 0.0}, t[3] = {a[1], -a[0], 0.0};
   const double d[3] = {c * a[0], c * a[1], -s};
-  const double ps = atan2(dot(x1, d), dot(x1, t));
-  const double wz = p->omega[2], wn = dot(p->omega, n), s2 = s * s;
+  const double ps = atan2(red_dot(x1, d), red_dot(x1, t));
+  const double wz = p->omega[2], wn = red_dot(p->omega, n), s2 = s * s;
   y[RED_TH] = th;
-  y[RED_VTH] = -dot(p->omega, t);
+  y[RED_VTH] = -red_dot(p->omega, t);
   y[RED_VPH] = (wz - wn * c) / s2;
   y[RED_VPS] = (wn - wz * c) / s2;
   y[RED_PH] = prev ? unwrap(ph, prev[RED_PH]) : ph;
@@ -97,18 +88,18 @@ double dv_pose_energy(const red_disk *dk, const dv_pose *p) {
   double n[3];
   axis(p->R, 2, n);
   /* I = A 1 + (C - A) n n^T */
-  const double wn = dot(p->omega, n);
-  const double rot = dk->A * dot(p->omega, p->omega) + (dk->C - dk->A) * wn * wn;
-  return 0.5 * dk->m * dot(p->vel, p->vel) + 0.5 * rot + dk->m * dk->g * p->pos[2];
+  const double wn = red_dot(p->omega, n);
+  const double rot = dk->A * red_dot(p->omega, p->omega) + (dk->C - dk->A) * wn * wn;
+  return 0.5 * dk->m * red_dot(p->vel, p->vel) + 0.5 * rot + dk->m * dk->g * p->pos[2];
 }
 
 void dv_pose_lowest_point(const dv_geometry *g, const dv_pose *p, double pt[3], double *slip) {
   double rho[3], w_rho[3], v[3];
   dv_geometry_contact_vector(g, p->R, rho);
-  cross(p->omega, rho, w_rho);
+  red_cross(p->omega, rho, w_rho);
   for (int i = 0; i < 3; i++) {
     pt[i] = p->pos[i] + rho[i];
     v[i] = p->vel[i] + w_rho[i];
   }
-  *slip = sqrt(dot(v, v));
+  *slip = sqrt(red_dot(v, v));
 }

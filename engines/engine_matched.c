@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_reference.h"
 #include "red_rolling.h"
 
 typedef struct matched_engine {
@@ -56,34 +57,20 @@ static int matched_advance(void *p, double t, dv_sample *out, dv_error *err) {
   const int status = red_integrator_advance(e->in, t, &out->t, s, &e->event, err);
   if (status < 0) return status;
   if (e->event >= 0) e->t_event = out->t;
-  red_rolling_to_state(s, out->y);
-  red_rolling_contact_point(&e->rr, s, out->contact);
-  out->energy = red_rolling_energy(&e->rr, s);
-  out->slip = out->penetration = 0.0;
-  out->contacts = 1;
-  double wdot[3];
-  if (red_rolling_dynamics(&e->rr, s, wdot, out->force))
-    out->force[0] = out->force[1] = out->force[2] = NAN;
+  dv_reference_sample(&e->rr, s, out);
   return status;
 }
 
 static void matched_stats(const void *p, dv_engine_stats *out) {
   const matched_engine *e = p;
-  red_stats s;
-  red_integrator_stats(e->in, &s);
-  memset(out, 0, sizeof *out);
-  out->steps = s.steps;
-  out->rhs_evals = s.rhs_evals;
-  out->contacts_max = 1;
-  out->outcome = e->event >= 0 ? DV_OUTCOME_EVENT : DV_OUTCOME_COMPLETED;
-  if (e->event >= 0)
-    snprintf(out->detail, sizeof out->detail, "%s at t = %.9g s",
-             e->event == RR_EVENT_NORMAL_FORCE ? "the normal force reached zero"
-             : e->event == RR_EVENT_FRICTION
-                 ? "the friction needed reached mu times the normal force"
-             : e->event == RR_EVENT_UPRIGHT ? "the thick disk reached upright (a rim-corner impact)"
-                                            : "theta reached its lying-down limit",
-             e->t_event);
+  char detail[128];
+  snprintf(detail, sizeof detail, "%s at t = %.9g s",
+           e->event == RR_EVENT_NORMAL_FORCE ? "the normal force reached zero"
+           : e->event == RR_EVENT_FRICTION ? "the friction needed reached mu times the normal force"
+           : e->event == RR_EVENT_UPRIGHT  ? "the thick disk reached upright (a rim-corner impact)"
+                                           : "theta reached its lying-down limit",
+           e->t_event);
+  dv_reference_stats(e->in, e->event, detail, out);
 }
 
 const dv_engine_type dv_engine_matched = {

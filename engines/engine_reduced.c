@@ -8,6 +8,7 @@
 
 #include "dv_engine.h"
 #include "red_reference.h"
+#include "dv_reference.h"
 #include "red_rolling.h"
 
 typedef struct reduced_engine {
@@ -60,31 +61,21 @@ static int reduced_reset(void *p, const double state[RED_NSTATE], dv_error *err)
 
 static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
   reduced_engine *e = p;
-  const int status = red_integrator_advance(e->in, t, &out->t, out->y, &e->event, err);
-  red_contact_point(&e->ref.disk, out->y, out->contact);
-  out->energy = red_energy(&e->ref.disk, out->y);
-  out->slip = out->penetration = 0.0;
-  out->contacts = 1;
-  double s[RR_NSTATE], wdot[3];
-  red_rolling_from_state(&e->thin, out->y, s);
-  if (red_rolling_dynamics(&e->thin, s, wdot, out->force))
-    out->force[0] = out->force[1] = out->force[2] = NAN;
+  double y[RED_NSTATE], s[RR_NSTATE];
+  const int status = red_integrator_advance(e->in, t, &out->t, y, &e->event, err);
+  red_rolling_from_state(&e->thin, y, s);
+  dv_reference_sample(&e->thin, s, out);
+  memcpy(out->y, y, sizeof y); /* exactly the integrated state, not its round trip */
   return status;
 }
 
 static void reduced_stats(const void *p, dv_engine_stats *out) {
   const reduced_engine *e = p;
-  red_stats s;
-  red_integrator_stats(e->in, &s);
-  memset(out, 0, sizeof *out);
-  out->steps = s.steps;
-  out->rhs_evals = s.rhs_evals;
-  out->contacts_max = 1;
-  out->outcome = e->event >= 0 ? DV_OUTCOME_EVENT : DV_OUTCOME_COMPLETED;
-  if (e->event >= 0)
-    snprintf(out->detail, sizeof out->detail, "theta reached %s limit %g rad",
-             e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper",
-             e->event == RED_EVENT_THETA_LOW ? e->ref.theta_limit : M_PI - e->ref.theta_limit);
+  char detail[96];
+  snprintf(detail, sizeof detail, "theta reached %s limit %g rad",
+           e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper",
+           e->event == RED_EVENT_THETA_LOW ? e->ref.theta_limit : M_PI - e->ref.theta_limit);
+  dv_reference_stats(e->in, e->event, detail, out);
 }
 
 const dv_engine_type dv_engine_reduced = {

@@ -108,6 +108,10 @@ typedef struct dv_scenario {
   dv_tolerance tolerances[DV_MAX_TOLERANCES];
 } dv_scenario;
 
+/* every engine setting and the reference's solver settings at their
+ * defaults (for scenarios built in code) */
+void dv_scenario_defaults(dv_scenario *sc);
+
 /* parse and validate path; overrides are "section.key=value" strings applied
  * after the file (as from --set). Returns DV_OK or DV_EINPUT with err set. */
 int dv_scenario_load(const char *path, const char *const *overrides, size_t noverrides,

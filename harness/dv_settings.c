@@ -2,8 +2,10 @@
  * defaults are the most accurate affordable settings measured (README,
  * "Engine settings"), not the libraries' own defaults. */
 #include <stddef.h>
+#include <stdio.h>
 
 #include "dv_scenario.h"
+#include "red_solver.h"
 
 static const char *const MJ_INTEGRATORS[] = {"euler", "rk4", "implicit", NULL};
 static const char *const MJ_CONES[] = {"pyramidal", "elliptic", NULL};
@@ -58,3 +60,18 @@ const dv_setting_spec dv_setting_specs[] = {
 };
 
 const size_t dv_nsetting_specs = sizeof dv_setting_specs / sizeof dv_setting_specs[0];
+
+void dv_scenario_defaults(dv_scenario *sc) {
+  for (size_t i = 0; i < dv_nsetting_specs; i++) {
+    char *field = (char *)sc + dv_setting_specs[i].offset;
+    if (dv_setting_specs[i].is_int)
+      *(int *)field = (int)dv_setting_specs[i].def;
+    else
+      *(double *)field = dv_setting_specs[i].def;
+  }
+  snprintf(sc->reduced.integrator, sizeof sc->reduced.integrator, "%s",
+           red_stepper_default()->name);
+  sc->reduced.rtol = 1e-12;
+  sc->reduced.atol = 1e-14;
+  sc->reduced.theta_limit = 0.01;
+}

@@ -1,5 +1,6 @@
 /* red_rolling: the thick rolling disk in Newton-Euler form. */
 #include "red_rolling.h"
+#include "red_vec3.h"
 
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -12,16 +13,6 @@ typedef struct frame {
   double s, c, sign;               /* sin, cos of theta; sign(cos theta) */
   double n[3], t[3], d[3], rho[3]; /* unit vectors and contact vector */
 } frame;
-
-static void cross(const double a[3], const double b[3], double out[3]) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double a[3], const double b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 static void make_frame(const red_rolling *rr, const double *st, frame *f) {
   const double sp = sin(st[RR_PH]), cp = cos(st[RR_PH]);
@@ -40,8 +31,8 @@ static void make_frame(const red_rolling *rr, const double *st, frame *f) {
 
 /* theta', phi', psi' from omega */
 static void angle_rates(const frame *f, const double w[3], double rates[3]) {
-  const double wn = dot(w, f->n), s2 = f->s * f->s;
-  rates[0] = -dot(w, f->t);
+  const double wn = red_dot(w, f->n), s2 = f->s * f->s;
+  rates[0] = -red_dot(w, f->t);
   rates[1] = (w[2] - wn * f->c) / s2;
   rates[2] = (wn - w[2] * f->c) / s2;
 }
@@ -54,19 +45,19 @@ int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3]
   if (!(f.s > 0.0)) return -1;
   double rates[3], ndot[3], rdot[3];
   angle_rates(&f, w, rates);
-  cross(w, f.n, ndot);
+  red_cross(w, f.n, ndot);
   for (int i = 0; i < 3; i++) {
     const double ddot = -rates[0] * f.n[i] - f.c * rates[1] * f.t[i];
     rdot[i] = dk->r * ddot - rr->h * f.sign * ndot[i];
   }
   /* I omega, and the right-hand side -omega x I omega + m rho x (g ez - omega x rho') */
-  const double wn = dot(w, f.n), rr2 = dot(f.rho, f.rho);
+  const double wn = red_dot(w, f.n), rr2 = red_dot(f.rho, f.rho);
   double Iw[3], wIw[3], w_rdot[3], q[3], rq[3], rhs[3], M[9];
   for (int i = 0; i < 3; i++) Iw[i] = dk->A * w[i] + (dk->C - dk->A) * wn * f.n[i];
-  cross(w, Iw, wIw);
-  cross(w, rdot, w_rdot);
+  red_cross(w, Iw, wIw);
+  red_cross(w, rdot, w_rdot);
   for (int i = 0; i < 3; i++) q[i] = (i == 2 ? dk->g : 0.0) - w_rdot[i];
-  cross(f.rho, q, rq);
+  red_cross(f.rho, q, rq);
   for (int i = 0; i < 3; i++) {
     rhs[i] = -wIw[i] + m * rq[i];
     for (int j = 0; j < 3; j++)
@@ -82,7 +73,7 @@ int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3]
   if (force) {
     /* F = m (a_G + g ez), a_G = -omega' x rho - omega x rho' */
     double wd_rho[3];
-    cross(wdot, f.rho, wd_rho);
+    red_cross(wdot, f.rho, wd_rho);
     for (int i = 0; i < 3; i++) force[i] = m * (-wd_rho[i] - w_rdot[i] + (i == 2 ? dk->g : 0.0));
   }
   return isfinite(wdot[0] + wdot[1] + wdot[2]) ? 0 : -1;
@@ -95,7 +86,7 @@ static int rolling_rhs(double t, const double *st, double *out, void *p) {
   if (red_rolling_dynamics(rr, st, out + RR_WX, NULL)) return -1;
   make_frame(rr, st, &f);
   angle_rates(&f, st + RR_WX, rates);
-  cross(st + RR_WX, f.rho, v); /* v_G = -omega x rho */
+  red_cross(st + RR_WX, f.rho, v); /* v_G = -omega x rho */
   out[RR_TH] = rates[0];
   out[RR_PH] = rates[1];
   out[RR_PS] = rates[2];
@@ -186,10 +177,10 @@ double red_rolling_energy(const red_rolling *rr, const double *st) {
   frame f;
   double v[3];
   make_frame(rr, st, &f);
-  cross(w, f.rho, v);
-  const double wn = dot(w, f.n);
-  const double rot = dk->A * dot(w, w) + (dk->C - dk->A) * wn * wn;
-  return 0.5 * dk->m * dot(v, v) + 0.5 * rot - dk->m * dk->g * f.rho[2];
+  red_cross(w, f.rho, v);
+  const double wn = red_dot(w, f.n);
+  const double rot = dk->A * red_dot(w, w) + (dk->C - dk->A) * wn * wn;
+  return 0.5 * dk->m * red_dot(v, v) + 0.5 * rot - dk->m * dk->g * f.rho[2];
 }
 
 void red_rolling_contact_point(const red_rolling *rr, const double *st, double p[2]) {

@@ -27,13 +27,7 @@ static dv_scenario base(void) {
   sc.output_dt = 0.01;
   sc.disk = red_disk_uniform(0.1, 1.0, 9.81);
   sc.reduced.theta_limit = 0.01;
-  for (size_t i = 0; i < dv_nsetting_specs; i++) {
-    char *field = (char *)&sc + dv_setting_specs[i].offset;
-    if (dv_setting_specs[i].is_int)
-      *(int *)field = (int)dv_setting_specs[i].def;
-    else
-      *(double *)field = dv_setting_specs[i].def;
-  }
+  dv_scenario_defaults(&sc);
   return sc;
 }
 

@@ -11,21 +11,13 @@
 #include "dv_pose.h"
 #include "dv_test.h"
 
-/* a uniform disk (r 0.1 m, m 1 kg) with the [engines.ode] defaults */
+/* a uniform disk (r 0.1 m, m 1 kg) with every setting at its default */
 static void scenario(dv_scenario *sc) {
   memset(sc, 0, sizeof *sc);
   sc->disk = red_disk_uniform(0.1, 1.0, 9.81);
   sc->duration = 1.0;
   sc->output_dt = 0.01;
-  for (size_t i = 0; i < dv_nsetting_specs; i++) {
-    const dv_setting_spec *s = &dv_setting_specs[i];
-    if (strcmp(s->section, "engines.ode") != 0) continue;
-    char *field = (char *)sc + s->offset;
-    if (s->is_int)
-      *(int *)field = (int)s->def;
-    else
-      *(double *)field = s->def;
-  }
+  dv_scenario_defaults(sc);
 }
 
 /* (a) the mapping round trip through ODE's body state */

@@ -45,9 +45,9 @@ static void fake_free(void *p) {
 static const char *fake_version(void) {
   return "test";
 }
-static const dv_engine_type fake_engine = {"fake",      "emits NaN at step 7", fake_version,
-                                           fake_alloc,  fake_reset,           fake_advance,
-                                           fake_stats,  fake_free};
+static const dv_engine_type fake_engine = {
+    "fake",     "emits NaN at step 7", fake_version, fake_alloc,
+    fake_reset, fake_advance,          fake_stats,   fake_free};
 
 int main(int argc, char **argv) {
   gsl_set_error_handler_off();

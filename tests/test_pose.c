@@ -29,8 +29,8 @@ static void check_state(const double y[RED_NSTATE], const dv_geometry *g, const 
                p.R[2] * (p.R[3] * p.R[7] - p.R[4] * p.R[6]);
   CHECK(fabs(det - 1.0) < 1e-14, "%s: det R = %.17g", label, det);
   dv_pose_lowest_point(g, &p, pt, &slip);
-  CHECK(fabs(pt[2]) < 1e-15 && slip < 1e-13, "%s: lowest point z %.3g, slip %.3g m/s", label,
-        pt[2], slip);
+  CHECK(fabs(pt[2]) < 1e-15 && slip < 1e-13, "%s: lowest point z %.3g, slip %.3g m/s", label, pt[2],
+        slip);
   if (g->shape == DV_SHAPE_CYLINDER) {
     red_rolling rr;
     double s[RR_NSTATE];
