@@ -50,6 +50,11 @@ static int turning_point(gsl_function *fn, double th0, double limit, double *out
   const int n = 2000;
   const double step = (limit - th0) / n;
   double a = th0;
+  /* at rest in theta to rounding: th0 is its own turning point */
+  if (!(GSL_FN_EVAL(fn, th0) < 0.0)) {
+    *out = th0;
+    return GSL_SUCCESS;
+  }
   for (int i = 1; i <= n; i++) {
     const double b = (i == n) ? limit : th0 + i * step;
     const double gb = GSL_FN_EVAL(fn, b);
