@@ -8,6 +8,8 @@ enum { DV_EXIT_OK = 0, DV_EXIT_FAIL = 1, DV_EXIT_ERROR = 2 };
 int dv_cmd_simulate(int argc, char **argv);
 int dv_cmd_analyze(int argc, char **argv);
 int dv_cmd_engines(int argc, char **argv);
+int dv_cmd_compare(int argc, char **argv);
+int dv_cmd_suite(int argc, char **argv);
 
 /* print "diskval: message" on stderr and return DV_EXIT_ERROR */
 int dv_usage_error(const char *command, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -18,6 +18,8 @@ static const char HELP[] =
     "commands:\n"
     "  simulate SCENARIO --engine NAME [--out FILE]   one trajectory as CSV\n"
     "  analyze SCENARIO [--json]                      invariants, steady motion, stability\n"
+    "  compare SCENARIO [--engines LIST] [--out DIR]  engines against the references\n"
+    "  suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N]   many scenarios, reports\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cmd_engines(int argc, char **argv) {
@@ -55,8 +57,11 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     int (*run)(int, char **);
-  } commands[] = {
-      {"simulate", dv_cmd_simulate}, {"analyze", dv_cmd_analyze}, {"engines", dv_cmd_engines}};
+  } commands[] = {{"simulate", dv_cmd_simulate},
+                  {"analyze", dv_cmd_analyze},
+                  {"compare", dv_cmd_compare},
+                  {"suite", dv_cmd_suite},
+                  {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(HELP, argc < 2 ? stderr : stdout);

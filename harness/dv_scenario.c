@@ -26,6 +26,7 @@ typedef struct key_spec {
 static const key_spec KEYS[] = {
     {"scenario", "name", REQUIRED | TEXT},
     {"scenario", "description", TEXT},
+    {"scenario", "engines", TEXT},
     {"scenario", "duration", REQUIRED},
     {"scenario", "output_dt", REQUIRED},
     {"disk", "radius", REQUIRED},
@@ -53,7 +54,7 @@ static const key_spec KEYS[] = {
 static const char *const METRICS[] = {"theta_max_err", "theta_rms_err",  "path_max_err",
                                       "path_rms_err",  "path_hausdorff", "energy_drift",
                                       "slip_max"};
-static const char *const ENGINES[] = {"reduced", "ode", "mujoco"};
+static const char *const ENGINES[] = {"reduced", "matched", "ode", "mujoco"};
 #define NMETRICS (sizeof METRICS / sizeof METRICS[0])
 #define NENGINES (sizeof ENGINES / sizeof ENGINES[0])
 
@@ -144,7 +145,7 @@ static int set_tolerance(parse_ctx *c, int line, const char *section, const char
   const char *engine = section[9] == '.' ? section + 10 : "";
   double limit;
   if (*engine && find_in(ENGINES, NENGINES, engine) < 0)
-    return fail_at(c, line, section, "unknown engine '%s' (reduced, ode, mujoco)", engine);
+    return fail_at(c, line, section, "unknown engine '%s' (reduced, matched, ode, mujoco)", engine);
   if (find_in(METRICS, NMETRICS, key) < 0)
     return fail_at(c, line, key, "unknown tolerance metric in [%s]", section);
   if (parse_number(value, &limit)) return fail_at(c, line, key, "not a number: '%s'", value);
@@ -326,6 +327,20 @@ static int validate(parse_ctx *c) {
   snprintf(sc->name, sizeof sc->name, "%.63s", c->value[iname]);
   snprintf(sc->description, sizeof sc->description, "%s",
            c->value[key_index("scenario", "description")]);
+  const size_t ieng = key_index("scenario", "engines");
+  snprintf(sc->engines, sizeof sc->engines, "%.63s", c->value[ieng]);
+  if (c->value_line[ieng]) {
+    int count = 0;
+    char list[64];
+    snprintf(list, sizeof list, "%s", sc->engines);
+    for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok;
+         tok = strtok_r(NULL, ", ", &save), count++)
+      if (find_in(ENGINES, NENGINES, tok) < 0 || count == 4)
+        return fail_at(c, c->value_line[ieng], "engines",
+                       "'%s': at most 4 of reduced, matched, ode, mujoco", tok),
+               -1;
+    if (!count) return fail_at(c, c->value_line[ieng], "engines", "empty list"), -1;
+  }
 
   const range basic[] = {
       {"scenario", "duration", 0, 0.0, 1e6, 0, &sc->duration},

@@ -1,7 +1,7 @@
 /* dv_scenario: a scenario file, parsed (inih) and validated.
  *
  * Sections and keys (radians, SI units), see README "Scenario files":
- *   [scenario]   name, description, duration, output_dt
+ *   [scenario]   name, description, duration, output_dt, engines
  *   [disk]       radius, mass, A, C, gravity     (A, C default to a uniform disk)
  *   [initial]    theta and phi, psi, x, y, theta_dot, phi_dot, psi_dot
  *                or theta + steady_circle_radius, or theta + steady_phi_dot
@@ -95,6 +95,7 @@ typedef struct dv_scenario {
   char path[1024];
   char name[64];
   char description[256];
+  char engines[64]; /* engines a comparison runs, e.g. "mujoco, ode" ("": the default) */
   double duration;  /* s */
   double output_dt; /* s */
   red_disk disk;

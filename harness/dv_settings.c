@@ -52,7 +52,7 @@ const dv_setting_spec dv_setting_specs[] = {
      "world CFM (inert: only contact joints)"},
     {"engines.ode", "friction_model", ODE(friction_model), 1, 0, 0, 1, ODE_FRICTION,
      "coefficient: dContactApprox1"},
-    {"engines.ode", "friction", ODE(friction), 0, 2.0, 0.0, 1e9, NULL, "coefficient, or N"},
+    {"engines.ode", "friction", ODE(friction), 0, 5.0, 0.0, 1e9, NULL, "coefficient, or N"},
     {"engines.ode", "soft_erp", ODE(soft_erp), 0, 0.2, 0.0, 1.0, NULL, "contact"},
     {"engines.ode", "soft_cfm", ODE(soft_cfm), 0, 1e-8, 0.0, 1.0, NULL, "contact"},
     {"engines.ode", "half_thickness", ODE(half_thickness), 0, 0.002, 1e-6, 1.0, NULL,

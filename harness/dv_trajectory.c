@@ -24,8 +24,8 @@ static void force_row(FILE *fp, const dv_sample *s) {
   fprintf(fp, "%.12g,%.17g,%.17g,%.17g,%.17g\n", s->t, F[0], F[1], F[2], hypot(F[0], F[1]) / F[2]);
 }
 
-int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *fp, FILE *forces,
-                      dv_engine_stats *stats, dv_error *err) {
+int dv_trajectory_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_sink sink,
+                          void *ctx, dv_engine_stats *stats, dv_error *err) {
   dv_sample s;
   memset(stats, 0, sizeof *stats);
   void *engine = type->alloc(sc, err);
@@ -35,12 +35,9 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
     return DV_ESYSTEM;
   }
   int status = type->reset(engine, sc->initial, err);
-  if (fp) fputs(DV_CSV_HEADER "\n", fp);
-  if (forces) fputs(DV_FORCES_HEADER "\n", forces);
   /* the first sample is read back from the engine: its own view of the start */
   if (!status) status = type->advance(engine, 0.0, &s, err);
-  if (!status && fp) dv_csv_row(fp, &s);
-  if (!status && forces) force_row(forces, &s);
+  if (!status && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "out of memory");
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
     status = type->advance(engine, t, &s, err);
@@ -48,8 +45,7 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
       status = dv_fail(err, DV_ENUMERIC, "non-finite state at t = %g s", t);
       break;
     }
-    if (status >= 0 && fp) dv_csv_row(fp, &s);
-    if (status >= 0 && forces) force_row(forces, &s);
+    if (status >= 0 && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "output failed");
     if (t >= sc->duration) break;
   }
   type->stats(engine, stats);
@@ -60,4 +56,23 @@ int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *f
   }
   type->free(engine);
   return status;
+}
+
+typedef struct csv_files {
+  FILE *fp, *forces;
+} csv_files;
+
+static int write_rows(void *ctx, const dv_sample *s) {
+  const csv_files *f = ctx;
+  if (f->fp) dv_csv_row(f->fp, s);
+  if (f->forces) force_row(f->forces, s);
+  return 0;
+}
+
+int dv_trajectory_run(const dv_engine_type *type, const dv_scenario *sc, FILE *fp, FILE *forces,
+                      dv_engine_stats *stats, dv_error *err) {
+  csv_files f = {fp, forces};
+  if (fp) fputs(DV_CSV_HEADER "\n", fp);
+  if (forces) fputs(DV_FORCES_HEADER "\n", forces);
+  return dv_trajectory_collect(type, sc, write_rows, &f, stats, err);
 }

@@ -17,6 +17,15 @@
 /* one CSV row */
 void dv_csv_row(FILE *fp, const dv_sample *s);
 
+/* receives each sample; non-zero stops the run */
+typedef int (*dv_sample_sink)(void *ctx, const dv_sample *s);
+
+/* run engine over sc, one sample at t = 0, every output_dt and at an event,
+ * each passed to sink; stats are filled in any case. Returns DV_OK, DV_EVENT
+ * (ended early) or < 0 with err set (the samples so far were delivered). */
+int dv_trajectory_collect(const dv_engine_type *engine, const dv_scenario *sc, dv_sample_sink sink,
+                          void *ctx, dv_engine_stats *stats, dv_error *err);
+
 #define DV_FORCES_HEADER "t,force_x,force_y,force_z,friction_ratio"
 
 /* run engine over sc, writing CSV rows to fp and, when forces is not NULL,

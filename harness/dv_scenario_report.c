@@ -1,0 +1,173 @@
+/* dv_scenario_report: CSVs, plots, report.json and report.md of one scenario. */
+#include "dv_scenario_report.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dv_meta.h"
+#include "dv_output.h"
+#include "dv_plot.h"
+#include "dv_trajectory.h"
+
+static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_error *err) {
+  char path[1200];
+  dv_output out;
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  int status = dv_output_open(&out, path, err);
+  if (status) return status;
+  fputs(DV_CSV_HEADER "\n", out.fp);
+  for (size_t i = 0; i < tr->n; i++) dv_csv_row(out.fp, &tr->s[i]);
+  return dv_output_commit(&out, err);
+}
+
+/* {metric: value} with null for non-finite values */
+static cJSON *metrics_json(const double *v) {
+  cJSON *o = cJSON_CreateObject();
+  for (int m = 0; m < DV_NMETRICS; m++)
+    cJSON_AddItemToObject(o, dv_metric_names[m],
+                          isfinite(v[m]) ? cJSON_CreateNumber(v[m]) : cJSON_CreateNull());
+  return o;
+}
+
+static double share(double matched, double thin) {
+  return thin > 0.0 ? 1.0 - matched / thin : 0.0;
+}
+
+static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
+  cJSON *o = metrics_json(r->vs_ref.value);
+  const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+  cJSON_AddNumberToObject(o, "wall_per_sim_s", sim > 0.0 ? r->wall_s / sim : 0.0);
+  cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+  cJSON_AddStringToObject(o, "outcome", r->verdict);
+  cJSON_AddStringToObject(o, "detail", r->stats.detail);
+  cJSON_AddBoolToObject(o, "pass", r->pass);
+  cJSON *f = cJSON_AddArrayToObject(o, "failures");
+  for (size_t i = 0; i < r->nfailures; i++)
+    cJSON_AddItemToArray(f, cJSON_CreateString(r->failures[i]));
+  cJSON *tol = cJSON_AddObjectToObject(o, "tolerances");
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (isfinite(r->tolerance[m]))
+      cJSON_AddNumberToObject(tol, dv_metric_names[m], r->tolerance[m]);
+  cJSON_AddNumberToObject(o, "window_end", r->vs_ref.t_window);
+  cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
+  cJSON_AddItemToObject(o, "vs_thin", metrics_json(r->vs_thin.value));
+  cJSON *g = cJSON_AddObjectToObject(o, "geometry_share");
+  cJSON_AddNumberToObject(
+      g, "theta_max_err",
+      share(r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_thin.value[DV_THETA_MAX_ERR]));
+  cJSON_AddNumberToObject(
+      g, "path_max_err",
+      share(r->vs_ref.value[DV_PATH_MAX_ERR], r->vs_thin.value[DV_PATH_MAX_ERR]));
+  cJSON_AddStringToObject(o, "version", r->engine->version());
+  cJSON_AddItemToObject(o, "settings", dv_meta_settings(r->engine, c->sc));
+  return o;
+}
+
+static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_error *err) {
+  const dv_scenario *sc = c->sc;
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddStringToObject(o, "description", sc->description);
+  cJSON_AddStringToObject(o, "file", sc->path);
+  cJSON_AddNumberToObject(o, "duration", sc->duration);
+  cJSON_AddNumberToObject(o, "output_dt", sc->output_dt);
+  cJSON *ref = cJSON_AddObjectToObject(o, "reference");
+  cJSON_AddStringToObject(ref, "engine", "reduced");
+  cJSON_AddStringToObject(ref, "integrator", sc->reduced.integrator);
+  cJSON_AddNumberToObject(ref, "rtol", sc->reduced.rtol);
+  cJSON_AddStringToObject(ref, "outcome", dv_outcome_name(c->thin_stats.outcome));
+  cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
+  cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  cJSON_AddStringToObject(ref, "version", dv_engine_reduced.version());
+  cJSON_AddBoolToObject(o, "pass", c->pass);
+  cJSON *engines = cJSON_AddObjectToObject(o, "engines");
+  for (size_t i = 0; i < c->n; i++)
+    cJSON_AddItemToObject(engines, c->r[i].engine->name, engine_json(c, &c->r[i]));
+  cJSON *plots = cJSON_AddArrayToObject(o, "plots");
+  for (size_t i = 0; plotted && dv_plot_files[i]; i++)
+    cJSON_AddItemToArray(plots, cJSON_CreateString(dv_plot_files[i]));
+  char *text = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  char path[1200];
+  dv_output out;
+  snprintf(path, sizeof path, "%s/report.json", dir);
+  int status = dv_output_open(&out, path, err);
+  if (!status) {
+    fprintf(out.fp, "%s\n", text);
+    status = dv_output_commit(&out, err);
+  }
+  free(text);
+  return status;
+}
+
+static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err) {
+  char path[1200];
+  dv_output out;
+  snprintf(path, sizeof path, "%s/report.md", dir);
+  int status = dv_output_open(&out, path, err);
+  if (status) return status;
+  FILE *fp = out.fp;
+  const dv_scenario *sc = c->sc;
+  fprintf(fp, "# %s: %s\n\n%s\n\n", sc->name, c->pass ? "pass" : "FAIL", sc->description);
+  fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
+          sc->reduced.integrator, sc->reduced.rtol, dv_outcome_name(c->thin_stats.outcome),
+          c->thin_stats.detail[0] ? ": " : "", c->thin_stats.detail,
+          c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  fprintf(fp,
+          "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
+          "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
+          "wall s / sim s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (size_t i = 0; i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    const double *v = r->vs_ref.value;
+    const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+    char ref[48];
+    if (r->half_thickness > 0.0)
+      snprintf(ref, sizeof ref, "matched, h = %g m", r->half_thickness);
+    else
+      snprintf(ref, sizeof ref, "thin disk");
+    fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
+            r->engine->name, r->verdict, ref, v[DV_THETA_MAX_ERR], v[DV_THETA_RMS_ERR],
+            v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF], v[DV_ENERGY_DRIFT],
+            v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR], sim > 0 ? r->wall_s / sim : 0.0);
+  }
+  for (size_t i = 0; i < c->n; i++)
+    for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);
+  fprintf(fp, "\n");
+  return dv_output_commit(&out, err);
+}
+
+int dv_scenario_report_write(const char *dir, const dv_comparison *c, dv_error *err) {
+  char name[96];
+  int status = write_csv(dir, "reduced.csv", &c->thin, err);
+  dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}};
+  for (size_t i = 0; !status && i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    snprintf(name, sizeof name, "%s.csv", r->engine->name);
+    status = write_csv(dir, name, &r->traj, err);
+    if (!status && r->half_thickness > 0.0) {
+      snprintf(name, sizeof name, "matched-%s.csv", r->engine->name);
+      status = write_csv(dir, name, &r->matched, err);
+    }
+    plot.series[plot.nseries++] = (dv_plot_series){
+        r->engine->name, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin};
+  }
+  if (!status) status = dv_plot_scenario(dir, &plot, err);
+  if (!status) status = write_markdown(dir, c, err);
+  if (!status) status = write_json(dir, c, 1, err);
+  return status;
+}
+
+void dv_scenario_report_print(FILE *fp, const dv_comparison *c) {
+  for (size_t i = 0; i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
+            r->verdict, r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_PATH_MAX_ERR],
+            r->pass ? "pass" : "FAIL");
+    for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
+  }
+}

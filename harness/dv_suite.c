@@ -1,0 +1,139 @@
+/* dv_suite: report directories built aside and renamed; a process pool. */
+#include "dv_suite.h"
+
+#include <errno.h>
+#include <ftw.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "dv_commands.h"
+#include "dv_run.h"
+#include "dv_scenario_report.h"
+
+int dv_parse_engines(const char *list, const dv_engine_type **engines, size_t max, dv_error *err) {
+  char buf[256];
+  size_t n = 0;
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
+       tok = strtok_r(NULL, ", ", &save)) {
+    const dv_engine_type *e = dv_engine_find(tok);
+    if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s' (see diskval engines)", tok);
+    if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
+    engines[n++] = e;
+  }
+  if (!n) return dv_fail(err, DV_EINPUT, "no engine in '%s'", list);
+  engines[n] = NULL;
+  return DV_OK;
+}
+
+int dv_make_dirs(const char *path, dv_error *err) {
+  char buf[1024];
+  snprintf(buf, sizeof buf, "%s", path);
+  for (char *p = buf + 1;; p++) {
+    const char c = *p;
+    if (c != '/' && c != '\0') continue;
+    *p = '\0';
+    if (mkdir(buf, 0777) && errno != EEXIST)
+      return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", buf, strerror(errno));
+    *p = c;
+    if (!c) break;
+  }
+  return DV_OK;
+}
+
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw) {
+  return remove(path);
+}
+
+/* rm -r */
+static int remove_tree(const char *path) {
+  return nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+int dv_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
+                     const char *out_dir, int verbose, dv_error *err) {
+  char tmp[1200], final[1200], old[1200];
+  const dv_engine_type *own[DV_MAX_ENGINES + 1];
+  /* a scenario may name its own engines */
+  if (sc->engines[0]) {
+    if (dv_parse_engines(sc->engines, own, DV_MAX_ENGINES + 1, err)) return DV_EXIT_ERROR;
+    engines = own;
+  }
+  size_t n = 0;
+  while (engines[n]) n++;
+  snprintf(final, sizeof final, "%s/%s", out_dir, sc->name);
+  snprintf(tmp, sizeof tmp, "%s/.%s.tmp.XXXXXX", out_dir, sc->name);
+  if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno)), DV_EXIT_ERROR;
+  static dv_comparison c;
+  int status = dv_run_scenario(sc, engines, n, &c, err);
+  if (!status) status = dv_scenario_report_write(tmp, &c, err);
+  if (!status && verbose) dv_scenario_report_print(stdout, &c);
+  const int pass = c.pass;
+  dv_comparison_free(&c);
+  if (status) {
+    remove_tree(tmp);
+    return DV_EXIT_ERROR;
+  }
+  /* replace an older report: move it aside, put the new one in place, drop the old */
+  snprintf(old, sizeof old, "%s/.%s.old.%ld", out_dir, sc->name, (long)getpid());
+  const int had_old = rename(final, old) == 0;
+  if (rename(tmp, final)) {
+    dv_fail(err, DV_ESYSTEM, "%s: %s", final, strerror(errno));
+    if (had_old) rename(old, final);
+    remove_tree(tmp);
+    return DV_EXIT_ERROR;
+  }
+  if (had_old) remove_tree(old);
+  return pass ? DV_EXIT_OK : DV_EXIT_FAIL;
+}
+
+int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
+                     const char *out_dir, int jobs, int *codes, dv_error *err) {
+  pid_t *pids = calloc(n ? n : 1, sizeof *pids);
+  if (!pids) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  const int tty = isatty(STDERR_FILENO);
+  size_t started = 0, done = 0;
+  int running = 0;
+  fflush(NULL);
+  while (done < n) {
+    while (running < jobs && started < n) {
+      const pid_t pid = fork();
+      if (pid == 0) {
+        dv_error e = {{0}};
+        const int code = dv_suite_run_one(&scs[started], engines, out_dir, 0, &e);
+        if (code == DV_EXIT_ERROR)
+          fprintf(stderr, "diskval suite: %s: %s\n", scs[started].name, e.msg);
+        fflush(NULL);
+        _exit(code);
+      }
+      if (pid < 0) {
+        codes[started] = DV_EXIT_ERROR;
+        done++;
+      } else {
+        running++;
+      }
+      pids[started++] = pid;
+    }
+    int wstatus;
+    const pid_t pid = wait(&wstatus);
+    if (pid < 0) break;
+    for (size_t i = 0; i < started; i++)
+      if (pids[i] == pid) {
+        codes[i] = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : DV_EXIT_ERROR;
+        running--;
+        done++;
+        if (tty)
+          fprintf(stderr, "\r[%zu/%zu] %-40s %s", done, n, scs[i].name,
+                  codes[i] == 0   ? "pass"
+                  : codes[i] == 1 ? "FAIL"
+                                  : "ERROR");
+      }
+  }
+  if (tty) fputc('\n', stderr);
+  free(pids);
+  return DV_OK;
+}
