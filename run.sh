@@ -7,12 +7,14 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-dev libcjson-dev
-          libode-dev libmujoco-dev)
+          libode-dev libmujoco-dev libplplot-dev)
+# the tests also check the report's XML and render its page in a real browser
+TEST_PACKAGES=(libxml2-utils chromium)
 BUILD_DIR=${BUILD_DIR:-build}
 
 install_missing() {
   local missing=()
-  for p in "${PACKAGES[@]}"; do
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -28,7 +30,11 @@ build() {
   cmake --build "$BUILD_DIR" -j "$(nproc)"
 }
 
-install_missing
+if [ "${1:-run}" = test ]; then
+  install_missing "${PACKAGES[@]}" "${TEST_PACKAGES[@]}"
+else
+  install_missing "${PACKAGES[@]}"
+fi
 build
 case "${1:-run}" in
   test)
@@ -39,17 +45,11 @@ case "${1:-run}" in
     "$BUILD_DIR/bench/bench_engines"
     ;;
   run)
-    mkdir -p out
-    for s in scenarios/*.ini; do
-      name=$(basename "$s" .ini)
-      "$BUILD_DIR/harness/diskval" analyze "$s" --json >"out/$name.analysis.json"
-      for engine in reduced matched mujoco ode; do
-        # a contact engine may fail on a scenario (C = 0, a landing hop): that is its outcome
-        "$BUILD_DIR/harness/diskval" simulate "$s" --engine "$engine" --out "out/$name.$engine.csv" \
-          || echo "  ($name: $engine did not complete)"
-      done
-    done
-    echo "trajectories and analyses written to $(pwd)/out/"
+    # the default suite: every engine against the references, a report for people and CI
+    status=0
+    "$BUILD_DIR/harness/diskval" suite scenarios --out out --junit out/junit.xml || status=$?
+    echo "report: $(pwd)/out/index.html (JUnit: out/junit.xml, summary: out/summary.json)"
+    exit $status
     ;;
   *)
     echo "usage: ./run.sh [test|bench]" >&2

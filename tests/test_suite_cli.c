@@ -1,0 +1,157 @@
+/* test_suite_cli: diskval suite end to end on a small scenario set.
+ *   - exit 0, summary.json parses back, one JUnit test case per scenario x
+ *     engine, index.html references only files that exist;
+ *   - an impossible tolerance: exit 1, the JUnit failure names the scenario;
+ *   - a broken scenario file: exit 2 and no output directory at all;
+ *   - the same inputs twice: identical reports apart from timing fields.
+ * usage: test_suite_cli DISKVAL SCENARIO_DIR WORK_DIR (WORK_DIR is replaced) */
+#include <cjson/cJSON.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include "dv_test.h"
+
+static const char *diskval, *scenarios, *work;
+
+static char *slurp(const char *path) {
+  FILE *fp = fopen(path, "rb");
+  if (!fp) return NULL;
+  fseek(fp, 0, SEEK_END);
+  const long n = ftell(fp);
+  rewind(fp);
+  char *buf = malloc((size_t)n + 1);
+  if (buf && fread(buf, 1, (size_t)n, fp) == (size_t)n) buf[n] = '\0';
+  fclose(fp);
+  return buf;
+}
+
+/* run a shell command; its exit status */
+static int run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int run(const char *fmt, ...) {
+  char cmd[4096];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cmd, sizeof cmd, fmt, ap);
+  va_end(ap);
+  const int st = system(cmd);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static int exists(const char *path) {
+  struct stat st;
+  return stat(path, &st) == 0;
+}
+
+static size_t count(const char *text, const char *needle) {
+  size_t n = 0;
+  for (const char *p = text; p && (p = strstr(p, needle)); p++) n++;
+  return n;
+}
+
+/* the report.json of dir/name with every wall_per_sim_s line removed */
+static char *untimed_report(const char *dir, const char *name) {
+  char path[2048];
+  snprintf(path, sizeof path, "%s/%s/report.json", dir, name);
+  char *text = slurp(path);
+  for (char *p = text; p && (p = strstr(p, "\"wall_per_sim_s\""));) {
+    const char *end = strchr(p, '\n');
+    memmove(p, end ? end : p + strlen(p), strlen(end ? end : p + strlen(p)) + 1);
+  }
+  return text;
+}
+
+static void check_good_suite(void) {
+  char out[1024], path[2048];
+  snprintf(out, sizeof out, "%s/good", work);
+  int code = run("%s suite %s/falling.ini %s/upright_stable.ini --out %s --jobs 2 >/dev/null", diskval,
+                 scenarios, scenarios, out);
+  CHECK(code == 0, "suite exit %d", code);
+  snprintf(path, sizeof path, "%s/summary.json", out);
+  char *text = slurp(path);
+  cJSON *summary = text ? cJSON_Parse(text) : NULL;
+  CHECK(summary && cJSON_IsTrue(cJSON_GetObjectItem(summary, "pass")), "summary.json: %s", path);
+  CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(summary, "scenarios")) == 2, "two scenarios");
+  cJSON_Delete(summary);
+  free(text);
+  snprintf(path, sizeof path, "%s/junit.xml", out);
+  text = slurp(path);
+  CHECK(text && count(text, "<testcase ") == 4 && !strstr(text, "<failure"), "junit: %s", path);
+  CHECK(run("command -v xmllint >/dev/null") != 0 || run("xmllint --noout %s", path) == 0,
+        "xmllint rejects %s", path);
+  free(text);
+  /* every src= of index.html exists */
+  snprintf(path, sizeof path, "%s/index.html", out);
+  text = slurp(path);
+  size_t images = 0;
+  for (const char *p = text; p && (p = strstr(p, "src=\"")); p += 5) {
+    char file[1024], full[2048];
+    const char *end = strchr(p + 5, '"');
+    snprintf(file, sizeof file, "%.*s", end ? (int)(end - p - 5) : 0, p + 5);
+    snprintf(full, sizeof full, "%s/%s", out, file);
+    CHECK(exists(full), "index.html shows a missing file %s", file);
+    images++;
+  }
+  CHECK(images >= 8, "index.html shows %zu images", images);
+  free(text);
+  /* the same inputs again: identical reports apart from timing */
+  char again[1024];
+  snprintf(again, sizeof again, "%s/again", work);
+  run("%s suite %s/falling.ini %s/upright_stable.ini --out %s --jobs 1 >/dev/null", diskval,
+      scenarios, scenarios, again);
+  for (int k = 0; k < 2; k++) {
+    const char *name = k ? "upright_stable" : "falling";
+    char *a = untimed_report(out, name), *b = untimed_report(again, name);
+    CHECK(a && b && !strcmp(a, b), "%s: report.json differs between identical runs", name);
+    free(a);
+    free(b);
+  }
+}
+
+static void check_failing_suite(void) {
+  char out[1024], scn[1024], path[2048];
+  snprintf(scn, sizeof scn, "%s/impossible.ini", work);
+  FILE *fp = fopen(scn, "w");
+  if (fp) {
+    fputs("[scenario]\nname = impossible\nduration = 0.2\noutput_dt = 0.01\n"
+          "[disk]\nradius = 0.1\nmass = 1\n[initial]\ntheta = 1.2\nphi_dot = 2\n"
+          "[tolerance]\ntheta_max_err = 1e-30\n",
+          fp);
+    fclose(fp);
+  }
+  snprintf(out, sizeof out, "%s/failing", work);
+  const int code = run("%s suite %s --out %s >/dev/null", diskval, scn, out);
+  CHECK(code == 1, "impossible tolerance: exit %d, want 1", code);
+  snprintf(path, sizeof path, "%s/junit.xml", out);
+  char *text = slurp(path);
+  CHECK(text && count(text, "<failure") >= 1 && strstr(text, "impossible") &&
+            strstr(text, "theta_max_err"),
+        "the JUnit XML does not name the failure");
+  free(text);
+}
+
+static void check_broken_suite(void) {
+  char out[1024], scn[1024];
+  snprintf(scn, sizeof scn, "%s/broken.ini", work);
+  run("sed 's/^mass = 1.0$/mass = -1/' %s/falling.ini > %s", scenarios, scn);
+  snprintf(out, sizeof out, "%s/broken-out", work);
+  const int code = run("%s suite %s/upright_stable.ini %s --out %s 2>/dev/null", diskval, scenarios,
+                       scn, out);
+  CHECK(code == 2, "broken scenario: exit %d, want 2", code);
+  CHECK(!exists(out), "a broken scenario left an output directory %s", out);
+}
+
+int main(int argc, char **argv) {
+  if (argc != 4) return fprintf(stderr, "usage: test_suite_cli DISKVAL SCENARIO_DIR WORK_DIR\n"), 2;
+  diskval = argv[1];
+  scenarios = argv[2];
+  work = argv[3];
+  run("rm -rf %s && mkdir -p %s", work, work);
+  check_good_suite();
+  check_failing_suite();
+  check_broken_suite();
+  return TEST_RESULT();
+}
