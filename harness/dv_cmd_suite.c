@@ -9,6 +9,7 @@
 
 #include "dv_commands.h"
 #include "dv_run.h"
+#include "dv_stability.h"
 #include "dv_suite.h"
 #include "dv_suite_report.h"
 
@@ -23,11 +24,15 @@ static const char COMPARE_HELP[] =
 
 static const char SUITE_HELP[] =
     "usage: diskval suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N] [--engines LIST]\n"
+    "                     [--stability]\n"
     "\n"
     "Compare every scenario (the *.ini files of each DIR, and each FILE) as diskval\n"
     "compare does, N at a time in separate processes (default: the number of cores),\n"
     "then write DIR/index.html, DIR/summary.json and the JUnit XML (default\n"
     "DIR/junit.xml). Every scenario file is checked before anything is written.\n"
+    "--stability also finds, per scenario and engine, the largest timestep that stays\n"
+    "finite and within the scenario's theta tolerance (bisection), and the failure\n"
+    "above it: DIR/stability.html, .md and .json, linked from index.html.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 #define MAX_SCENARIOS 256
@@ -37,6 +42,7 @@ typedef struct suite_args {
   size_t npaths;
   const char *out, *junit, *engines;
   int jobs;
+  int stability; /* also the largest stable timesteps and failure modes */
   dv_common_args common;
 } suite_args;
 
@@ -81,6 +87,8 @@ static int parse(const char *cmd, int argc, char **argv, suite_args *a, int *don
       a->out = argv[++i];
     } else if (!strcmp(argv[i], "--engines") && has) {
       a->engines = argv[++i];
+    } else if (!strcmp(cmd, "suite") && !strcmp(argv[i], "--stability")) {
+      a->stability = 1;
     } else if (!strcmp(cmd, "suite") && !strcmp(argv[i], "--junit") && has) {
       a->junit = argv[++i];
     } else if (!strcmp(cmd, "suite") && !strcmp(argv[i], "--jobs") && has) {
@@ -158,6 +166,11 @@ static int run(const char *cmd, int argc, char **argv) {
     return code;
   }
   dv_suite_run_all(scs, n, engines, a.out, a.jobs, codes, &err);
+  if (a.stability &&
+      dv_stability_run(scs, n, engines, a.common.sets, (size_t)a.common.nsets, a.out, a.jobs, &err)) {
+    fprintf(stderr, "diskval suite: stability: %s\n", err.msg);
+    return DV_EXIT_ERROR;
+  }
   const char *dirs[MAX_SCENARIOS];
   char junit[1100];
   snprintf(junit, sizeof junit, "%s/junit.xml", a.out);

@@ -20,6 +20,8 @@ static const char HELP[] =
     "  analyze SCENARIO [--json]                      invariants, steady motion, stability\n"
     "  compare SCENARIO [--engines LIST] [--out DIR]  engines against the references\n"
     "  suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N]   many scenarios, reports\n"
+    "  sweep SCENARIO --engine NAME --vary KEY=VALUES speed against error over settings\n"
+    "  best SCENARIO --engine NAME --theta-tol X      the cheapest settings meeting X\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cmd_engines(int argc, char **argv) {
@@ -61,6 +63,8 @@ int main(int argc, char **argv) {
                   {"analyze", dv_cmd_analyze},
                   {"compare", dv_cmd_compare},
                   {"suite", dv_cmd_suite},
+                  {"sweep", dv_cmd_sweep},
+                  {"best", dv_cmd_best},
                   {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

@@ -22,6 +22,8 @@
 
 #include <plplot.h>
 
+#include "dv_plot_internal.h"
+
 const char *const dv_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg", "energy.svg",
                                      NULL};
 
@@ -38,15 +40,16 @@ static const struct {
 };
 
 /* cmap0: background, foreground (axes and the thin reference), grid, series */
-enum { COL_BG = 0, COL_FG, COL_GRID, COL_SERIES, NCOLOURS = COL_SERIES + DV_PLOT_MAX_SERIES };
-static const PLINT red[NCOLOURS] = {255, 0, 225, 31, 255, 44, 214, 148, 140, 227, 127};
-static const PLINT green[NCOLOURS] = {255, 0, 225, 119, 127, 160, 39, 103, 86, 119, 127};
-static const PLINT blue[NCOLOURS] = {255, 0, 225, 180, 14, 44, 40, 189, 75, 194, 127};
+enum { COL_BG = DVP_COL_BG, COL_FG = DVP_COL_FG, COL_GRID = DVP_COL_GRID, COL_SERIES = DVP_COL_SERIES };
+_Static_assert(DV_PLOT_MAX_SERIES <= DVP_NPALETTE, "a palette colour per series");
+static const PLINT red[DVP_NCOLOURS] = {255, 0,   225, 31, 255, 44, 214, 148, 140,
+                                        227, 127, 188, 23, 0,   0,  204, 128, 200, 0};
+static const PLINT green[DVP_NCOLOURS] = {255, 0,   225, 119, 127, 160, 39,  103, 86,
+                                          119, 127, 189, 190, 0,   100, 153, 0,   0, 128};
+static const PLINT blue[DVP_NCOLOURS] = {255, 0,   225, 180, 14, 44, 40, 189, 75,
+                                         194, 127, 34,  207, 140, 0,  0,  0,  200, 128};
 
-#define PAGE_W 800       /* px */
-#define PAGE_H 500       /* px */
 #define ERR_FLOOR 1e-16  /* smallest error drawn on the log axis, rad */
-#define PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
 #define LINE_CHUNK 65536 /* points per plline call */
 
 /* one curve: a NaN in x or y breaks the line */
@@ -65,8 +68,7 @@ typedef struct figure {
   curve c[DV_PLOT_MAX_SERIES + 1];
 } figure;
 
-/* copy text into out with PLplot's escape character doubled */
-static void escape(char *out, size_t size, const char *text, const char *suffix) {
+void dvp_escape(char *out, size_t size, const char *text, const char *suffix) {
   size_t k = 0;
   for (const char *p = text ? text : "?"; *p && k + 3 < size; p++) {
     if (*p == '#') out[k++] = '#';
@@ -76,14 +78,13 @@ static void escape(char *out, size_t size, const char *text, const char *suffix)
   snprintf(out + k, size - k, "%s", suffix);
 }
 
-/* whether v can be drawn */
-static int plottable(double v) {
-  return isfinite(v) && fabs(v) < PLOT_LIMIT;
+int dvp_plottable(double v) {
+  return isfinite(v) && fabs(v) < DVP_PLOT_LIMIT;
 }
 
 /* whether point i of c can be drawn */
 static int point_ok(const curve *c, size_t i) {
-  return plottable(c->x[i]) && plottable(c->y[i]);
+  return dvp_plottable(c->x[i]) && dvp_plottable(c->y[i]);
 }
 
 /* samples of tr at the same times as ref's, from the start */
@@ -135,13 +136,13 @@ static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
   memset(f, 0, sizeof *f);
   f->kind = kind;
   char name[160];
-  escape(name, sizeof name, in->title, "");
+  dvp_escape(name, sizeof name, in->title, "");
   snprintf(f->title, sizeof f->title, "%s: %s", name, kinds[kind].what);
   if (kind != PLOT_ERROR) {
     curve *c = &f->c[f->ncurves++];
     c->colour = COL_FG;
     if (fill_curve(c, kind, in->thin, NULL)) return -1;
-    escape(c->label, sizeof c->label, "reference (thin disk)",
+    dvp_escape(c->label, sizeof c->label, "reference (thin disk)",
            curve_has_data(c) ? "" : " (no data)");
   }
   for (size_t k = 0; k < in->nseries; k++) {
@@ -149,7 +150,7 @@ static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
     curve *c = &f->c[f->ncurves++];
     c->colour = (PLINT)(COL_SERIES + k);
     if (fill_curve(c, kind, s->traj, s->reference)) return -1;
-    escape(c->label, sizeof c->label, s->label, curve_has_data(c) ? "" : " (no data)");
+    dvp_escape(c->label, sizeof c->label, s->label, curve_has_data(c) ? "" : " (no data)");
   }
   return 0;
 }
@@ -180,8 +181,7 @@ static int data_range(const figure *f, double r[4]) {
   return any;
 }
 
-/* widen [lo, hi] by margin of its span, or pad it around its middle when it collapses */
-static void pad_range(double *lo, double *hi, double margin, double min_pad) {
+void dvp_pad_range(double *lo, double *hi, double margin, double min_pad) {
   const double span = *hi - *lo, mag = fmax(fabs(*lo), fabs(*hi));
   if (!(span > 1e-300) || span < 1e-6 * mag) {
     const double mid = 0.5 * (*lo + *hi), p = fmax(mag > 0 ? 0.05 * mag : 1.0, min_pad);
@@ -193,8 +193,7 @@ static void pad_range(double *lo, double *hi, double margin, double min_pad) {
   }
 }
 
-/* widen the narrower range so a metre is as long on both axes of the viewport */
-static void equal_aspect(double r[4]) {
+void dvp_equal_aspect(double r[4]) {
   PLFLT sx0, sx1, sy0, sy1, vx0, vx1, vy0, vy1;
   plgspa(&sx0, &sx1, &sy0, &sy1); /* subpage, mm */
   plgvpd(&vx0, &vx1, &vy0, &vy1); /* viewport, fraction of the subpage */
@@ -264,13 +263,13 @@ static void draw_legend(const figure *f) {
            NULL, NULL, NULL);
 }
 
-/* the label 10^value of a log10 axis */
-static void decade_label(PLINT axis, PLFLT value, char *label, PLINT length, PLPointer data) {
+void dvp_decade_label(PLINT axis, PLFLT value, char *label, PLINT length, PLPointer data) {
   snprintf(label, (size_t)length, "10#u%d#d", (int)lround(value));
 }
 
-/* draw figure f on the current, initialised stream */
-static void draw_figure(const figure *f) {
+/* draw figure f (a figure *) on the current, initialised stream */
+static void draw_figure(const void *arg) {
+  const figure *f = arg;
   const int logy = f->kind == PLOT_ERROR;
   double r[4];
   const int any = data_range(f, r);
@@ -278,8 +277,8 @@ static void draw_figure(const figure *f) {
     r[0] = 0, r[1] = 1;
     r[2] = logy ? -16 : 0, r[3] = logy ? 0 : 1;
   }
-  pad_range(&r[0], &r[1], f->kind == PLOT_PATH ? 0.05 : 0.0, 0.0);
-  pad_range(&r[2], &r[3], 0.05, logy ? 1.0 : 0.0);
+  dvp_pad_range(&r[0], &r[1], f->kind == PLOT_PATH ? 0.05 : 0.0, 0.0);
+  dvp_pad_range(&r[2], &r[3], 0.05, logy ? 1.0 : 0.0);
   if (logy) { /* whole decades, so that at least two are labelled */
     r[2] = floor(r[2]);
     r[3] = ceil(r[3]);
@@ -289,7 +288,7 @@ static void draw_figure(const figure *f) {
   pladv(0);
   plvpor(narrow ? 0.16 : 0.12, 0.68, 0.12, 0.88);
   plsyax(8, 0);
-  if (f->kind == PLOT_PATH) equal_aspect(r);
+  if (f->kind == PLOT_PATH) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(COL_GRID);
   plwidth(1.0);
@@ -297,7 +296,7 @@ static void draw_figure(const figure *f) {
   plcol0(COL_FG);
   /* a log axis labels every decade (PLplot's "l"), or every few with labels of our own */
   const double ystep = logy ? ceil((r[3] - r[2]) / 8.0) : 0.0;
-  if (ystep > 1) plslabelfunc(decade_label, NULL);
+  if (ystep > 1) plslabelfunc(dvp_decade_label, NULL);
   plbox("bcnst", 0, 0, !logy ? "bcnstv" : ystep > 1 ? "bcnotv" : "bcnstlv", ystep, 0);
   pllab(kinds[f->kind].xlabel, "", f->title);
   plmtex("l", narrow ? 8.0 : logy ? 5.5 : 5.0, 0.5, 0.5, kinds[f->kind].ylabel);
@@ -313,8 +312,7 @@ static void draw_figure(const figure *f) {
   draw_legend(f);
 }
 
-/* whether PLplot can load its svg driver (plinit would exit the process otherwise) */
-static int have_svg(void) {
+int dvp_have_svg(void) {
   const char *menu[128], *names[128], **pm = menu, **pn = names;
   int n = 128;
   plgDevs(&pm, &pn, &n);
@@ -339,14 +337,15 @@ static int svg_complete(const char *path) {
          strstr(tail, "</svg>") != NULL;
 }
 
-/* draw f into dir/name through a temporary file */
-static int plot_file(const char *dir, const char *name, const figure *f, dv_error *err) {
-  char path[PATH_MAX], tmp[PATH_MAX], plmsg[1024] = "";
+int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error *err) {
+  char tmp[PATH_MAX], plmsg[1024] = "";
   PLINT plcode = 0, prev = 0, strm = -1;
   int status = DV_OK;
-  if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path ||
-      snprintf(tmp, sizeof tmp, "%s/.%s.tmp.XXXXXX", dir, name) >= (int)sizeof tmp)
-    return dv_fail(err, DV_ESYSTEM, "%s: path too long", dir);
+  const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+  const int dirlen = slash ? (int)(slash + 1 - path) : 0; /* with its '/' */
+  if (!*base) return dv_fail(err, DV_EINPUT, "%s: no file name", path);
+  if (snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.XXXXXX", dirlen, path, base) >= (int)sizeof tmp)
+    return dv_fail(err, DV_ESYSTEM, "%s: path too long", path);
   if (strstr(tmp, "%n")) /* PLplot would read it as a file family pattern */
     return dv_fail(err, DV_ESYSTEM, "%s: PLplot cannot write a path containing %%n", path);
   const int fd = mkstemp(tmp);
@@ -363,11 +362,11 @@ static int plot_file(const char *dir, const char *name, const figure *f, dv_erro
   plsError(&plcode, plmsg); /* plabort fills these instead of printing */
   plsdev("svg");
   plsfnam(tmp);
-  plspage(0, 0, PAGE_W, PAGE_H, 0, 0);
-  plscmap0n(NCOLOURS);
-  plscmap0(red, green, blue, NCOLOURS);
+  plspage(0, 0, DVP_PAGE_W, DVP_PAGE_H, 0, 0);
+  plscmap0n(DVP_NCOLOURS);
+  plscmap0(red, green, blue, DVP_NCOLOURS);
   plinit();
-  if (!plcode) draw_figure(f);
+  if (!plcode) draw(arg);
   plend1();
   plsstrm(prev);
   if (plcode) {
@@ -393,14 +392,17 @@ int dv_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *err) {
   struct stat st;
   if (stat(dir, &st) != 0) return dv_fail(err, DV_ESYSTEM, "%s: %s", dir, strerror(errno));
   if (!S_ISDIR(st.st_mode)) return dv_fail(err, DV_ESYSTEM, "%s: not a directory", dir);
-  if (!have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
+  if (!dvp_have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
   int status = DV_OK;
   figure f = {0};
   for (int k = 0; k < NPLOTS && status == DV_OK; k++) {
-    if (build_figure(&f, (plot_kind)k, in) != 0)
+    char path[PATH_MAX];
+    if (snprintf(path, sizeof path, "%s/%s", dir, dv_plot_files[k]) >= (int)sizeof path)
+      status = dv_fail(err, DV_ESYSTEM, "%s: path too long", dir);
+    else if (build_figure(&f, (plot_kind)k, in) != 0)
       status = dv_fail(err, DV_ESYSTEM, "%s: out of memory", dv_plot_files[k]);
     else
-      status = plot_file(dir, dv_plot_files[k], &f, err);
+      status = dvp_write_svg(path, draw_figure, &f, err);
     free_figure(&f);
   }
   return status;

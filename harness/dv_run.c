@@ -102,13 +102,14 @@ static int run_into(const dv_engine_type *type, const dv_scenario *sc, dv_traj *
   return status;
 }
 
-int dv_run_scenario(const dv_scenario *sc, const dv_engine_type *const *engines, size_t n,
-                    dv_comparison *c, dv_error *err) {
+int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
+                    const dv_engine_type *const *engines, size_t n, dv_comparison *c, dv_error *err) {
   memset(c, 0, sizeof *c);
   c->sc = sc;
   c->pass = 1;
+  if (!ref_sc) ref_sc = sc;
   if (n > DV_MAX_ENGINES) return dv_fail(err, DV_EINPUT, "at most %d engines", DV_MAX_ENGINES);
-  int status = run_into(&dv_engine_reduced, sc, &c->thin, &c->thin_stats, NULL, err);
+  int status = run_into(&dv_engine_reduced, ref_sc, &c->thin, &c->thin_stats, NULL, err);
   if (status < 0) return status;
   c->thin_valid_end = validity_end(&c->thin, sc->matched.friction);
   for (size_t i = 0; i < n; i++) {
@@ -123,7 +124,7 @@ int dv_run_scenario(const dv_scenario *sc, const dv_engine_type *const *engines,
     double ref_end = c->thin_valid_end;
     if (r->half_thickness > 0.0) {
       static dv_scenario matched;
-      matched = *sc;
+      matched = *ref_sc;
       matched.matched.half_thickness = r->half_thickness;
       status = run_into(&dv_engine_matched, &matched, &r->matched, &r->matched_stats, NULL, err);
       if (status < 0) return status;

@@ -48,9 +48,12 @@ typedef struct dv_comparison {
 /* engines compared by default: every contact engine */
 extern const dv_engine_type *const dv_default_engines[];
 
-/* run and compare; DV_OK (see out->pass), or < 0 when the reference fails */
-int dv_run_scenario(const dv_scenario *sc, const dv_engine_type *const *engines, size_t n,
-                    dv_comparison *out, dv_error *err);
+/* run the engines on sc and compare; the references run on ref_sc (NULL:
+ * sc; a tighter reference for sweeps of the reference's own settings).
+ * DV_OK (see out->pass), or < 0 when a reference fails */
+int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
+                    const dv_engine_type *const *engines, size_t n, dv_comparison *out,
+                    dv_error *err);
 
 void dv_comparison_free(dv_comparison *c);
 

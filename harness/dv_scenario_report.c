@@ -6,11 +6,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "dv_meta.h"
 #include "dv_output.h"
 #include "dv_plot.h"
 #include "dv_trajectory.h"
+#include "red_invariants.h"
+#include "red_potential.h"
 
 static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_error *err) {
   char path[1200];
@@ -89,6 +92,12 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON *plots = cJSON_AddArrayToObject(o, "plots");
   for (size_t i = 0; plotted && dv_plot_files[i]; i++)
     cJSON_AddItemToArray(plots, cJSON_CreateString(dv_plot_files[i]));
+  for (size_t i = 0; plotted && i < 2; i++) {
+    char p[1300];
+    const char *name = i ? "phase.svg" : "potential.svg";
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    if (!access(p, F_OK)) cJSON_AddItemToArray(plots, cJSON_CreateString(name));
+  }
   char *text = cJSON_Print(o);
   cJSON_Delete(o);
   if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
@@ -141,6 +150,67 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   return dv_output_commit(&out, err);
 }
 
+#define PORTRAIT_POINTS 400
+
+/* theta and p_theta = (A + m r^2) theta' of a trajectory, for the phase plane */
+static void phase_coordinates(const red_disk *dk, const dv_traj *tr, double *th, double *p) {
+  for (size_t i = 0; i < tr->n; i++) {
+    th[i] = tr->s[i].y[RED_TH];
+    p[i] = (dk->A + dk->m * dk->r * dk->r) * tr->s[i].y[RED_VTH];
+  }
+}
+
+/* the thesis's Figures 4.1-4.6 for this scenario: the effective potential of
+ * theta for its f1, f2 with the energy level, and the phase plane with the
+ * level set and every engine's trajectory over it */
+static int write_portraits(const char *dir, const dv_comparison *c, dv_error *err) {
+  const red_disk *dk = &c->sc->disk;
+  const double *y0 = c->sc->initial;
+  double f1, f2, lo = INFINITY, hi = -INFINITY;
+  if (red_invariants(dk, y0, &f1, &f2)) return DV_OK; /* nothing to draw */
+  const double E = red_energy(dk, y0), I = dk->A + dk->m * dk->r * dk->r;
+  for (size_t i = 0; i < c->thin.n; i++) {
+    lo = fmin(lo, c->thin.s[i].y[RED_TH]);
+    hi = fmax(hi, c->thin.s[i].y[RED_TH]);
+  }
+  const double pad = fmax(0.2 * (hi - lo), 0.05);
+  lo = fmax(lo - pad, 0.02);
+  hi = fmin(hi + pad, M_PI - 0.02);
+  static double th[PORTRAIT_POINTS], U[PORTRAIT_POINTS], up[PORTRAIT_POINTS], dn[PORTRAIT_POINTS];
+  for (int i = 0; i < PORTRAIT_POINTS; i++) {
+    th[i] = lo + (hi - lo) * i / (PORTRAIT_POINTS - 1);
+    if (red_effective_potential(dk, f1, f2, th[i], &U[i])) U[i] = NAN;
+    up[i] = U[i] <= E ? sqrt(2.0 * I * (E - U[i])) : NAN;
+    dn[i] = -up[i];
+  }
+  const double ex[2] = {lo, hi}, ey[2] = {E, E};
+  dv_plot_curve pot[2] = {{"U(theta)", PORTRAIT_POINTS, th, U, NULL, DV_CURVE_LINE, 0},
+                          {"energy E", 2, ex, ey, NULL, DV_CURVE_LINE, 1}};
+  char path[1200], title[160];
+  snprintf(path, sizeof path, "%s/potential.svg", dir);
+  snprintf(title, sizeof title, "%s: effective potential (f1 %.4g, f2 %.4g)", c->sc->name, f1, f2);
+  int status = dv_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
+  /* phase plane: the level set, then the reference and every engine */
+  dv_plot_curve ph[2 + 1 + DV_MAX_ENGINES];
+  double *buf[1 + DV_MAX_ENGINES] = {NULL};
+  size_t n = 0;
+  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, th, up, NULL, DV_CURVE_LINE, 0};
+  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, th, dn, NULL, DV_CURVE_LINE, 0};
+  for (size_t k = 0; k <= c->n; k++) {
+    const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
+    if (!(buf[k] = malloc(2 * (tr->n + 1) * sizeof(double)))) break;
+    phase_coordinates(dk, tr, buf[k], buf[k] + tr->n);
+    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)", tr->n,
+                              buf[k], buf[k] + tr->n, NULL, DV_CURVE_LINE, (int)k + 1};
+  }
+  snprintf(path, sizeof path, "%s/phase.svg", dir);
+  snprintf(title, sizeof title, "%s: phase plane", c->sc->name);
+  if (!status)
+    status = dv_plot_xy(path, title, "tilt theta (rad)", "p_theta (kg m^2/s)", ph, n, 0, err);
+  for (size_t k = 0; k <= c->n; k++) free(buf[k]);
+  return status;
+}
+
 int dv_scenario_report_write(const char *dir, const dv_comparison *c, dv_error *err) {
   char name[96];
   int status = write_csv(dir, "reduced.csv", &c->thin, err);
@@ -157,6 +227,7 @@ int dv_scenario_report_write(const char *dir, const dv_comparison *c, dv_error *
         r->engine->name, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin};
   }
   if (!status) status = dv_plot_scenario(dir, &plot, err);
+  if (!status) status = write_portraits(dir, c, err);
   if (!status) status = write_markdown(dir, c, err);
   if (!status) status = write_json(dir, c, 1, err);
   return status;

@@ -69,7 +69,7 @@ int dv_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines
   snprintf(tmp, sizeof tmp, "%s/.%s.tmp.XXXXXX", out_dir, sc->name);
   if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno)), DV_EXIT_ERROR;
   static dv_comparison c;
-  int status = dv_run_scenario(sc, engines, n, &c, err);
+  int status = dv_run_scenario(sc, NULL, engines, n, &c, err);
   if (!status) status = dv_scenario_report_write(tmp, &c, err);
   if (!status && verbose) dv_scenario_report_print(stdout, &c);
   const int pass = c.pass;

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <sys/stat.h>
 
 #include "dv_output.h"
@@ -362,6 +363,10 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
     cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);
   }
   fputs("</table>\n", fp);
+  char stability[PATH_CAP];
+  snprintf(stability, sizeof stability, "%s/stability.html", out_dir);
+  if (access(stability, F_OK) == 0) /* written by suite --stability */
+    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n", fp);
   for (size_t i = 0; i < n; i++) put_section(fp, out_dir, &es[i], i);
   fputs("</body>\n</html>\n", fp);
 }

@@ -1,6 +1,9 @@
 /* test_plot: dv_plot writes four complete SVG files from synthetic
  * trajectories (offset, NaN-holed, empty, constant), leaves no temporary file
- * behind, works twice in one process, and fails cleanly on a missing dir. */
+ * behind, works twice in one process, and fails cleanly on a missing dir.
+ * dv_plot_xy writes single plots (log-log with non-positive values, marks,
+ * empty curves, 16 curves, equal aspect, nothing at all) and rejects bad
+ * paths and arguments without leaving files. */
 #include <dirent.h>
 #include <limits.h>
 #include <math.h>
@@ -91,6 +94,170 @@ static void remove_dir(const char *dir) {
   rmdir(dir);
 }
 
+/* ---- dv_plot_xy ---- */
+
+#define NXY 40
+static const char *const xy_files[] = {"wp.svg", "many.svg", "phase.svg", "flat.svg", "none.svg",
+                                       NULL};
+
+/* the file at path is a complete SVG document with a line drawn; star: whether marks are in it */
+static void check_svg(const char *path, int star) {
+  long size = 0;
+  char *text = slurp(path, &size);
+  CHECK(text != NULL, "%s: missing", path);
+  if (!text) return;
+  CHECK(size > 0, "%s: empty", path);
+  CHECK(strncmp(text, "<?xml", 5) == 0 || strncmp(text, "<svg", 4) == 0, "%s: no SVG header",
+        path);
+  CHECK(strstr(text, "<polyline") || strstr(text, "<path"), "%s: no line drawn", path);
+  CHECK(strstr(text, "</svg>") != NULL, "%s: not closed", path);
+  CHECK(!strstr(text, "&#x2605;") == !star, "%s: marks %s", path, star ? "missing" : "drawn");
+  free(text);
+}
+
+/* dir holds exactly the files of xy_files */
+static void check_xy_dir(const char *dir) {
+  DIR *d = opendir(dir);
+  CHECK(d != NULL, "%s: cannot list", dir);
+  if (!d) return;
+  size_t seen = 0, want = 0;
+  for (struct dirent *e; (e = readdir(d)) != NULL;) {
+    if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+    int known = 0;
+    for (const char *const *name = xy_files; *name; name++) known |= !strcmp(*name, e->d_name);
+    CHECK(known, "%s: stray file %s", dir, e->d_name);
+    seen++;
+  }
+  closedir(d);
+  for (const char *const *name = xy_files; *name; name++) want++;
+  CHECK(seen == want, "%s: %zu files, want %zu", dir, seen, want);
+}
+
+static void test_xy(int keep) {
+  char dir[] = "/tmp/test_plot_xy.XXXXXX", path[PATH_MAX];
+  CHECK(mkdtemp(dir) != NULL, "mkdtemp failed");
+  dv_error err = {{0}};
+  double h[NXY], e1[NXY], e2[NXY], e3[NXY], th[NXY], p[NXY], ct[NXY], st[NXY], u[NXY];
+  int pareto[NXY] = {0}, pareto3[NXY] = {0};
+  for (int i = 0; i < NXY; i++) {
+    h[i] = pow(10.0, -4.0 + 3.0 * i / (NXY - 1)); /* 1e-4 .. 1e-1 */
+    e1[i] = 0.3 * pow(h[i], 4.0);
+    e2[i] = 2.0 * h[i] * h[i];
+    e3[i] = 1e-3 * h[i];
+    const double a = 6.283185307179586 * i / (NXY - 1);
+    ct[i] = cos(a);
+    st[i] = 2.0 * sin(a);
+    th[i] = (1.0 - 0.01 * i) * cos(a);
+    p[i] = 2.0 * (1.0 - 0.01 * i) * sin(a);
+    u[i] = 3.0; /* a flat potential: a collapsed y range */
+    pareto[i] = i % 7 == 0;
+    pareto3[i] = i > 30;
+  }
+  e1[3] = 0.0;    /* not drawable on the log axis */
+  e1[4] = -1e-9;  /* nor this */
+  h[10] = -1.0;   /* nor this x (e1, e2 and e3 lose it) */
+  e2[20] = NAN;   /* a hole */
+  e3[5] = INFINITY;
+  const double lone_x = 1e-2, lone_y = 1e-9, neg = -1.0;
+  dv_plot_curve wp[] = {
+      {"reference (#1)", NXY, h, e3, NULL, DV_CURVE_LINE, 0},
+      {"rk4 (order 3.9)", NXY, h, e1, pareto, DV_CURVE_LINE_POINTS, 1},
+      {"euler (order 2.0)", NXY, h, e2, NULL, DV_CURVE_LINE, 2},
+      {"points", NXY, e2, e1, pareto3, DV_CURVE_POINTS, 3},
+      {"empty", 0, NULL, NULL, NULL, DV_CURVE_LINE, 4},
+      {"lone point", 1, &lone_x, &lone_y, NULL, DV_CURVE_LINE, 5},
+      {"non-positive", 1, &neg, &neg, NULL, DV_CURVE_POINTS, 6},
+  };
+  snprintf(path, sizeof path, "%s/wp.svg", dir);
+  for (int round = 0; round < 2; round++) /* the second replaces the first */
+    CHECK(dv_plot_xy(path, "work-precision: #gh error", "wall s / simulated s",
+                     "|#gh - #gh#dref#u| (rad)", wp, sizeof wp / sizeof wp[0],
+                     DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+          "wp: %s", err.msg);
+  check_svg(path, 1);
+
+  dv_plot_curve many[DV_PLOT_MAX_CURVES];
+  char labels[DV_PLOT_MAX_CURVES][32];
+  double ys[DV_PLOT_MAX_CURVES][NXY];
+  for (int k = 0; k < DV_PLOT_MAX_CURVES; k++) {
+    snprintf(labels[k], sizeof labels[k], "integrator %d", k + 1);
+    for (int i = 0; i < NXY; i++) ys[k][i] = e2[i] * pow(2.0, k);
+    many[k] = (dv_plot_curve){labels[k], NXY, h, ys[k], k == 2 ? pareto : NULL,
+                              k % 3 == 0 ? DV_CURVE_LINE_POINTS : DV_CURVE_LINE, k + 1};
+  }
+  snprintf(path, sizeof path, "%s/many.svg", dir);
+  CHECK(dv_plot_xy(path, "16 curves", "h (s)", "error", many, DV_PLOT_MAX_CURVES,
+                   DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+        "many: %s", err.msg);
+  check_svg(path, 1);
+
+  dv_plot_curve phase[] = {
+      {"reference level set", NXY, ct, st, NULL, DV_CURVE_LINE, 0},
+      {"mujoco", NXY, th, p, NULL, DV_CURVE_LINE, 1},
+      {"ode", NXY, p, th, NULL, DV_CURVE_LINE, 2},
+  };
+  snprintf(path, sizeof path, "%s/phase.svg", dir);
+  CHECK(dv_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL,
+                   &err) == DV_OK,
+        "phase: %s", err.msg);
+  check_svg(path, 0);
+
+  dv_plot_curve flat[] = {{"U(#gh)", NXY, th, u, NULL, DV_CURVE_LINE, 1}};
+  snprintf(path, sizeof path, "%s/flat.svg", dir);
+  CHECK(dv_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) == DV_OK,
+        "flat: %s", err.msg);
+  check_svg(path, 0);
+
+  /* nothing drawable (only non-positive values on log axes, no curves at all): "no data" */
+  snprintf(path, sizeof path, "%s/none.svg", dir);
+  CHECK(dv_plot_xy(path, NULL, NULL, NULL, &wp[6], 1, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+        "none: %s", err.msg);
+  check_svg(path, 0);
+  CHECK(dv_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK, "none: %s",
+        err.msg);
+  check_svg(path, 0);
+  check_xy_dir(dir);
+
+  /* bad paths and arguments: an error status and a message, no file left */
+  const struct {
+    const char *name;
+    const dv_plot_curve *c;
+    size_t n;
+    int flags, status;
+  } bad[] = {
+      {"no/such/dir/x.svg", wp, 2, 0, DV_ESYSTEM},
+      {"", wp, 2, 0, DV_EINPUT}, /* path is dir/: no file name */
+      {"x.svg", NULL, 2, 0, DV_EINPUT},
+      {"x.svg", many, DV_PLOT_MAX_CURVES + 1, 0, DV_EINPUT},
+      {"x.svg", wp, 2, 8, DV_EINPUT},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    snprintf(path, sizeof path, "%s/%s", dir, bad[k].name);
+    err.msg[0] = '\0';
+    const int status = dv_plot_xy(path, "bad", "x", "y", bad[k].c, bad[k].n, bad[k].flags, &err);
+    CHECK(status == bad[k].status, "bad %zu (%s): status %d, want %d", k, bad[k].name, status,
+          bad[k].status);
+    CHECK(err.msg[0] != '\0', "bad %zu: no message", k);
+  }
+  dv_plot_curve nocoords = {"x", 3, NULL, NULL, NULL, DV_CURVE_LINE, 1};
+  dv_plot_curve badstyle = {"x", 1, &lone_x, &lone_y, NULL, 3, 1};
+  snprintf(path, sizeof path, "%s/x.svg", dir);
+  CHECK(dv_plot_xy(path, "", "", "", &nocoords, 1, 0, &err) == DV_EINPUT, "no coordinates");
+  CHECK(dv_plot_xy(path, "", "", "", &badstyle, 1, 0, &err) == DV_EINPUT, "bad style");
+  CHECK(dv_plot_xy(NULL, "", "", "", wp, 1, 0, &err) == DV_EINPUT, "NULL path");
+  check_xy_dir(dir);
+
+  if (keep) {
+    printf("xy plots kept in %s\n", dir);
+    return;
+  }
+  for (const char *const *name = xy_files; *name; name++) {
+    snprintf(path, sizeof path, "%s/%s", dir, *name);
+    unlink(path);
+  }
+  rmdir(dir);
+}
+
 int main(int argc, char **argv) {
   dv_traj ref = {0}, close_by = {0}, holed = {0}, empty = {0}, flat = {0};
   CHECK(make_traj(&ref, N, 0.0) == 0 && make_traj(&close_by, N, 1e-6) == 0 &&
@@ -151,5 +318,6 @@ int main(int argc, char **argv) {
   dv_traj_free(&holed);
   dv_traj_free(&empty);
   dv_traj_free(&flat);
+  test_xy(argc > 1);
   return TEST_RESULT();
 }
