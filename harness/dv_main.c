@@ -22,6 +22,7 @@ static const char HELP[] =
     "  suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N]   many scenarios, reports\n"
     "  sweep SCENARIO --engine NAME --vary KEY=VALUES speed against error over settings\n"
     "  best SCENARIO --engine NAME --theta-tol X      the cheapest settings meeting X\n"
+    "  attribute SCENARIO --engine NAME               why an engine disagrees, in shares\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cmd_engines(int argc, char **argv) {
@@ -65,6 +66,7 @@ int main(int argc, char **argv) {
                   {"suite", dv_cmd_suite},
                   {"sweep", dv_cmd_sweep},
                   {"best", dv_cmd_best},
+                  {"attribute", dv_cmd_attribute},
                   {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

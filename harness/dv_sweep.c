@@ -129,6 +129,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover, 
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, &sc, r->wall_s) : r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
+  pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
   pt->wall_per_sim_s = sim > 0.0 ? wall / sim : NAN;
   pt->steps = r->stats.steps;
   pt->ok = strcmp(r->verdict, "diverged") && strcmp(r->verdict, "lost contact") &&

@@ -32,6 +32,7 @@ typedef struct dv_vary {
 typedef struct dv_sweep_point {
   char values[DV_SWEEP_MAX_VARY][32]; /* this point's value of each varied key */
   double metric[DV_NMETRICS];         /* against the engine's reference */
+  double theta_thin;                  /* theta_max_err against the thin disk */
   double wall_per_sim_s;              /* s per simulated s (median where repeated) */
   long steps;
   int ok;                             /* ran through its compared window */
