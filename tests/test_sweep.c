@@ -1,0 +1,119 @@
+/* test_sweep: speed against error.
+ *   - MuJoCo RK4 over timesteps: the error falls with the step, with a fitted
+ *     order in the band measured; ODE's order is about 1;
+ *   - the Pareto flag on a synthetic table;
+ *   - best: the settings it returns, run again, meet the tolerance;
+ *   - the stability bisection is consistent with its probes and finds the
+ *     limit that ODE's first-order error predicts.
+ * usage: test_sweep SCENARIO (tests/data/short_circle.ini) */
+#include <math.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_search.h"
+#include "dv_sweep.h"
+#include "dv_test.h"
+
+static const char *path;
+
+/* the order fitted to theta_max_err over the ok points of a one-key sweep */
+static double sweep_order(const char *engine, const char *spec, const char *const *sets,
+                          size_t nsets) {
+  static dv_vary v;
+  static dv_sweep s;
+  dv_error err = {{0}};
+  CHECK(dv_vary_parse(spec, engine, &v, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_sweep_run(path, sets, nsets, engine, &v, 1, 2, &s, &err) == DV_OK, "%s", err.msg);
+  double h[DV_SWEEP_MAX_VALUES], e[DV_SWEEP_MAX_VALUES];
+  for (size_t k = 0; k < s.n; k++) {
+    h[k] = atof(s.p[k].values[0]);
+    e[k] = s.p[k].metric[DV_THETA_MAX_ERR];
+    printf("%s %s: theta error %.3e (%s)\n", engine, s.p[k].values[0], e[k], s.p[k].outcome);
+    CHECK(s.p[k].ok, "%s: point %zu: %s %s", engine, k, s.p[k].outcome, s.p[k].detail);
+    if (k) CHECK(e[k] < e[k - 1], "%s: error does not fall from %g to %g", engine, h[k - 1], h[k]);
+  }
+  const double p = dv_fit_order(h, e, s.n);
+  dv_sweep_free(&s);
+  return p;
+}
+
+static void check_orders(void) {
+  /* MuJoCo's RK4 step is not what limits it: its contact time constant is
+   * clamped to 2 dt, so the error follows the contact, first order. Measured
+   * order 0.87 on the 5 s circle; band [0.6, 1.3]. */
+  const char *mj_sets[] = {"engines.mujoco.integrator=rk4"};
+  const double p_mj = sweep_order("mujoco", "timestep=2e-3..2.5e-4:4", mj_sets, 1);
+  printf("mujoco rk4: fitted order %.3f\n", p_mj);
+  CHECK(p_mj > 0.6 && p_mj < 1.3, "mujoco rk4 order %.3f outside [0.6, 1.3]", p_mj);
+  /* ODE is first order: measured 1.00 (2.4e-2, 2.4e-3, 2.4e-4 rad per decade) */
+  const double p_ode = sweep_order("ode", "timestep=8e-5..1e-5:4", NULL, 0);
+  printf("ode: fitted order %.3f\n", p_ode);
+  CHECK(fabs(p_ode - 1.0) < 0.15, "ode order %.3f, not about 1", p_ode);
+}
+
+static void check_pareto(void) {
+  /* (error, cost): A (1, 1) B (0.5, 2) C (2, 2) D (0.5, 3) E (0.1, 10, failed) */
+  dv_sweep_point p[5];
+  const double e[5] = {1, 0.5, 2, 0.5, 0.1}, c[5] = {1, 2, 2, 3, 10};
+  const int want[5] = {1, 1, 0, 0, 0};
+  memset(p, 0, sizeof p);
+  for (int i = 0; i < 5; i++) {
+    p[i].metric[DV_THETA_MAX_ERR] = e[i];
+    p[i].wall_per_sim_s = c[i];
+    p[i].ok = i != 4;
+  }
+  dv_sweep_pareto(p, 5);
+  for (int i = 0; i < 5; i++) CHECK(p[i].pareto == want[i], "point %d: pareto %d", i, p[i].pareto);
+}
+
+static void check_best(void) {
+  static dv_search s;
+  dv_error err = {{0}};
+  const double tol = 2e-3;
+  CHECK(dv_search_best(path, NULL, 0, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(s.best >= 0, "best found nothing for %g", tol);
+  if (s.best < 0) return;
+  const dv_probe *b = &s.probes[s.best];
+  char o1[128], o2[128];
+  snprintf(o1, sizeof o1, "%s=%s", s.choice_key, b->choice);
+  snprintf(o2, sizeof o2, "%s=%.9g", s.step_key, b->step);
+  const char *over[2] = {o1, o2};
+  dv_sweep_point again;
+  dv_sweep_probe(path, NULL, 0, "ode", over, 2, &again, &err);
+  printf("best: %s %s: %.3e rad, again %.3e rad\n", o1, o2, b->point.metric[DV_THETA_MAX_ERR],
+         again.metric[DV_THETA_MAX_ERR]);
+  CHECK(again.ok && again.metric[DV_THETA_MAX_ERR] <= tol, "best settings re-run: %.3g > %g",
+        again.metric[DV_THETA_MAX_ERR], tol);
+  /* no passing probe is cheaper */
+  for (size_t i = 0; i < s.nprobes; i++)
+    if (s.probes[i].pass)
+      CHECK(s.probes[i].point.wall_per_sim_s >= b->point.wall_per_sim_s, "probe %zu is cheaper", i);
+}
+
+static void check_stability(void) {
+  /* ODE's error is c dt: from dt = 1e-5, the step meeting 2 e(1e-5) is 2e-5 */
+  const char *over[1] = {"engines.ode.timestep=1e-5"};
+  dv_sweep_point p;
+  dv_error err = {{0}};
+  dv_sweep_probe(path, NULL, 0, "ode", over, 1, &p, &err);
+  const double tol = 2.0 * p.metric[DV_THETA_MAX_ERR];
+  static dv_search s;
+  CHECK(dv_search_stability(path, NULL, 0, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
+  printf("stability: limit %.4g s for %.3e rad (%zu probes)\n", s.limit, tol, s.nprobes);
+  CHECK(fabs(s.limit / 2e-5 - 1.0) < 0.1, "limit %.4g, predicted 2e-5", s.limit);
+  for (size_t i = 0; i < s.nprobes; i++)
+    CHECK(s.probes[i].pass == (s.probes[i].step <= s.limit),
+          "probe %zu at %g: pass %d against the limit %g", i, s.probes[i].step, s.probes[i].pass,
+          s.limit);
+}
+
+int main(int argc, char **argv) {
+  if (argc != 2) return fprintf(stderr, "usage: test_sweep SCENARIO\n"), 2;
+  path = argv[1];
+  check_pareto();
+  check_orders();
+  check_best();
+  check_stability();
+  return TEST_RESULT();
+}
