@@ -43,6 +43,7 @@ case "${1:-run}" in
   bench)
     "$BUILD_DIR/bench/bench_reduced"
     "$BUILD_DIR/bench/bench_engines"
+    "$BUILD_DIR/bench/bench_sweep" scenarios tests/data
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI

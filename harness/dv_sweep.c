@@ -127,6 +127,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover, 
   }
   const dv_engine_result *r = &c.r[0];
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+  pt->timed_runs = r->wall_s < 0.2 ? 5 : 1;
   const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, &sc, r->wall_s) : r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];

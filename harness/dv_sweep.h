@@ -34,6 +34,7 @@ typedef struct dv_sweep_point {
   double metric[DV_NMETRICS];         /* against the engine's reference */
   double theta_thin;                  /* theta_max_err against the thin disk */
   double wall_per_sim_s;              /* s per simulated s (median where repeated) */
+  int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */
   long steps;
   int ok;                             /* ran through its compared window */
   int pareto;                         /* no other ok point is both cheaper and more accurate */
