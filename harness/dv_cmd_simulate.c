@@ -98,7 +98,7 @@ int dv_cmd_simulate(int argc, char **argv) {
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
   }
-  if (strcmp(out_path, "-") != 0) {
+  if (strcmp(out_path, "-") != 0 && !out.direct) { /* metadata beside a regular file */
     char meta[1100];
     snprintf(meta, sizeof meta, "%s.json", out_path);
     if (dv_meta_write(meta, engine, &sc, &stats, &err)) {

@@ -165,7 +165,10 @@ static int run(const char *cmd, int argc, char **argv) {
       printf("report: %s/%s/report.md\n", a.out, scs[0].name);
     return code;
   }
-  dv_suite_run_all(scs, n, engines, a.out, a.jobs, codes, &err);
+  if (dv_suite_run_all(scs, n, engines, a.out, a.jobs, codes, &err) == DV_EVENT) {
+    fprintf(stderr, "diskval suite: %s\n", err.msg);
+    return 130; /* 128 + SIGINT, as shells report it */
+  }
   if (a.stability &&
       dv_stability_run(scs, n, engines, a.common.sets, (size_t)a.common.nsets, a.out, a.jobs, &err)) {
     fprintf(stderr, "diskval suite: stability: %s\n", err.msg);

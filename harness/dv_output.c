@@ -4,12 +4,22 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 int dv_output_open(dv_output *out, const char *path, dv_error *err) {
   memset(out, 0, sizeof *out);
   if (!path || strcmp(path, "-") == 0) {
     out->fp = stdout;
+    return DV_OK;
+  }
+  struct stat st;
+  if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+    /* a device or a pipe (/dev/null, a FIFO): written directly, never replaced */
+    if (S_ISDIR(st.st_mode)) return dv_fail(err, DV_ESYSTEM, "%s: is a directory", path);
+    if (!(out->fp = fopen(path, "w")))
+      return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
+    out->direct = 1;
     return DV_OK;
   }
   snprintf(out->path, sizeof out->path, "%s", path);
@@ -31,6 +41,11 @@ int dv_output_commit(dv_output *out, dv_error *err) {
     out->fp = NULL;
     return fflush(stdout) == 0 ? DV_OK : dv_fail(err, DV_ESYSTEM, "stdout: %s", strerror(errno));
   }
+  if (out->direct) {
+    const int bad = ferror(out->fp) | fclose(out->fp);
+    out->fp = NULL;
+    return bad ? dv_fail(err, DV_ESYSTEM, "write failed: %s", strerror(errno)) : DV_OK;
+  }
   const int bad = ferror(out->fp) | fflush(out->fp) | fsync(fileno(out->fp));
   const int close_bad = fclose(out->fp);
   out->fp = NULL;
@@ -46,7 +61,7 @@ void dv_output_abort(dv_output *out) {
   if (!out || !out->fp) return;
   if (out->fp != stdout) {
     fclose(out->fp);
-    unlink(out->tmp_path);
+    if (!out->direct) unlink(out->tmp_path);
   }
   out->fp = NULL;
 }

@@ -1,7 +1,9 @@
 /* dv_suite: report directories built aside and renamed; a process pool. */
 #include "dv_suite.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <ftw.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,6 +70,9 @@ int dv_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines
   snprintf(final, sizeof final, "%s/%s", out_dir, sc->name);
   snprintf(tmp, sizeof tmp, "%s/.%s.tmp.XXXXXX", out_dir, sc->name);
   if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno)), DV_EXIT_ERROR;
+  const mode_t mask = umask(0);
+  umask(mask);
+  chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */
   static dv_comparison c;
   int status = dv_run_scenario(sc, NULL, engines, n, &c, err);
   if (!status) status = dv_scenario_report_write(tmp, &c, err);
@@ -91,6 +96,26 @@ int dv_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines
   return pass ? DV_EXIT_OK : DV_EXIT_FAIL;
 }
 
+static volatile sig_atomic_t interrupted;
+
+static void on_interrupt(int sig) {
+  interrupted = sig;
+}
+
+/* remove the temporary directories that interrupted runs left in out_dir */
+static void remove_temporaries(const char *out_dir) {
+  DIR *d = opendir(out_dir);
+  if (!d) return;
+  for (struct dirent *e; (e = readdir(d));) {
+    if (e->d_name[0] != '.' || (!strstr(e->d_name, ".tmp.") && !strstr(e->d_name, ".old.")))
+      continue;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", out_dir, e->d_name);
+    remove_tree(path);
+  }
+  closedir(d);
+}
+
 int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
                      const char *out_dir, int jobs, int *codes, dv_error *err) {
   pid_t *pids = calloc(n ? n : 1, sizeof *pids);
@@ -98,11 +123,21 @@ int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *con
   const int tty = isatty(STDERR_FILENO);
   size_t started = 0, done = 0;
   int running = 0;
+  struct sigaction sa, old_int, old_term;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_interrupt; /* no SA_RESTART: wait() returns to look at the flag */
+  sigemptyset(&sa.sa_mask);
+  interrupted = 0;
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+  for (size_t i = 0; i < n; i++) codes[i] = DV_EXIT_ERROR;
   fflush(NULL);
-  while (done < n) {
-    while (running < jobs && started < n) {
+  while (done < started || (!interrupted && done < n)) {
+    while (!interrupted && running < jobs && started < n) {
       const pid_t pid = fork();
       if (pid == 0) {
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
         dv_error e = {{0}};
         const int code = dv_suite_run_one(&scs[started], engines, out_dir, 0, &e);
         if (code == DV_EXIT_ERROR)
@@ -120,10 +155,16 @@ int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *con
     }
     int wstatus;
     const pid_t pid = wait(&wstatus);
+    if (pid < 0 && errno == EINTR) {
+      for (size_t i = 0; i < started; i++) /* pass it on: a kill may reach only us */
+        if (pids[i] > 0 && codes[i] == DV_EXIT_ERROR) kill(pids[i], interrupted);
+      continue;
+    }
     if (pid < 0) break;
     for (size_t i = 0; i < started; i++)
       if (pids[i] == pid) {
         codes[i] = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : DV_EXIT_ERROR;
+        pids[i] = -1;
         running--;
         done++;
         if (tty)
@@ -134,6 +175,15 @@ int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *con
       }
   }
   if (tty) fputc('\n', stderr);
+  sigaction(SIGINT, &old_int, NULL);
+  sigaction(SIGTERM, &old_term, NULL);
   free(pids);
+  if (interrupted) {
+    remove_temporaries(out_dir);
+    size_t finished = 0;
+    for (size_t i = 0; i < n; i++) finished += codes[i] == DV_EXIT_OK || codes[i] == DV_EXIT_FAIL;
+    return dv_fail(err, DV_EVENT, "interrupted: %zu of %zu scenarios finished, their reports in %s",
+                   finished, n, out_dir);
+  }
   return DV_OK;
 }

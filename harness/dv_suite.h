@@ -22,7 +22,9 @@ int dv_parse_engines(const char *list, const dv_engine_type **engines, size_t ma
 int dv_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
                      const char *out_dir, int verbose, dv_error *err);
 
-/* run scenarios[0..n) in up to jobs processes; exit codes into codes[] */
+/* run scenarios[0..n) in up to jobs processes; exit codes into codes[].
+ * SIGINT or SIGTERM stops it: running scenarios are ended, their temporary
+ * directories removed, finished reports kept; returns DV_EVENT then. */
 int dv_suite_run_all(const dv_scenario *scenarios, size_t n, const dv_engine_type *const *engines,
                      const char *out_dir, int jobs, int *codes, dv_error *err);
 

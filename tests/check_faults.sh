@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# check_faults.sh DISKVAL SCENARIO_DIR: faults outside the numerics.
+#   - a read-only output directory: a clear error, exit 2, nothing written;
+#   - a full disk (a 64 KiB tmpfs): exit 2, no half-written report, no
+#     temporary files left;
+#   - SIGINT during a suite: exit 130, finished reports intact, no temporary
+#     directories left.
+# The file systems are tmpfs mounts: skipped (77) where mounting is not allowed.
+set -u
+diskval=$1
+scenarios=$2
+work=$(mktemp -d)
+ro="$work/ro" full="$work/full"
+mkdir -p "$ro" "$full"
+cleanup() { umount "$ro" 2>/dev/null; umount "$full" 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+if ! mount -t tmpfs -o ro,size=64k tmpfs "$ro" 2>/dev/null ||
+   ! mount -t tmpfs -o size=64k tmpfs "$full" 2>/dev/null; then
+  echo "SKIP: cannot mount a tmpfs here"
+  exit 77
+fi
+fail=0
+check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
+
+# read-only
+"$diskval" suite "$scenarios/falling.ini" --out "$ro/report" 2>"$work/err"; code=$?
+check '[ $code -eq 2 ]' "read-only: exit $code, want 2"
+check '[ "$(wc -l <"$work/err")" -eq 1 ] && grep -q "Read-only" "$work/err"' \
+  "read-only: want one line naming the cause, got: $(cat "$work/err")"
+"$diskval" simulate "$scenarios/falling.ini" --engine reduced --out "$ro/x.csv" 2>/dev/null; code=$?
+check '[ $code -eq 2 ]' "read-only simulate: exit $code, want 2"
+check '[ -z "$(ls -A "$ro")" ]' "read-only: files appeared"
+
+# full disk: upright_stable's CSVs alone are larger than 64 KiB
+"$diskval" suite "$scenarios/upright_stable.ini" --out "$full/report" 2>"$work/err"; code=$?
+check '[ $code -eq 2 ]' "full disk: exit $code, want 2"
+check 'grep -q "No space" "$work/err"' "full disk: no clear message: $(cat "$work/err")"
+check '[ ! -e "$full/report/upright_stable" ]' "full disk: a half-written report remains"
+check '[ -z "$(find "$full" -name "*.tmp*")" ]' "full disk: temporary files remain"
+"$diskval" simulate "$scenarios/upright_stable.ini" --engine reduced --out "$full/x.csv" 2>/dev/null
+code=$?
+check '[ $code -eq 2 ] && [ ! -e "$full/x.csv" ]' "full disk simulate: exit $code or a file left"
+
+# SIGINT in the middle of the default suite
+"$diskval" suite "$scenarios" --out "$work/int" --jobs 2 >/dev/null 2>"$work/err" &
+pid=$!
+sleep 1
+kill -INT "$pid"
+wait "$pid"; code=$?
+check '[ $code -eq 130 ]' "SIGINT: exit $code, want 130"
+check 'grep -q interrupted "$work/err"' "SIGINT: no message"
+check '[ -z "$(find "$work/int" -name ".*tmp*")" ]' "SIGINT: temporary directories remain"
+for d in "$work"/int/*/; do
+  [ -d "$d" ] || continue
+  check '[ -s "$d/report.json" ] && [ -s "$d/report.md" ]' "SIGINT: $d is incomplete"
+done
+[ $fail -eq 0 ] && echo "faults: all contained"
+exit $fail
