@@ -2,6 +2,7 @@
 # diskval set-up and entry point.
 #   ./run.sh          install missing packages, build, run the default suite
 #   ./run.sh test     the same set-up, then the whole test suite (CTest)
+#   ./run.sh test --sanitize   the test suite built with AddressSanitizer and UBSan
 #   ./run.sh bench    the same set-up, then the benchmarks
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -11,6 +12,14 @@ PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-de
 # the tests also check the report's XML and render its page in a real browser
 TEST_PACKAGES=(libxml2-utils chromium)
 BUILD_DIR=${BUILD_DIR:-build}
+CMAKE_FLAGS=()
+if [ "${2:-}" = --sanitize ]; then
+  BUILD_DIR=build-sanitize
+  CMAKE_FLAGS=(-DDV_SANITIZE=ON)
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
+  export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp"
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+fi
 
 install_missing() {
   local missing=()
@@ -26,7 +35,7 @@ install_missing() {
 }
 
 build() {
-  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${CMAKE_FLAGS[@]}" >/dev/null
   cmake --build "$BUILD_DIR" -j "$(nproc)"
 }
 

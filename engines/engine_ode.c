@@ -60,8 +60,17 @@ static ode_engine *ode_current; /* the engine inside a guarded call */
 static char ode_message[200];   /* the last message from ODE */
 
 /* error and debug handler: keep the message, jump back to the guard */
+/* set once ODE was left by a longjmp: its internal state may be half-torn */
+static int ode_poisoned;
+
+/* at exit: free ODE's global state, unless an error left it inconsistent */
+static void ode_close(void) {
+  if (!ode_poisoned) dCloseODE();
+}
+
 static void ode_on_error(int num, const char *msg, va_list ap) {
   vsnprintf(ode_message, sizeof ode_message, msg, ap);
+  ode_poisoned = 1;
   if (ode_jump) longjmp(*ode_jump, num ? num : 1);
   /* unreachable: every ODE call that can fail runs guarded; ODE aborts now */
   fprintf(stderr, "ODE error outside a guarded call: %s\n", ode_message);
@@ -78,6 +87,7 @@ static void ode_init_once(void) {
   static int done = 0;
   if (done) return;
   dInitODE2(0);
+  atexit(ode_close); /* ODE keeps per-thread state until it is closed */
   dSetErrorHandler(ode_on_error);
   dSetDebugHandler(ode_on_error);
   dSetMessageHandler(ode_on_message);
