@@ -143,6 +143,7 @@ int dv_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *con
         if (code == DV_EXIT_ERROR)
           fprintf(stderr, "diskval suite: %s: %s\n", scs[started].name, e.msg);
         fflush(NULL);
+        free(pids);
         _exit(code);
       }
       if (pid < 0) {

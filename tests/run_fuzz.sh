@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# run_fuzz.sh SOURCE_DIR SECONDS: build the libFuzzer target for the scenario
+# parser with clang (AddressSanitizer, UBSan) and run it for SECONDS with a
+# seed corpus of the scenarios and the bad-scenario files. Skipped (77)
+# where clang or its fuzzer runtime is missing.
+set -u
+src=$1
+seconds=${2:-20}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+command -v clang >/dev/null || { echo "SKIP: clang not installed"; exit 77; }
+echo 'int LLVMFuzzerTestOneInput(const char *d, unsigned long n) { return 0; }' >"$work/probe.c"
+if ! clang -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" 2>/dev/null; then
+  echo "SKIP: clang's fuzzer runtime (libclang-rt-dev) not installed"
+  exit 77
+fi
+sundials="-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense"
+sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
+# shellcheck disable=SC2086
+clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
+  -I"$src/common" -I"$src/reduced" -I"$src/harness" \
+  "$src/tests/fuzz/fuzz_scenario.c" "$src/harness/dv_scenario.c" "$src/harness/dv_settings.c" \
+  "$src/common/dv_error.c" "$src"/reduced/*.c \
+  $(pkg-config --cflags --libs inih gsl) $sundials -lm -o "$work/fuzz" || exit 1
+mkdir -p "$work/corpus"
+cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
+cd "$work" || exit 1
+./fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1 corpus 2>&1 | tail -15
+status=${PIPESTATUS[0]}
+rm -f /tmp/fuzz_scenario.*.ini
+exit "$status"
