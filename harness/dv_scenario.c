@@ -277,6 +277,16 @@ static int known_section(const char *name) {
   return 0;
 }
 
+/* the line of an engine setting, or of its section, or 1 */
+static int setting_line(const parse_ctx *c, const char *section, const char *key) {
+  for (size_t i = 0; i < dv_nsetting_specs && i < MAX_SPECS; i++)
+    if (!strcmp(dv_setting_specs[i].section, section) && !strcmp(dv_setting_specs[i].key, key) &&
+        c->spec_line[i])
+      return c->spec_line[i];
+  const int s = section_line(c, section);
+  return s ? s : 1;
+}
+
 /* the engine settings: defaults, names of choices, ranges */
 static int read_settings(parse_ctx *c) {
   for (size_t i = 0; i < dv_nsetting_specs && i < MAX_SPECS; i++) {
@@ -385,6 +395,16 @@ static int validate(parse_ctx *c) {
   };
   if (read_ranges(c, solver, 3)) return -1;
   if (read_settings(c)) return -1;
+  /* an engine samples on its own steps: a step longer than the spacing of the samples */
+  const struct {
+    const char *section;
+    double dt;
+  } steps[] = {{"engines.mujoco", sc->mujoco.timestep}, {"engines.ode", sc->ode.timestep}};
+  for (size_t i = 0; i < 2; i++)
+    if (steps[i].dt > sc->output_dt * (1.0 + 1e-12))
+      return fail_at(c, setting_line(c, steps[i].section, "timestep"), "timestep",
+                     "%g s is longer than output_dt %g s", steps[i].dt, sc->output_dt),
+             -1;
 
   double *y = sc->initial;
   double radius = 0.0, steady_phi_dot = 0.0;

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# check_determinism.sh DISKVAL SCENARIO_DIR: two runs of the default suite
+# (2 processes, then 1) give byte-identical reports apart from the timing
+# fields: wall_per_sim_s in the JSON and Markdown, time= in the JUnit XML,
+# and the wall column of index.html.
+set -u
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$1" suite "$2" --out "$work/a" --jobs 2 >/dev/null || true
+"$1" suite "$2" --out "$work/b" --jobs 1 >/dev/null || true
+untimed() { # strip the timing fields of a file to stdout
+  case "$1" in
+    *.json) grep -v '"wall_per_sim_s"' "$1" ;;
+    *.md) sed -E 's/\| [^|]* \|$/|/' "$1" ;;
+    *.xml) sed -E 's/ time="[^"]*"//g' "$1" ;;
+    *.html) sed -E 's/<td class="n">[^<]*<\/td>(<td>[^<]*<\/td><\/tr>)$/(wall)\1/' "$1" ;;
+    *) cat "$1" ;;
+  esac
+}
+fail=0 n=0
+while IFS= read -r f; do
+  rel=${f#"$work/a/"}
+  n=$((n + 1))
+  if [ ! -f "$work/b/$rel" ]; then echo "FAIL: $rel only in the first run"; fail=1; continue; fi
+  if ! cmp -s <(untimed "$f") <(untimed "$work/b/$rel"); then
+    echo "FAIL: $rel differs"
+    diff <(untimed "$f") <(untimed "$work/b/$rel") | head -5
+    fail=1
+  fi
+done < <(find "$work/a" -type f | sort)
+[ "$n" -gt 50 ] || { echo "FAIL: only $n files"; fail=1; }
+[ $fail -eq 0 ] && echo "determinism: $n files identical apart from timing"
+exit $fail
