@@ -26,6 +26,9 @@ int dv_output_open(dv_output *out, const char *path, dv_error *err) {
   snprintf(out->tmp_path, sizeof out->tmp_path, "%s.tmp.XXXXXX", path);
   int fd = mkstemp(out->tmp_path);
   if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask); /* mkstemp makes it private; outputs are for reading */
   out->fp = fdopen(fd, "w");
   if (!out->fp) {
     close(fd);
