@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "dv_commands.h"
+#include "dv_mpi.h"
 #include "dv_search.h"
 #include "dv_suite.h"
 #include "dv_sweep.h"
@@ -69,7 +70,8 @@ int dv_cmd_sweep(int argc, char **argv) {
   for (size_t v = 0; v < nvary; v++)
     if (dv_vary_parse(specs[v], engine, &vary[v], &err)) return dv_usage_error("sweep", "%s", err.msg);
   static dv_sweep s, ref;
-  if (dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, engine, vary, nvary, jobs, &s, &err)) {
+  const int run = dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, engine, vary, nvary, jobs, &s, &err);
+  if (run < 0) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }
@@ -81,6 +83,7 @@ int dv_cmd_sweep(int argc, char **argv) {
     dv_vary_parse("rtol=1e-6..1e-13:8", "reduced", &rv[1], &err);
     dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, "reduced", rv, 2, jobs, &ref, &err);
   }
+  if (dv_mpi_rank() != 0) return DV_EXIT_OK; /* rank 0 writes */
   int status = dv_make_dirs(out, &err);
   if (!status) status = dv_sweep_write(out, &s, with_ref ? &ref : NULL, &err);
   printf("%-40s %12s %12s %8s %s\n", "settings", "theta err", "s / sim s", "pareto", "outcome");
@@ -92,10 +95,16 @@ int dv_cmd_sweep(int argc, char **argv) {
     printf("%-40s %12.3e %12.4g %8s %s\n", label, s.p[k].metric[DV_THETA_MAX_ERR],
            s.p[k].wall_per_sim_s, s.p[k].pareto ? "*" : "", s.p[k].outcome);
   }
+  const int interrupted = s.interrupted;
   dv_sweep_free(&s);
   dv_sweep_free(&ref);
+  s.interrupted = interrupted;
   if (status) return fprintf(stderr, "diskval sweep: %s\n", err.msg), DV_EXIT_ERROR;
   printf("sweep: %s/sweep.csv, %s/work_precision.svg\n", out, out);
+  if (s.interrupted) {
+    fprintf(stderr, "diskval sweep: stopped early: the points not run are marked missing\n");
+    return DV_EXIT_ERROR;
+  }
   return DV_EXIT_OK;
 }
 

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "dv_commands.h"
+#include "dv_mpi.h"
 #include "dv_engine.h"
 #include "dv_scenario.h"
 #include "red_solver.h"
@@ -69,12 +70,18 @@ int main(int argc, char **argv) {
                   {"attribute", dv_cmd_attribute},
                   {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
+  dv_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(HELP, argc < 2 ? stderr : stdout);
     return argc < 2 ? DV_EXIT_ERROR : DV_EXIT_OK;
   }
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-    if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
+    if (!strcmp(argv[1], commands[i].name)) {
+      const int code = commands[i].run(argc - 1, argv + 1);
+      dv_mpi_finalize();
+      return code;
+    }
+  dv_mpi_finalize();
   fprintf(stderr, "diskval: unknown command '%s' (see diskval --help)\n", argv[1]);
   return DV_EXIT_ERROR;
 }

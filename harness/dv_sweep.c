@@ -12,6 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "dv_mpi.h"
 #include "dv_run.h"
 #include "dv_scenario.h"
 #include "dv_trajectory.h"
@@ -140,6 +141,13 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover, 
   dv_comparison_free(&c);
 }
 
+static void run_point(const job *jb, size_t k, dv_sweep_point *pt);
+
+/* dv_mpi_farm's task: one point */
+static void farm_point(size_t k, void *result, void *ctx) {
+  run_point(ctx, k, result);
+}
+
 static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
   char over[DV_SWEEP_MAX_VARY][160];
   const char *ptrs[DV_SWEEP_MAX_VARY];
@@ -183,6 +191,19 @@ int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const 
   atomic_init(next, 0);
   for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "not run");
   const job jb = {path, sets, nsets, e, vary, nvary};
+  if (dv_mpi_size() > 1) { /* under mpirun: the ranks share the points */
+    unsigned char *done = calloc(n, 1);
+    const int farm = done ? dv_mpi_farm(n, sizeof *pts, farm_point, (void *)&jb, pts, done, NULL) : 2;
+    for (size_t k = 0; done && k < n; k++)
+      if (!done[k]) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
+    free(done);
+    if (farm == 1) { /* a worker rank: rank 0 has the results */
+      munmap(shared, bytes);
+      return DV_EVENT;
+    }
+    out->interrupted = farm == 2;
+    goto gather;
+  }
   fflush(NULL);
   int workers = 0;
   for (int w = 0; w < jobs && (size_t)w < n; w++) {
@@ -196,6 +217,7 @@ int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const 
   if (!workers) /* no process could be made: run them here */
     for (size_t k; (k = atomic_fetch_add(next, 1)) < n;) run_point(&jb, k, &pts[k]);
   while (workers > 0 && wait(NULL) > 0) workers--;
+gather:
   out->p = malloc(n * sizeof *out->p);
   if (out->p) memcpy(out->p, pts, n * sizeof *out->p);
   munmap(shared, bytes);

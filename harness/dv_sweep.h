@@ -49,12 +49,15 @@ typedef struct dv_sweep {
   dv_vary vary[DV_SWEEP_MAX_VARY];
   size_t n;
   dv_sweep_point *p;                  /* n points, the first key varying slowest */
+  int interrupted;                    /* under MPI: stopped early, points "missing" */
 } dv_sweep;
 
 /* parse "key=v1,v2" or "key=a..b:n" for engine into out */
 int dv_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err);
 
-/* run the sweep; sets are extra section.key=value overrides for every point */
+/* run the sweep; sets are extra section.key=value overrides for every point.
+ * Under mpirun the ranks share the points: rank 0 gets the results, the
+ * other ranks return DV_EVENT. */
 int dv_sweep_run(const char *scenario_path, const char *const *sets, size_t nsets,
                  const char *engine, const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out,
                  dv_error *err);

@@ -15,6 +15,7 @@ struct red_integrator {
   void *stepper;
   double t_step;            /* end of the last internal step */
   double t_end;             /* no step goes beyond */
+  double t0, y0[RED_MAX_DIM]; /* the start: answered without asking the stepper */
   double g[RED_MAX_EVENTS]; /* event functions there */
   int event;                /* event found in the last step, or -1 */
   double t_event;
@@ -55,6 +56,8 @@ int red_integrator_reset(red_integrator *in, double t0, double t_end, const doub
                          dv_error *err) {
   in->t_step = t0;
   in->t_end = t_end;
+  in->t0 = t0;
+  memcpy(in->y0, y0, in->sys->dim * sizeof(double));
   in->event = -1;
   in->done = 0;
   eval_events(in->sys, t0, y0, in->g);
@@ -121,6 +124,12 @@ int red_integrator_advance(red_integrator *in, double t_out, double *t, double *
                            dv_error *err) {
   int status = DV_OK;
   const int dense = in->type->caps & RED_CAP_DENSE;
+  if (t_out <= in->t0) { /* ARKODE cannot interpolate before its first step */
+    *t = in->t0;
+    *event = -1;
+    memcpy(y, in->y0, in->sys->dim * sizeof(double));
+    return DV_OK;
+  }
   while (in->event < 0 && in->t_step < fmin(t_out, in->t_end)) {
     status = step_once(in, dense ? in->t_end : fmin(t_out, in->t_end), err);
     if (status) return status;
