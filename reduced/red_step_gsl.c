@@ -43,7 +43,9 @@ typedef struct gsl_stepper {
 static int gsl_rhs(double t, const double y[], double f[], void *p) {
   gsl_stepper *s = p;
   s->rhs_evals++;
-  return s->sys->rhs(t, y, f, s->sys->params) ? GSL_EBADFUNC : GSL_SUCCESS;
+  /* not GSL_EBADFUNC: any other failure makes evolve retry a shorter step, which
+   * keeps a fall that crosses theta = 0 inside the domain until its event */
+  return s->sys->rhs(t, y, f, s->sys->params) ? GSL_EDOM : GSL_SUCCESS;
 }
 
 /* append (t, y, y') to the history; the interpolant is rebuilt when needed.
