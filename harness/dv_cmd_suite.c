@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "dv_commands.h"
+#include "dv_mpi.h"
 #include "dv_run.h"
 #include "dv_stability.h"
 #include "dv_suite.h"
@@ -143,6 +144,21 @@ static int load_all(const char *cmd, suite_args *a, dv_scenario *scs, size_t *n)
   return code;
 }
 
+typedef struct mpi_suite {
+  const dv_scenario *scs;
+  const dv_engine_type *const *engines;
+  const char *out;
+} mpi_suite;
+
+/* dv_mpi_farm's task: one scenario into its report directory; its exit code */
+static void run_scenario_task(size_t k, void *result, void *ctx) {
+  const mpi_suite *ms = ctx;
+  dv_error e = {{0}};
+  const int code = dv_suite_run_one(&ms->scs[k], ms->engines, ms->out, 0, &e);
+  if (code == DV_EXIT_ERROR) fprintf(stderr, "diskval suite: %s: %s\n", ms->scs[k].name, e.msg);
+  memcpy(result, &code, sizeof code);
+}
+
 static int run(const char *cmd, int argc, char **argv) {
   static suite_args a;
   static dv_scenario scs[MAX_SCENARIOS];
@@ -165,7 +181,14 @@ static int run(const char *cmd, int argc, char **argv) {
       printf("report: %s/%s/report.md\n", a.out, scs[0].name);
     return code;
   }
-  if (dv_suite_run_all(scs, n, engines, a.out, a.jobs, codes, &err) == DV_EVENT) {
+  if (dv_mpi_size() > 1) { /* under mpirun: the ranks share the scenarios */
+    mpi_suite ms = {scs, engines, a.out};
+    unsigned char finished[MAX_SCENARIOS] = {0};
+    for (size_t i = 0; i < n; i++) codes[i] = DV_EXIT_ERROR;
+    const int farm = dv_mpi_farm(n, sizeof(int), run_scenario_task, &ms, codes, finished, NULL);
+    if (farm == 1) return DV_EXIT_OK; /* a worker rank: rank 0 reports */
+    if (farm == 2) fprintf(stderr, "diskval suite: stopped early: scenarios not run are errors\n");
+  } else if (dv_suite_run_all(scs, n, engines, a.out, a.jobs, codes, &err) == DV_EVENT) {
     fprintf(stderr, "diskval suite: %s\n", err.msg);
     return 130; /* 128 + SIGINT, as shells report it */
   }

@@ -70,12 +70,18 @@ int dv_cmd_sweep(int argc, char **argv) {
   for (size_t v = 0; v < nvary; v++)
     if (dv_vary_parse(specs[v], engine, &vary[v], &err)) return dv_usage_error("sweep", "%s", err.msg);
   static dv_sweep s, ref;
+  if (dv_mpi_size() > 1) { /* rank 0 keeps the tables current as results arrive */
+    if (dv_mpi_rank() == 0 && dv_make_dirs(out, &err))
+      return fprintf(stderr, "diskval sweep: %s\n", err.msg), DV_EXIT_ERROR;
+    s.checkpoint_dir = out;
+  }
   const int run = dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, engine, vary, nvary, jobs, &s, &err);
   if (run < 0) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }
-  const int with_ref = strcmp(engine, "reduced") && strcmp(engine, "matched");
+  /* the reference's curves; not after an interrupted MPI run, whose ranks are going */
+  const int with_ref = strcmp(engine, "reduced") && strcmp(engine, "matched") && !s.interrupted;
   if (with_ref) { /* the reference's own work-precision curves */
     dv_vary rv[2];
     dv_vary_parse("integrator=gsl-rk8pd,gsl-rk8pd-stepped,gsl-msadams,cvode-adams,cvode-bdf,arkode-fehlberg13",

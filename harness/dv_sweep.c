@@ -143,9 +143,29 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover, 
 
 static void run_point(const job *jb, size_t k, dv_sweep_point *pt);
 
+typedef struct checkpoint_ctx {
+  const job *jb;
+  dv_sweep *out;
+  dv_sweep_point *pts;
+  size_t n;
+  const char *dir;
+} checkpoint_ctx;
+
 /* dv_mpi_farm's task: one point */
 static void farm_point(size_t k, void *result, void *ctx) {
-  run_point(ctx, k, result);
+  const checkpoint_ctx *ck = ctx;
+  run_point(ck->jb, k, result);
+}
+
+/* rank 0, after every result: the tables so far, so a job killed by a dying
+ * rank still leaves what finished (points not run say "missing") */
+static void checkpoint(size_t k, void *ctx) {
+  checkpoint_ctx *ck = ctx;
+  ck->out->p = ck->pts;
+  ck->out->n = ck->n;
+  dv_sweep_write_tables(ck->dir, ck->out, NULL);
+  ck->out->p = NULL;
+  ck->out->n = 0;
 }
 
 static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
@@ -169,7 +189,9 @@ int dv_sweep_probe(const char *path, const char *const *sets, size_t nsets, cons
 
 int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const char *engine,
                  const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
+  const char *checkpoint_dir = out->checkpoint_dir;
   memset(out, 0, sizeof *out);
+  out->checkpoint_dir = checkpoint_dir;
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
   if (nvary > DV_SWEEP_MAX_VARY) return dv_fail(err, DV_EINPUT, "at most %d --vary", DV_SWEEP_MAX_VARY);
@@ -193,9 +215,11 @@ int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const 
   const job jb = {path, sets, nsets, e, vary, nvary};
   if (dv_mpi_size() > 1) { /* under mpirun: the ranks share the points */
     unsigned char *done = calloc(n, 1);
-    const int farm = done ? dv_mpi_farm(n, sizeof *pts, farm_point, (void *)&jb, pts, done, NULL) : 2;
-    for (size_t k = 0; done && k < n; k++)
-      if (!done[k]) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
+    for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
+    checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
+    const int farm =
+        done ? dv_mpi_farm(n, sizeof *pts, farm_point, &ck, pts, done, checkpoint_dir ? checkpoint : NULL)
+             : 2;
     free(done);
     if (farm == 1) { /* a worker rank: rank 0 has the results */
       munmap(shared, bytes);

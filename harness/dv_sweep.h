@@ -50,6 +50,7 @@ typedef struct dv_sweep {
   size_t n;
   dv_sweep_point *p;                  /* n points, the first key varying slowest */
   int interrupted;                    /* under MPI: stopped early, points "missing" */
+  const char *checkpoint_dir;         /* under MPI: tables rewritten after every result */
 } dv_sweep;
 
 /* parse "key=v1,v2" or "key=a..b:n" for engine into out */
@@ -79,5 +80,8 @@ double dv_fit_order(const double *h, const double *err, size_t n);
 /* sweep.csv, sweep.json and the plots into the existing dir; reference is an
  * optional sweep of the reference's own integrators drawn on the same axes */
 int dv_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *reference, dv_error *err);
+
+/* sweep.csv and sweep.json only (no plots): the checkpoint written under MPI */
+int dv_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err);
 
 #endif

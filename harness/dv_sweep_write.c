@@ -123,6 +123,13 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
   return status;
 }
 
+int dv_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err) {
+  static curve cv[MAX_CURVES];
+  const size_t nc = make_curves(s, cv, MAX_CURVES);
+  int status = write_csv(dir, s, err);
+  return status ? status : write_json(dir, s, cv, nc, err);
+}
+
 int dv_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *ref, dv_error *err) {
   static curve cv[MAX_CURVES], rc[MAX_CURVES];
   const size_t nc = make_curves(s, cv, MAX_CURVES);

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# check_mpi.sh DISKVAL SOURCE_DIR: under mpirun with 3 ranks, a sweep and a
+# suite write the same files as serial runs, apart from timing (wall_per_sim_s
+# and the Pareto flag that depends on it). Skipped (77) without mpirun.
+set -u
+command -v mpirun >/dev/null || { echo "SKIP: mpirun not installed"; exit 77; }
+diskval=$1 src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+root=()
+[ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
+mpi() { mpirun "${root[@]}" --oversubscribe -np 3 "$diskval" "$@"; }
+fail=0
+sweep=(sweep "$src/tests/data/short_circle.ini" --engine ode --vary timestep=8e-5..1e-5:5)
+mpi "${sweep[@]}" --out "$work/mpi" >/dev/null || { echo "FAIL: mpirun sweep"; fail=1; }
+"$diskval" "${sweep[@]}" --out "$work/serial" --jobs 1 >/dev/null
+untimed() { cut -d, -f1-9,11-12 "$1"; } # drop wall_per_sim_s and pareto
+if ! cmp -s <(untimed "$work/mpi/sweep.csv") <(untimed "$work/serial/sweep.csv"); then
+  echo "FAIL: sweep.csv differs between mpirun and serial"
+  diff <(untimed "$work/mpi/sweep.csv") <(untimed "$work/serial/sweep.csv") | head
+  fail=1
+fi
+suite=(suite "$src/scenarios/falling.ini" "$src/scenarios/upright_stable.ini" "$src/scenarios/small_c.ini")
+mpi "${suite[@]}" --out "$work/mpi_suite" >/dev/null || { echo "FAIL: mpirun suite"; fail=1; }
+"$diskval" "${suite[@]}" --out "$work/serial_suite" --jobs 1 >/dev/null
+for f in "$work"/serial_suite/*/report.json; do
+  rel=${f#"$work/serial_suite/"}
+  cmp -s <(grep -v wall_per_sim_s "$f") <(grep -v wall_per_sim_s "$work/mpi_suite/$rel") ||
+    { echo "FAIL: $rel differs"; fail=1; }
+done
+[ $fail -eq 0 ] && echo "mpi: identical to serial apart from timing"
+exit $fail
