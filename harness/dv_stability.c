@@ -1,19 +1,15 @@
 /* dv_stability: bisection for the largest stable timestep, per scenario and
  * engine, in a pool of processes; the tables as JSON, Markdown and HTML. */
-#define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "dv_stability.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "dv_output.h"
+#include "dv_pool.h"
 #include "dv_search.h"
 
 #define DEFAULT_TOL 0.1 /* rad, where a scenario gives no theta tolerance */
@@ -115,6 +111,19 @@ static int write_tables(const char *dir, const task *tk, const dv_search *res, s
   return status;
 }
 
+typedef struct search_ctx {
+  const task *tk;
+  const char *const *sets;
+  size_t nsets;
+} search_ctx;
+
+/* dv_pool's task: one scenario and engine */
+static void search_task(size_t k, void *result, void *ctx) {
+  const search_ctx *c = ctx;
+  dv_search_stability(c->tk[k].sc->path, c->sets, c->nsets, c->tk[k].engine->name, c->tk[k].tol,
+                      result, NULL);
+}
+
 int dv_stability_run(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
                      const char *const *sets, size_t nsets, const char *out_dir, int jobs,
                      dv_error *err) {
@@ -126,30 +135,13 @@ int dv_stability_run(const dv_scenario *scs, size_t n, const dv_engine_type *con
     for (size_t k = 0; k < ne; k++)
       if (engines[k] != &dv_engine_reduced && engines[k] != &dv_engine_matched)
         tk[nt++] = (task){&scs[i], engines[k], theta_tolerance(&scs[i], engines[k]->name)};
-  const size_t bytes = sizeof(atomic_size_t) + (nt + 1) * sizeof(dv_search);
-  void *shared = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-  if (shared == MAP_FAILED) return free(tk), dv_fail(err, DV_ESYSTEM, "cannot map memory");
-  atomic_size_t *next = shared;
-  dv_search *res = (dv_search *)((char *)shared + sizeof(atomic_size_t));
-  atomic_init(next, 0);
-  fflush(NULL);
-  int workers = 0;
-  for (int w = 0; w < jobs && (size_t)w < nt; w++) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      for (size_t k; (k = atomic_fetch_add(next, 1)) < nt;)
-        dv_search_stability(tk[k].sc->path, sets, nsets, tk[k].engine->name, tk[k].tol, &res[k],
-                            NULL);
-      _exit(0);
-    }
-    if (pid > 0) workers++;
-  }
-  if (!workers)
-    for (size_t k; (k = atomic_fetch_add(next, 1)) < nt;)
-      dv_search_stability(tk[k].sc->path, sets, nsets, tk[k].engine->name, tk[k].tol, &res[k], NULL);
-  while (workers > 0 && wait(NULL) > 0) workers--;
+  dv_search *res = calloc(nt + 1, sizeof *res);
+  if (!res) return free(tk), dv_fail(err, DV_ESYSTEM, "out of memory");
+  search_ctx sc = {tk, sets, nsets};
+  const int pool = dv_pool_run(nt, sizeof *res, search_task, &sc, res, jobs, NULL);
+  if (pool == 1) return free(res), free(tk), DV_OK; /* a worker rank */
   const int status = write_tables(out_dir, tk, res, nt, err);
-  munmap(shared, bytes);
+  free(res);
   free(tk);
   return status;
 }

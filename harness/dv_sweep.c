@@ -1,18 +1,14 @@
 /* dv_sweep: grids of settings run in a pool of processes over shared memory. */
-#define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "dv_sweep.h"
 
 #include <math.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
-#include "dv_mpi.h"
+#include "dv_pool.h"
 #include "dv_run.h"
 #include "dv_scenario.h"
 #include "dv_trajectory.h"
@@ -204,48 +200,20 @@ int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const 
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   out->nvary = nvary;
   memcpy(out->vary, vary, nvary * sizeof *vary);
-  /* results and the next-point counter live in memory shared with the workers */
-  const size_t bytes = sizeof(atomic_size_t) + n * sizeof(dv_sweep_point);
-  void *shared = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-  if (shared == MAP_FAILED) return dv_fail(err, DV_ESYSTEM, "cannot map %zu bytes", bytes);
-  atomic_size_t *next = shared;
-  dv_sweep_point *pts = (dv_sweep_point *)((char *)shared + sizeof(atomic_size_t));
-  atomic_init(next, 0);
-  for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "not run");
+  dv_sweep_point *pts = calloc(n, sizeof *pts);
+  if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
   const job jb = {path, sets, nsets, e, vary, nvary};
-  if (dv_mpi_size() > 1) { /* under mpirun: the ranks share the points */
-    unsigned char *done = calloc(n, 1);
-    for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
-    checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
-    const int farm =
-        done ? dv_mpi_farm(n, sizeof *pts, farm_point, &ck, pts, done, checkpoint_dir ? checkpoint : NULL)
-             : 2;
-    free(done);
-    if (farm == 1) { /* a worker rank: rank 0 has the results */
-      munmap(shared, bytes);
-      return DV_EVENT;
-    }
-    out->interrupted = farm == 2;
-    goto gather;
+  checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
+  /* under mpirun, rank 0 keeps the tables current as results arrive */
+  const int pool = dv_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs,
+                               dv_mpi_size() > 1 && checkpoint_dir ? checkpoint : NULL);
+  if (pool == 1 || pool < 0) { /* a worker rank: rank 0 has the results */
+    free(pts);
+    return pool == 1 ? DV_EVENT : dv_fail(err, DV_ESYSTEM, "out of memory");
   }
-  fflush(NULL);
-  int workers = 0;
-  for (int w = 0; w < jobs && (size_t)w < n; w++) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      for (size_t k; (k = atomic_fetch_add(next, 1)) < n;) run_point(&jb, k, &pts[k]);
-      _exit(0);
-    }
-    if (pid > 0) workers++;
-  }
-  if (!workers) /* no process could be made: run them here */
-    for (size_t k; (k = atomic_fetch_add(next, 1)) < n;) run_point(&jb, k, &pts[k]);
-  while (workers > 0 && wait(NULL) > 0) workers--;
-gather:
-  out->p = malloc(n * sizeof *out->p);
-  if (out->p) memcpy(out->p, pts, n * sizeof *out->p);
-  munmap(shared, bytes);
-  if (!out->p) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  out->interrupted = pool == 2;
+  out->p = pts;
   out->n = n;
   dv_sweep_pareto(out->p, n);
   return DV_OK;
