@@ -53,6 +53,7 @@ case "${1:-run}" in
     "$BUILD_DIR/bench/bench_reduced"
     "$BUILD_DIR/bench/bench_engines"
     "$BUILD_DIR/bench/bench_sweep" scenarios tests/data
+    bash bench/bench_mpi.sh "$BUILD_DIR/harness/diskval" .
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI

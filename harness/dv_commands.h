@@ -13,6 +13,7 @@ int dv_cmd_suite(int argc, char **argv);
 int dv_cmd_sweep(int argc, char **argv);
 int dv_cmd_best(int argc, char **argv);
 int dv_cmd_attribute(int argc, char **argv);
+int dv_cmd_map(int argc, char **argv);
 
 /* print "diskval: message" on stderr and return DV_EXIT_ERROR */
 int dv_usage_error(const char *command, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

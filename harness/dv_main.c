@@ -24,6 +24,7 @@ static const char HELP[] =
     "  sweep SCENARIO --engine NAME --vary KEY=VALUES speed against error over settings\n"
     "  best SCENARIO --engine NAME --theta-tol X      the cheapest settings meeting X\n"
     "  attribute SCENARIO --engine NAME               why an engine disagrees, in shares\n"
+    "  map [--c A..B:N] [--spin A..B:N]               stability map of upright rolling\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cmd_engines(int argc, char **argv) {
@@ -68,6 +69,7 @@ int main(int argc, char **argv) {
                   {"sweep", dv_cmd_sweep},
                   {"best", dv_cmd_best},
                   {"attribute", dv_cmd_attribute},
+                  {"map", dv_cmd_map},
                   {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   dv_mpi_init(&argc, &argv);

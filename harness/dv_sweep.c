@@ -22,9 +22,11 @@ int dv_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *
            bare ? "." : "", (int)(eq - spec), spec);
   const char *list = eq + 1, *dots = strstr(list, "..");
   if (dots) { /* a..b:n on a log scale */
-    char *end;
-    const double a = strtod(list, &end);
-    const double b = (end == dots) ? strtod(dots + 2, &end) : NAN;
+    char first[64], *end;
+    snprintf(first, sizeof first, "%.*s", (int)(dots - list), list); /* "1..40": not "1." */
+    double a = strtod(first, &end);
+    if (*end) a = NAN;
+    const double b = strtod(dots + 2, &end);
     const long n = (*end == ':') ? strtol(end + 1, &end, 10) : 0;
     if (*end || !(a > 0.0) || !(b > 0.0) || n < 2 || n > DV_SWEEP_MAX_VALUES)
       return dv_fail(err, DV_EINPUT, "--vary %s: a range is a..b:n with a, b > 0 and 2 <= n <= %d",
