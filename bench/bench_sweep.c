@@ -46,8 +46,10 @@ int main(int argc, char **argv) {
     if (jobs == 2) break;
     dv_sweep_free(&s);
   }
-  printf("sweep of %zu points (MuJoCo, 1 s each): 1 process %.3f s, 2 processes %.3f s: "
-         "ratio %.2f (target <= 0.55)\n", s.n, t[0], t[1], t[1] / t[0]);
+  printf(
+      "sweep of %zu points (MuJoCo, 1 s each): 1 process %.3f s, 2 processes %.3f s: "
+      "ratio %.2f (target <= 0.55)\n",
+      s.n, t[0], t[1], t[1] / t[0]);
 
   /* overhead: the serial sweep's time per point less its timed engine runs */
   static dv_scenario sc;
@@ -85,9 +87,10 @@ int main(int argc, char **argv) {
         continue;
       }
       const dv_probe *p = &b.probes[b.best];
-      printf("  %-7s theta error 1e-3: %s, timestep %.3g s: %.3g s per simulated s = %.1fx the "
-             "reference at 1e-10\n",
-             engines[e], p->choice, p->step, p->point.wall_per_sim_s, p->point.wall_per_sim_s / ref);
+      printf(
+          "  %-7s theta error 1e-3: %s, timestep %.3g s: %.3g s per simulated s = %.1fx the "
+          "reference at 1e-10\n",
+          engines[e], p->choice, p->step, p->point.wall_per_sim_s, p->point.wall_per_sim_s / ref);
     }
   }
   return 0;

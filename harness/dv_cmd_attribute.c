@@ -103,7 +103,8 @@ int dv_cmd_attribute(int argc, char **argv) {
     double v;
     const char *how;
   } rows[] = {
-      {"geometry", geometry, h > 0 ? "thin disk against matched (same h)" : "smooth stand-in: none"},
+      {"geometry", geometry,
+       h > 0 ? "thin disk against matched (same h)" : "smooth stand-in: none"},
       {"time", time, "Richardson over dt, dt/2, dt/4"},
       {"contact", contact, "4x stiffer contact, 10x friction, at a finer step"},
       {"rest", rest, "what the others leave"},

@@ -27,7 +27,7 @@ static const char HELP[] =
     "by theta_dot = 0.05 rad/s, for DURATION s (default 5) in every engine (default\n"
     "reduced,mujoco,ode). Each cell is 'stays up' (|theta - pi/2| < 0.1 rad),\n"
     "'wobbles', or 'falls' (lies down or leaves the ground). Writes DIR (default: map):\n"
-    "map.csv, map.json and map_<engine>.svg with the critical spin\n"
+    "map.csv and map_<engine>.svg with the critical spin\n"
     "Omega_c = sqrt(m g r A / (C (C + m r^2))) drawn over the cells.\n";
 
 enum { STAYS_UP = 0, WOBBLES, FALLS, FAILED, NOUTCOMES };
@@ -132,15 +132,16 @@ static int write_outputs(const char *dir, const map *mp, const cell *cells, dv_e
     dv_plot_curve curves[NOUTCOMES + 1];
     size_t n = 0;
     for (int o = 0; o < NOUTCOMES; o++)
-      if (count[o]) curves[n++] = (dv_plot_curve){OUTCOMES[o], count[o], xs[o], ys[o], NULL,
-                                                  DV_CURVE_POINTS, o + 1};
-    curves[n++] = (dv_plot_curve){"critical spin (reduced, linear)", 200, cx, cy, NULL,
-                                  DV_CURVE_LINE, 0};
+      if (count[o])
+        curves[n++] =
+            (dv_plot_curve){OUTCOMES[o], count[o], xs[o], ys[o], NULL, DV_CURVE_POINTS, o + 1};
+    curves[n++] =
+        (dv_plot_curve){"critical spin (reduced, linear)", 200, cx, cy, NULL, DV_CURVE_LINE, 0};
     char title[128];
     snprintf(path, sizeof path, "%s/map_%s.svg", dir, mp->engines[e]->name);
     snprintf(title, sizeof title, "upright rolling in %s", mp->engines[e]->name);
-    status = dv_plot_xy(path, title, "C / (m r^2)", "spin psi_dot (rad/s)", curves, n,
-                        DV_PLOT_LOGY, err);
+    status = dv_plot_xy(path, title, "C / (m r^2)", "spin psi_dot (rad/s)", curves, n, DV_PLOT_LOGY,
+                        err);
   }
   return status;
 }

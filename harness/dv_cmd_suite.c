@@ -192,8 +192,8 @@ static int run(const char *cmd, int argc, char **argv) {
     fprintf(stderr, "diskval suite: %s\n", err.msg);
     return 130; /* 128 + SIGINT, as shells report it */
   }
-  if (a.stability &&
-      dv_stability_run(scs, n, engines, a.common.sets, (size_t)a.common.nsets, a.out, a.jobs, &err)) {
+  if (a.stability && dv_stability_run(scs, n, engines, a.common.sets, (size_t)a.common.nsets, a.out,
+                                      a.jobs, &err)) {
     fprintf(stderr, "diskval suite: stability: %s\n", err.msg);
     return DV_EXIT_ERROR;
   }

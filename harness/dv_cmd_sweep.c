@@ -68,14 +68,16 @@ int dv_cmd_sweep(int argc, char **argv) {
   if (jobs < 1 || jobs > 1024) return dv_usage_error("sweep", "--jobs takes 1 to 1024");
   dv_error err = {{0}};
   for (size_t v = 0; v < nvary; v++)
-    if (dv_vary_parse(specs[v], engine, &vary[v], &err)) return dv_usage_error("sweep", "%s", err.msg);
+    if (dv_vary_parse(specs[v], engine, &vary[v], &err))
+      return dv_usage_error("sweep", "%s", err.msg);
   static dv_sweep s, ref;
   if (dv_mpi_size() > 1) { /* rank 0 keeps the tables current as results arrive */
     if (dv_mpi_rank() == 0 && dv_make_dirs(out, &err))
       return fprintf(stderr, "diskval sweep: %s\n", err.msg), DV_EXIT_ERROR;
     s.checkpoint_dir = out;
   }
-  const int run = dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, engine, vary, nvary, jobs, &s, &err);
+  const int run =
+      dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, engine, vary, nvary, jobs, &s, &err);
   if (run < 0) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
@@ -84,8 +86,10 @@ int dv_cmd_sweep(int argc, char **argv) {
   const int with_ref = strcmp(engine, "reduced") && strcmp(engine, "matched") && !s.interrupted;
   if (with_ref) { /* the reference's own work-precision curves */
     dv_vary rv[2];
-    dv_vary_parse("integrator=gsl-rk8pd,gsl-rk8pd-stepped,gsl-msadams,cvode-adams,cvode-bdf,arkode-fehlberg13",
-                  "reduced", &rv[0], &err);
+    dv_vary_parse(
+        "integrator=gsl-rk8pd,gsl-rk8pd-stepped,gsl-msadams,cvode-adams,cvode-bdf,arkode-"
+        "fehlberg13",
+        "reduced", &rv[0], &err);
     dv_vary_parse("rtol=1e-6..1e-13:8", "reduced", &rv[1], &err);
     dv_sweep_run(a.scenario, a.sets, (size_t)a.nsets, "reduced", rv, 2, jobs, &ref, &err);
   }

@@ -62,15 +62,10 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     int (*run)(int, char **);
-  } commands[] = {{"simulate", dv_cmd_simulate},
-                  {"analyze", dv_cmd_analyze},
-                  {"compare", dv_cmd_compare},
-                  {"suite", dv_cmd_suite},
-                  {"sweep", dv_cmd_sweep},
-                  {"best", dv_cmd_best},
-                  {"attribute", dv_cmd_attribute},
-                  {"map", dv_cmd_map},
-                  {"engines", dv_cmd_engines}};
+  } commands[] = {
+      {"simulate", dv_cmd_simulate},   {"analyze", dv_cmd_analyze}, {"compare", dv_cmd_compare},
+      {"suite", dv_cmd_suite},         {"sweep", dv_cmd_sweep},     {"best", dv_cmd_best},
+      {"attribute", dv_cmd_attribute}, {"map", dv_cmd_map},         {"engines", dv_cmd_engines}};
   gsl_set_error_handler_off();
   dv_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

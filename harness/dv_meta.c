@@ -33,6 +33,22 @@ void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) {
   return o;
 }
 
+int dv_json_write(const char *dir, const char *name, void *json, dv_error *err) {
+  char *text = cJSON_Print(json);
+  cJSON_Delete(json);
+  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  char path[1200];
+  dv_output out;
+  snprintf(path, sizeof path, "%s%s%s", dir, name ? "/" : "", name ? name : "");
+  int status = dv_output_open(&out, path, err);
+  if (!status) {
+    fprintf(out.fp, "%s\n", text);
+    status = dv_output_commit(&out, err);
+  }
+  free(text);
+  return status;
+}
+
 int dv_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
                   const dv_engine_stats *st, dv_error *err) {
   cJSON *o = cJSON_CreateObject();
@@ -49,16 +65,5 @@ int dv_meta_write(const char *path, const dv_engine_type *engine, const dv_scena
   cJSON_AddNumberToObject(s, "penetration_max", st->penetration_max);
   cJSON_AddNumberToObject(s, "contacts_max", st->contacts_max);
   cJSON_AddNumberToObject(s, "warnings", (double)st->warnings);
-  char *text = cJSON_Print(o);
-  cJSON_Delete(o);
-  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  dv_output out;
-  int status = dv_output_open(&out, path, err);
-  if (!status) {
-    fputs(text, out.fp);
-    fputc('\n', out.fp);
-    status = dv_output_commit(&out, err);
-  }
-  free(text);
-  return status;
+  return dv_json_write(path, NULL, o, err);
 }

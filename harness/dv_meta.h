@@ -9,6 +9,10 @@
 /* a JSON object (cJSON *) describing engine's settings in sc */
 void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* write dir/name atomically (name NULL: dir is the path) as the JSON object
+ * json (a cJSON *), which is deleted */
+int dv_json_write(const char *dir, const char *name, void *json, dv_error *err);
+
 /* write path atomically: scenario, engine, version, settings, stats */
 int dv_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
                   const dv_engine_stats *stats, dv_error *err);

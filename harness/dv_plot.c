@@ -40,14 +40,19 @@ static const struct {
 };
 
 /* cmap0: background, foreground (axes and the thin reference), grid, series */
-enum { COL_BG = DVP_COL_BG, COL_FG = DVP_COL_FG, COL_GRID = DVP_COL_GRID, COL_SERIES = DVP_COL_SERIES };
+enum {
+  COL_BG = DVP_COL_BG,
+  COL_FG = DVP_COL_FG,
+  COL_GRID = DVP_COL_GRID,
+  COL_SERIES = DVP_COL_SERIES
+};
 _Static_assert(DV_PLOT_MAX_SERIES <= DVP_NPALETTE, "a palette colour per series");
-static const PLINT red[DVP_NCOLOURS] = {255, 0,   225, 31, 255, 44, 214, 148, 140,
-                                        227, 127, 188, 23, 0,   0,  204, 128, 200, 0};
-static const PLINT green[DVP_NCOLOURS] = {255, 0,   225, 119, 127, 160, 39,  103, 86,
-                                          119, 127, 189, 190, 0,   100, 153, 0,   0, 128};
-static const PLINT blue[DVP_NCOLOURS] = {255, 0,   225, 180, 14, 44, 40, 189, 75,
-                                         194, 127, 34,  207, 140, 0,  0,  0,  200, 128};
+static const PLINT red[DVP_NCOLOURS] = {255, 0,   225, 31, 255, 44,  214, 148, 140, 227,
+                                        127, 188, 23,  0,  0,   204, 128, 200, 0};
+static const PLINT green[DVP_NCOLOURS] = {255, 0,   225, 119, 127, 160, 39, 103, 86, 119,
+                                          127, 189, 190, 0,   100, 153, 0,  0,   128};
+static const PLINT blue[DVP_NCOLOURS] = {255, 0,  225, 180, 14, 44, 40, 189, 75, 194,
+                                         127, 34, 207, 140, 0,  0,  0,  200, 128};
 
 #define ERR_FLOOR 1e-16  /* smallest error drawn on the log axis, rad */
 #define LINE_CHUNK 65536 /* points per plline call */
@@ -143,7 +148,7 @@ static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
     c->colour = COL_FG;
     if (fill_curve(c, kind, in->thin, NULL)) return -1;
     dvp_escape(c->label, sizeof c->label, "reference (thin disk)",
-           curve_has_data(c) ? "" : " (no data)");
+               curve_has_data(c) ? "" : " (no data)");
   }
   for (size_t k = 0; k < in->nseries; k++) {
     const dv_plot_series *s = &in->series[k];

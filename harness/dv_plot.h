@@ -82,7 +82,7 @@ enum { DV_PLOT_LOGX = 1, DV_PLOT_LOGY = 2, DV_PLOT_EQUAL = 4 };
 enum { DV_CURVE_LINE = 0, DV_CURVE_POINTS = 1, DV_CURVE_LINE_POINTS = 2 };
 
 typedef struct dv_plot_curve {
-  const char *label;   /* legend text */
+  const char *label; /* legend text */
   size_t n;
   const double *x, *y; /* n values each; non-finite (and, on a log axis, <= 0) skipped */
   const int *marked;   /* optional, n flags: marked points drawn with a larger distinct

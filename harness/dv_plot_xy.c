@@ -23,12 +23,12 @@
 #define CHUNK 65536 /* points per plline or plstring call */
 
 typedef struct xy_curve {
-  double *x, *y;      /* plotted coordinates, NaN where a point is skipped */
-  const int *marked;  /* the caller's, or NULL */
+  double *x, *y;     /* plotted coordinates, NaN where a point is skipped */
+  const int *marked; /* the caller's, or NULL */
   size_t n;
-  int style, any;     /* any: a point to draw */
-  PLINT colour;       /* cmap0 index */
-  char label[128];    /* PLplot-escaped */
+  int style, any;  /* any: a point to draw */
+  PLINT colour;    /* cmap0 index */
+  char label[128]; /* PLplot-escaped */
 } xy_curve;
 
 typedef struct xy_figure {
@@ -255,8 +255,8 @@ int dv_plot_xy(const char *path, const char *title, const char *xlabel, const ch
     if (c->n > 0 && (!c->x || !c->y))
       return dv_fail(err, DV_EINPUT, "%s: curve %zu has no coordinates", path, k);
     if (c->style < DV_CURVE_LINE || c->style > DV_CURVE_LINE_POINTS || c->colour < 0)
-      return dv_fail(err, DV_EINPUT, "%s: curve %zu: bad style %d or colour %d", path, k,
-                     c->style, c->colour);
+      return dv_fail(err, DV_EINPUT, "%s: curve %zu: bad style %d or colour %d", path, k, c->style,
+                     c->colour);
   }
   if (!dvp_have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
   xy_figure *f = calloc(1, sizeof *f);

@@ -103,7 +103,8 @@ static int run_into(const dv_engine_type *type, const dv_scenario *sc, dv_traj *
 }
 
 int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
-                    const dv_engine_type *const *engines, size_t n, dv_comparison *c, dv_error *err) {
+                    const dv_engine_type *const *engines, size_t n, dv_comparison *c,
+                    dv_error *err) {
   memset(c, 0, sizeof *c);
   c->sc = sc;
   c->pass = 1;

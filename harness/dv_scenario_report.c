@@ -98,19 +98,7 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
     snprintf(p, sizeof p, "%s/%s", dir, name);
     if (!access(p, F_OK)) cJSON_AddItemToArray(plots, cJSON_CreateString(name));
   }
-  char *text = cJSON_Print(o);
-  cJSON_Delete(o);
-  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  char path[1200];
-  dv_output out;
-  snprintf(path, sizeof path, "%s/report.json", dir);
-  int status = dv_output_open(&out, path, err);
-  if (!status) {
-    fprintf(out.fp, "%s\n", text);
-    status = dv_output_commit(&out, err);
-  }
-  free(text);
-  return status;
+  return dv_json_write(dir, "report.json", o, err);
 }
 
 static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err) {
@@ -200,8 +188,13 @@ static int write_portraits(const char *dir, const dv_comparison *c, dv_error *er
     const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
     if (!(buf[k] = malloc(2 * (tr->n + 1) * sizeof(double)))) break;
     phase_coordinates(dk, tr, buf[k], buf[k] + tr->n);
-    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)", tr->n,
-                              buf[k], buf[k] + tr->n, NULL, DV_CURVE_LINE, (int)k + 1};
+    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)",
+                              tr->n,
+                              buf[k],
+                              buf[k] + tr->n,
+                              NULL,
+                              DV_CURVE_LINE,
+                              (int)k + 1};
   }
   snprintf(path, sizeof path, "%s/phase.svg", dir);
   snprintf(title, sizeof title, "%s: phase plane", c->sc->name);

@@ -17,8 +17,9 @@ typedef struct space {
 
 static const char *const MJ_CHOICES[] = {"euler", "rk4", "implicit", NULL};
 static const char *const ODE_CHOICES[] = {"step", "quickstep", NULL};
-static const char *const REF_CHOICES[] = {"gsl-rk8pd", "gsl-rk8pd-stepped", "gsl-msadams",
-                                          "cvode-adams", "cvode-bdf", "arkode-fehlberg13", NULL};
+static const char *const REF_CHOICES[] = {"gsl-rk8pd",   "gsl-rk8pd-stepped", "gsl-msadams",
+                                          "cvode-adams", "cvode-bdf",         "arkode-fehlberg13",
+                                          NULL};
 
 static const space SPACES[] = {
     {"mujoco", "engines.mujoco.integrator", "engines.mujoco.timestep", MJ_CHOICES, 1e-6, 0.02},
@@ -130,15 +131,15 @@ int dv_search_best(const char *path, const char *const *sets, size_t nsets, cons
   }
   for (size_t i = 0; i < out->nprobes; i++) {
     const dv_probe *p = &out->probes[i];
-    if (p->pass && (out->best < 0 || p->point.wall_per_sim_s <
-                                         out->probes[out->best].point.wall_per_sim_s))
+    if (p->pass &&
+        (out->best < 0 || p->point.wall_per_sim_s < out->probes[out->best].point.wall_per_sim_s))
       out->best = (int)i;
   }
   return DV_OK;
 }
 
-int dv_search_stability(const char *path, const char *const *sets, size_t nsets,
-                        const char *engine, double tol, dv_search *out, dv_error *err) {
+int dv_search_stability(const char *path, const char *const *sets, size_t nsets, const char *engine,
+                        double tol, dv_search *out, dv_error *err) {
   ctx c;
   double start;
   int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);

@@ -20,21 +20,21 @@
 #define DV_SEARCH_MAX_PROBES 64
 
 typedef struct dv_probe {
-  char choice[32];        /* the discrete setting, e.g. "rk4" */
-  double step;            /* the continuous setting, e.g. the timestep */
-  dv_sweep_point point;   /* what the run gave */
-  int pass;               /* ok and theta error within the tolerance */
+  char choice[32];      /* the discrete setting, e.g. "rk4" */
+  double step;          /* the continuous setting, e.g. the timestep */
+  dv_sweep_point point; /* what the run gave */
+  int pass;             /* ok and theta error within the tolerance */
 } dv_probe;
 
 typedef struct dv_search {
   char engine[32];
   char choice_key[96], step_key[96]; /* e.g. engines.mujoco.integrator, engines.mujoco.timestep */
-  double tolerance;       /* theta_max_err limit, rad */
+  double tolerance;                  /* theta_max_err limit, rad */
   size_t nprobes;
   dv_probe probes[DV_SEARCH_MAX_PROBES];
-  int best;               /* index of the cheapest passing probe, or -1 */
-  double limit;           /* stability: largest passing step, NAN when none */
-  int first_failure;      /* stability: the probe just above the limit, or -1 */
+  int best;          /* index of the cheapest passing probe, or -1 */
+  double limit;      /* stability: largest passing step, NAN when none */
+  int first_failure; /* stability: the probe just above the limit, or -1 */
 } dv_search;
 
 /* the cheapest settings of engine meeting theta_max_err <= tol */

@@ -50,7 +50,8 @@ static int write_tables(const char *dir, const task *tk, const dv_search *res, s
   cJSON *o = cJSON_CreateArray();
   size_t cap = 4096 + n * 4096;
   char *md = malloc(cap), *html = malloc(2 * cap);
-  if (!md || !html) return free(md), free(html), cJSON_Delete(o), dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!md || !html)
+    return free(md), free(html), cJSON_Delete(o), dv_fail(err, DV_ESYSTEM, "out of memory");
   size_t lm = 0, lh = 0;
   lm += snprintf(md + lm, cap - lm,
                  "# Stability limits\n\nLargest timestep that stays finite and within the theta "
@@ -72,9 +73,10 @@ static int write_tables(const char *dir, const task *tk, const dv_search *res, s
     const char *detail = s->first_failure >= 0 ? s->probes[s->first_failure].point.detail : "";
     lm += snprintf(md + lm, cap - lm, "| %s | %s | %g | %.3g | %s | %.120s |\n", tk[i].sc->name,
                    tk[i].engine->name, s->tolerance, s->limit, m, detail);
-    lh += snprintf(html + lh, 2 * cap - lh,
-                   "<tr><td>%s</td><td>%s</td><td>%g</td><td>%.3g</td><td>%s</td><td>%zu</td></tr>\n",
-                   tk[i].sc->name, tk[i].engine->name, s->tolerance, s->limit, m, s->nprobes);
+    lh +=
+        snprintf(html + lh, 2 * cap - lh,
+                 "<tr><td>%s</td><td>%s</td><td>%g</td><td>%.3g</td><td>%s</td><td>%zu</td></tr>\n",
+                 tk[i].sc->name, tk[i].engine->name, s->tolerance, s->limit, m, s->nprobes);
     cJSON *e = cJSON_CreateObject();
     cJSON_AddStringToObject(e, "scenario", tk[i].sc->name);
     cJSON_AddStringToObject(e, "engine", tk[i].engine->name);

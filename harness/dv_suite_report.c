@@ -366,7 +366,8 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
   char stability[PATH_CAP];
   snprintf(stability, sizeof stability, "%s/stability.html", out_dir);
   if (access(stability, F_OK) == 0) /* written by suite --stability */
-    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n", fp);
+    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n",
+          fp);
   for (size_t i = 0; i < n; i++) put_section(fp, out_dir, &es[i], i);
   fputs("</body>\n</html>\n", fp);
 }

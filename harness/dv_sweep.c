@@ -16,7 +16,8 @@
 int dv_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err) {
   const char *eq = strchr(spec, '=');
   memset(out, 0, sizeof *out);
-  if (!eq || eq == spec || !eq[1]) return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
+  if (!eq || eq == spec || !eq[1])
+    return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
   const int bare = memchr(spec, '.', (size_t)(eq - spec)) == NULL;
   snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "", bare ? engine : "",
            bare ? "." : "", (int)(eq - spec), spec);
@@ -95,7 +96,8 @@ static void point_values(const job *jb, size_t k, dv_sweep_point *pt, char (*ove
 }
 
 /* run one point: the scenario with sets and then over[0..nover) */
-static void run_overrides(const job *jb, const char *const *over, size_t nover, dv_sweep_point *pt) {
+static void run_overrides(const job *jb, const char *const *over, size_t nover,
+                          dv_sweep_point *pt) {
   static dv_scenario sc, ref;
   const char *sets[64 + DV_SWEEP_MAX_VARY];
   dv_error err = {{0}};
@@ -192,10 +194,12 @@ int dv_sweep_run(const char *path, const char *const *sets, size_t nsets, const 
   out->checkpoint_dir = checkpoint_dir;
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
-  if (nvary > DV_SWEEP_MAX_VARY) return dv_fail(err, DV_EINPUT, "at most %d --vary", DV_SWEEP_MAX_VARY);
+  if (nvary > DV_SWEEP_MAX_VARY)
+    return dv_fail(err, DV_EINPUT, "at most %d --vary", DV_SWEEP_MAX_VARY);
   size_t n = 1;
   for (size_t v = 0; v < nvary; v++) n *= vary[v].n;
-  if (n > DV_SWEEP_MAX_POINTS) return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
+  if (n > DV_SWEEP_MAX_POINTS)
+    return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
   static dv_scenario sc;
   if (dv_scenario_load(path, sets, nsets, &sc, err)) return DV_EINPUT;
   snprintf(out->scenario, sizeof out->scenario, "%s", sc.name);

@@ -36,21 +36,21 @@ typedef struct dv_sweep_point {
   double wall_per_sim_s;              /* s per simulated s (median where repeated) */
   int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */
   long steps;
-  int ok;                             /* ran through its compared window */
-  int pareto;                         /* no other ok point is both cheaper and more accurate */
+  int ok;     /* ran through its compared window */
+  int pareto; /* no other ok point is both cheaper and more accurate */
   char outcome[32];
   char detail[192];
 } dv_sweep_point;
 
 typedef struct dv_sweep {
-  char scenario[64];                  /* scenario name */
+  char scenario[64]; /* scenario name */
   char engine[32];
   size_t nvary;
   dv_vary vary[DV_SWEEP_MAX_VARY];
   size_t n;
-  dv_sweep_point *p;                  /* n points, the first key varying slowest */
-  int interrupted;                    /* under MPI: stopped early, points "missing" */
-  const char *checkpoint_dir;         /* under MPI: tables rewritten after every result */
+  dv_sweep_point *p;          /* n points, the first key varying slowest */
+  int interrupted;            /* under MPI: stopped early, points "missing" */
+  const char *checkpoint_dir; /* under MPI: tables rewritten after every result */
 } dv_sweep;
 
 /* parse "key=v1,v2" or "key=a..b:n" for engine into out */

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_meta.h"
 #include "dv_output.h"
 #include "dv_plot.h"
 #include "dv_sweep.h"
@@ -80,19 +81,23 @@ static cJSON *number(double v) {
   return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
 }
 
-static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_t nc, dv_error *err) {
+static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_t nc,
+                      dv_error *err) {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "scenario", s->scenario);
   cJSON_AddStringToObject(o, "engine", s->engine);
   cJSON *vary = cJSON_AddArrayToObject(o, "vary");
-  for (size_t v = 0; v < s->nvary; v++) cJSON_AddItemToArray(vary, cJSON_CreateString(s->vary[v].key));
+  for (size_t v = 0; v < s->nvary; v++)
+    cJSON_AddItemToArray(vary, cJSON_CreateString(s->vary[v].key));
   cJSON *pts = cJSON_AddArrayToObject(o, "points");
   for (size_t i = 0; i < s->n; i++) {
     const dv_sweep_point *p = &s->p[i];
     cJSON *q = cJSON_CreateObject();
     cJSON *set = cJSON_AddObjectToObject(q, "settings");
-    for (size_t v = 0; v < s->nvary; v++) cJSON_AddStringToObject(set, s->vary[v].key, p->values[v]);
-    for (int m = 0; m < DV_NMETRICS; m++) cJSON_AddItemToObject(q, dv_metric_names[m], number(p->metric[m]));
+    for (size_t v = 0; v < s->nvary; v++)
+      cJSON_AddStringToObject(set, s->vary[v].key, p->values[v]);
+    for (int m = 0; m < DV_NMETRICS; m++)
+      cJSON_AddItemToObject(q, dv_metric_names[m], number(p->metric[m]));
     cJSON_AddItemToObject(q, "wall_per_sim_s", number(p->wall_per_sim_s));
     cJSON_AddNumberToObject(q, "steps", (double)p->steps);
     cJSON_AddStringToObject(q, "outcome", p->outcome);
@@ -108,19 +113,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     cJSON_AddItemToObject(q, "order", number(dv_fit_order(cv[c].h, cv[c].y, cv[c].n)));
     cJSON_AddItemToArray(orders, q);
   }
-  char *text = cJSON_Print(o);
-  cJSON_Delete(o);
-  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  char path[1200];
-  dv_output out;
-  snprintf(path, sizeof path, "%s/sweep.json", dir);
-  int status = dv_output_open(&out, path, err);
-  if (!status) {
-    fprintf(out.fp, "%s\n", text);
-    status = dv_output_commit(&out, err);
-  }
-  free(text);
-  return status;
+  return dv_json_write(dir, "sweep.json", o, err);
 }
 
 int dv_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err) {
@@ -139,11 +132,12 @@ int dv_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *ref, dv_e
   dv_plot_curve pc[MAX_CURVES];
   char path[1200], title[160];
   for (size_t c = 0; c < nc; c++)
-    pc[c] = (dv_plot_curve){cv[c].label, cv[c].n, cv[c].x, cv[c].y, cv[c].marked,
+    pc[c] = (dv_plot_curve){cv[c].label,          cv[c].n,   cv[c].x, cv[c].y, cv[c].marked,
                             DV_CURVE_LINE_POINTS, (int)c + 1};
   for (size_t c = 0; c < nr; c++)
-    pc[nc + c] = (dv_plot_curve){rc[c].label, rc[c].n, rc[c].x, rc[c].y, rc[c].marked,
-                                 DV_CURVE_LINE_POINTS, (int)(nc + c) + 1};
+    pc[nc + c] =
+        (dv_plot_curve){rc[c].label,          rc[c].n,          rc[c].x, rc[c].y, rc[c].marked,
+                        DV_CURVE_LINE_POINTS, (int)(nc + c) + 1};
   snprintf(path, sizeof path, "%s/work_precision.svg", dir);
   snprintf(title, sizeof title, "%s: theta error against cost", s->scenario);
   if (!status)

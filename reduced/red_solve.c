@@ -13,11 +13,11 @@ struct red_integrator {
   const red_system *sys;
   const red_stepper_type *type;
   void *stepper;
-  double t_step;            /* end of the last internal step */
-  double t_end;             /* no step goes beyond */
+  double t_step;              /* end of the last internal step */
+  double t_end;               /* no step goes beyond */
   double t0, y0[RED_MAX_DIM]; /* the start: answered without asking the stepper */
-  double g[RED_MAX_EVENTS]; /* event functions there */
-  int event;                /* event found in the last step, or -1 */
+  double g[RED_MAX_EVENTS];   /* event functions there */
+  int event;                  /* event found in the last step, or -1 */
   double t_event;
   int done;        /* an event has been returned */
   int status;      /* error inside the root finder's callback */

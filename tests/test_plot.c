@@ -97,8 +97,8 @@ static void remove_dir(const char *dir) {
 /* ---- dv_plot_xy ---- */
 
 #define NXY 40
-static const char *const xy_files[] = {"wp.svg", "many.svg", "phase.svg", "flat.svg", "none.svg",
-                                       NULL};
+static const char *const xy_files[] = {"wp.svg",   "many.svg", "phase.svg",
+                                       "flat.svg", "none.svg", NULL};
 
 /* the file at path is a complete SVG document with a line drawn; star: whether marks are in it */
 static void check_svg(const char *path, int star) {
@@ -107,8 +107,7 @@ static void check_svg(const char *path, int star) {
   CHECK(text != NULL, "%s: missing", path);
   if (!text) return;
   CHECK(size > 0, "%s: empty", path);
-  CHECK(strncmp(text, "<?xml", 5) == 0 || strncmp(text, "<svg", 4) == 0, "%s: no SVG header",
-        path);
+  CHECK(strncmp(text, "<?xml", 5) == 0 || strncmp(text, "<svg", 4) == 0, "%s: no SVG header", path);
   CHECK(strstr(text, "<polyline") || strstr(text, "<path"), "%s: no line drawn", path);
   CHECK(strstr(text, "</svg>") != NULL, "%s: not closed", path);
   CHECK(!strstr(text, "&#x2605;") == !star, "%s: marks %s", path, star ? "missing" : "drawn");
@@ -153,10 +152,10 @@ static void test_xy(int keep) {
     pareto[i] = i % 7 == 0;
     pareto3[i] = i > 30;
   }
-  e1[3] = 0.0;    /* not drawable on the log axis */
-  e1[4] = -1e-9;  /* nor this */
-  h[10] = -1.0;   /* nor this x (e1, e2 and e3 lose it) */
-  e2[20] = NAN;   /* a hole */
+  e1[3] = 0.0;   /* not drawable on the log axis */
+  e1[4] = -1e-9; /* nor this */
+  h[10] = -1.0;  /* nor this x (e1, e2 and e3 lose it) */
+  e2[20] = NAN;  /* a hole */
   e3[5] = INFINITY;
   const double lone_x = 1e-2, lone_y = 1e-9, neg = -1.0;
   dv_plot_curve wp[] = {
@@ -182,8 +181,13 @@ static void test_xy(int keep) {
   for (int k = 0; k < DV_PLOT_MAX_CURVES; k++) {
     snprintf(labels[k], sizeof labels[k], "integrator %d", k + 1);
     for (int i = 0; i < NXY; i++) ys[k][i] = e2[i] * pow(2.0, k);
-    many[k] = (dv_plot_curve){labels[k], NXY, h, ys[k], k == 2 ? pareto : NULL,
-                              k % 3 == 0 ? DV_CURVE_LINE_POINTS : DV_CURVE_LINE, k + 1};
+    many[k] = (dv_plot_curve){labels[k],
+                              NXY,
+                              h,
+                              ys[k],
+                              k == 2 ? pareto : NULL,
+                              k % 3 == 0 ? DV_CURVE_LINE_POINTS : DV_CURVE_LINE,
+                              k + 1};
   }
   snprintf(path, sizeof path, "%s/many.svg", dir);
   CHECK(dv_plot_xy(path, "16 curves", "h (s)", "error", many, DV_PLOT_MAX_CURVES,
@@ -197,8 +201,8 @@ static void test_xy(int keep) {
       {"ode", NXY, p, th, NULL, DV_CURVE_LINE, 2},
   };
   snprintf(path, sizeof path, "%s/phase.svg", dir);
-  CHECK(dv_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL,
-                   &err) == DV_OK,
+  CHECK(dv_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL, &err) ==
+            DV_OK,
         "phase: %s", err.msg);
   check_svg(path, 0);
 

@@ -67,8 +67,8 @@ static char *untimed_report(const char *dir, const char *name) {
 static void check_good_suite(void) {
   char out[1024], path[2048];
   snprintf(out, sizeof out, "%s/good", work);
-  int code = run("%s suite %s/falling.ini %s/upright_stable.ini --out %s --jobs 2 >/dev/null", diskval,
-                 scenarios, scenarios, out);
+  int code = run("%s suite %s/falling.ini %s/upright_stable.ini --out %s --jobs 2 >/dev/null",
+                 diskval, scenarios, scenarios, out);
   CHECK(code == 0, "suite exit %d", code);
   snprintf(path, sizeof path, "%s/summary.json", out);
   char *text = slurp(path);
@@ -116,10 +116,11 @@ static void check_failing_suite(void) {
   snprintf(scn, sizeof scn, "%s/impossible.ini", work);
   FILE *fp = fopen(scn, "w");
   if (fp) {
-    fputs("[scenario]\nname = impossible\nduration = 0.2\noutput_dt = 0.01\n"
-          "[disk]\nradius = 0.1\nmass = 1\n[initial]\ntheta = 1.2\nphi_dot = 2\n"
-          "[tolerance]\ntheta_max_err = 1e-30\n",
-          fp);
+    fputs(
+        "[scenario]\nname = impossible\nduration = 0.2\noutput_dt = 0.01\n"
+        "[disk]\nradius = 0.1\nmass = 1\n[initial]\ntheta = 1.2\nphi_dot = 2\n"
+        "[tolerance]\ntheta_max_err = 1e-30\n",
+        fp);
     fclose(fp);
   }
   snprintf(out, sizeof out, "%s/failing", work);
@@ -138,8 +139,8 @@ static void check_broken_suite(void) {
   snprintf(scn, sizeof scn, "%s/broken.ini", work);
   run("sed 's/^mass = 1.0$/mass = -1/' %s/falling.ini > %s", scenarios, scn);
   snprintf(out, sizeof out, "%s/broken-out", work);
-  const int code = run("%s suite %s/upright_stable.ini %s --out %s 2>/dev/null", diskval, scenarios,
-                       scn, out);
+  const int code =
+      run("%s suite %s/upright_stable.ini %s --out %s 2>/dev/null", diskval, scenarios, scn, out);
   CHECK(code == 2, "broken scenario: exit %d, want 2", code);
   CHECK(!exists(out), "a broken scenario left an output directory %s", out);
 }
