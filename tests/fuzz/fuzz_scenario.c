@@ -11,6 +11,12 @@
 
 #include "dv_scenario.h"
 
+/* a property every input must keep; a violation aborts, which libFuzzer reports */
+#define CHECK_OR_ABORT(cond) \
+  do {                       \
+    if (!(cond)) abort();    \
+  } while (0)
+
 static char path[64];
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
@@ -33,7 +39,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   }
   dv_error err = {{0}};
   const int status = dv_scenario_load(path, sets, set[0] ? 1 : 0, &sc, &err);
-  if (status != DV_OK && status != DV_EINPUT) abort();
-  if (status == DV_EINPUT && !err.msg[0]) abort(); /* every refusal explains itself */
+  CHECK_OR_ABORT(status == DV_OK || status == DV_EINPUT);
+  CHECK_OR_ABORT(status == DV_OK || err.msg[0]); /* every refusal explains itself */
   return 0;
 }
