@@ -197,7 +197,7 @@ static const char *box_opts(int log, int y, double span, double *step) {
 static void draw_figure(const void *arg) {
   const xy_figure *f = arg;
   const int logx = f->flags & DV_PLOT_LOGX, logy = f->flags & DV_PLOT_LOGY;
-  double r[4] = {0, 1, 0, 1};
+  double r[4] = {logx ? -1 : 0, 1, logy ? -1 : 0, 1}; /* without data: 0.1 .. 10 on a log axis */
   const int any = data_range(f, r);
   if (any) {
     axis_range(&r[0], &r[1], logx);

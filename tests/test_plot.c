@@ -206,7 +206,7 @@ static void test_xy(int keep) {
         "phase: %s", err.msg);
   check_svg(path, 0);
 
-  dv_plot_curve flat[] = {{"U(#gh)", NXY, th, u, NULL, DV_CURVE_LINE, 1}};
+  dv_plot_curve flat[] = {{"U(\u03b8)", NXY, th, u, NULL, DV_CURVE_LINE, 1}};
   snprintf(path, sizeof path, "%s/flat.svg", dir);
   CHECK(dv_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) == DV_OK,
         "flat: %s", err.msg);
