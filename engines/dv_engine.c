@@ -32,3 +32,9 @@ void dv_sample_from_pose(const red_disk *disk, const dv_geometry *geom, const dv
   out->energy = dv_pose_energy(disk, pose);
   out->force[0] = out->force[1] = out->force[2] = NAN;
 }
+
+void dv_stats_add_sample(dv_engine_stats *st, const dv_sample *s) {
+  st->slip_max = fmax(st->slip_max, s->slip);
+  st->penetration_max = fmax(st->penetration_max, s->penetration);
+  if (s->contacts > st->contacts_max) st->contacts_max = s->contacts;
+}

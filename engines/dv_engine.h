@@ -81,4 +81,7 @@ void dv_sample_from_pose(const red_disk *disk, const struct dv_geometry *geom,
                          const struct dv_pose *pose, double t, const double *prev_y,
                          dv_sample *out);
 
+/* fold a sample into the per-run maxima: slip, penetration, contacts */
+void dv_stats_add_sample(dv_engine_stats *stats, const dv_sample *s);
+
 #endif

@@ -331,9 +331,7 @@ static int mujoco_advance(void *p, double t, dv_sample *out, dv_error *err) {
                       out);
   memcpy(e->prev, out->y, sizeof e->prev);
   out->contacts = e->d->ncon;
-  e->stats.slip_max = fmax(e->stats.slip_max, out->slip);
-  e->stats.penetration_max = fmax(e->stats.penetration_max, out->penetration);
-  if (out->contacts > e->stats.contacts_max) e->stats.contacts_max = out->contacts;
+  dv_stats_add_sample(&e->stats, out);
   return e->status;
 }
 

@@ -334,9 +334,7 @@ static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
                       g->out);
   g->out->contacts = e->ncontacts;
   memcpy(e->prev_y, g->out->y, sizeof e->prev_y);
-  e->st.slip_max = fmax(e->st.slip_max, g->out->slip);
-  e->st.penetration_max = fmax(e->st.penetration_max, g->out->penetration);
-  if (g->out->contacts > e->st.contacts_max) e->st.contacts_max = g->out->contacts;
+  dv_stats_add_sample(&e->st, g->out);
   return status;
 }
 

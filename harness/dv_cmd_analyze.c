@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "dv_commands.h"
+#include "dv_meta.h"
 #include "dv_scenario.h"
 #include "red_invariants.h"
 #include "red_potential.h"
@@ -48,10 +49,6 @@ static const char *branch(double k) {
                   : (k <= 0.25 ? "real parameters" : "complex-conjugate parameters");
 }
 
-static cJSON *number_or_null(double v) {
-  return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
-}
-
 static char *to_json(const dv_scenario *sc, const analysis *an) {
   const double *y = sc->initial;
   cJSON *o = cJSON_CreateObject();
@@ -61,7 +58,7 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   cJSON_AddNumberToObject(o, "f2", an->f2);
   cJSON_AddNumberToObject(o, "legendre_k", an->k);
   cJSON_AddStringToObject(o, "hypergeometric_branch", branch(an->k));
-  cJSON_AddItemToObject(o, "upright_critical_spin", number_or_null(an->crit));
+  cJSON_AddItemToObject(o, "upright_critical_spin", dv_json_number(an->crit));
   cJSON_AddItemToObject(o, "theta_range", cJSON_CreateDoubleArray(an->range, 2));
   cJSON_AddBoolToObject(o, "falls", an->falls);
   cJSON *init = cJSON_AddObjectToObject(o, "initial");
@@ -73,7 +70,7 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
     cJSON_AddNumberToObject(s, "phi_dot", y[RED_VPH]);
     cJSON_AddNumberToObject(s, "psi_dot", y[RED_VPS]);
     cJSON_AddItemToObject(s, "contact_radius",
-                          number_or_null(fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH])));
+                          dv_json_number(fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH])));
     cJSON_AddBoolToObject(s, "stable", an->stable);
     cJSON *ev = cJSON_AddArrayToObject(s, "eigenvalues");
     for (int i = 0; i < RED_NREDUCED; i++)

@@ -2,6 +2,7 @@
 #include "dv_meta.h"
 
 #include <cjson/cJSON.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +32,10 @@ void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) {
       cJSON_AddNumberToObject(o, sp->key, *(const double *)field);
   }
   return o;
+}
+
+void *dv_json_number(double v) {
+  return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
 }
 
 int dv_json_write(const char *dir, const char *name, void *json, dv_error *err) {

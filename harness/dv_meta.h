@@ -9,6 +9,9 @@
 /* a JSON object (cJSON *) describing engine's settings in sc */
 void *dv_meta_settings(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* a JSON number (a cJSON *), or null where v is not finite */
+void *dv_json_number(double v);
+
 /* write dir/name atomically (name NULL: dir is the path) as the JSON object
  * json (a cJSON *), which is deleted */
 int dv_json_write(const char *dir, const char *name, void *json, dv_error *err);

@@ -30,8 +30,7 @@ static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_er
 static cJSON *metrics_json(const double *v) {
   cJSON *o = cJSON_CreateObject();
   for (int m = 0; m < DV_NMETRICS; m++)
-    cJSON_AddItemToObject(o, dv_metric_names[m],
-                          isfinite(v[m]) ? cJSON_CreateNumber(v[m]) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, dv_metric_names[m], dv_json_number(v[m]));
   return o;
 }
 

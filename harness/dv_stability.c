@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_meta.h"
 #include "dv_output.h"
 #include "dv_pool.h"
 #include "dv_search.h"
@@ -81,18 +82,14 @@ static int write_tables(const char *dir, const task *tk, const dv_search *res, s
     cJSON_AddStringToObject(e, "scenario", tk[i].sc->name);
     cJSON_AddStringToObject(e, "engine", tk[i].engine->name);
     cJSON_AddNumberToObject(e, "tolerance", s->tolerance);
-    cJSON_AddItemToObject(e, "largest_stable_timestep",
-                          isfinite(s->limit) ? cJSON_CreateNumber(s->limit) : cJSON_CreateNull());
+    cJSON_AddItemToObject(e, "largest_stable_timestep", dv_json_number(s->limit));
     cJSON_AddStringToObject(e, "failure_mode", m);
     cJSON *probes = cJSON_AddArrayToObject(e, "probes");
     for (size_t k = 0; k < s->nprobes; k++) {
       const dv_probe *p = &s->probes[k];
       cJSON *q = cJSON_CreateObject();
       cJSON_AddNumberToObject(q, "timestep", p->step);
-      cJSON_AddItemToObject(q, "theta_max_err",
-                            isfinite(p->point.metric[DV_THETA_MAX_ERR])
-                                ? cJSON_CreateNumber(p->point.metric[DV_THETA_MAX_ERR])
-                                : cJSON_CreateNull());
+      cJSON_AddItemToObject(q, "theta_max_err", dv_json_number(p->point.metric[DV_THETA_MAX_ERR]));
       cJSON_AddStringToObject(q, "outcome", p->point.outcome);
       cJSON_AddStringToObject(q, "failure_mode", dv_probe_failure_mode(p));
       cJSON_AddStringToObject(q, "detail", p->point.detail);

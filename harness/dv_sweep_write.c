@@ -77,10 +77,6 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
   return dv_output_commit(&out, err);
 }
 
-static cJSON *number(double v) {
-  return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
-}
-
 static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_t nc,
                       dv_error *err) {
   cJSON *o = cJSON_CreateObject();
@@ -97,8 +93,8 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     for (size_t v = 0; v < s->nvary; v++)
       cJSON_AddStringToObject(set, s->vary[v].key, p->values[v]);
     for (int m = 0; m < DV_NMETRICS; m++)
-      cJSON_AddItemToObject(q, dv_metric_names[m], number(p->metric[m]));
-    cJSON_AddItemToObject(q, "wall_per_sim_s", number(p->wall_per_sim_s));
+      cJSON_AddItemToObject(q, dv_metric_names[m], dv_json_number(p->metric[m]));
+    cJSON_AddItemToObject(q, "wall_per_sim_s", dv_json_number(p->wall_per_sim_s));
     cJSON_AddNumberToObject(q, "steps", (double)p->steps);
     cJSON_AddStringToObject(q, "outcome", p->outcome);
     cJSON_AddStringToObject(q, "detail", p->detail);
@@ -110,7 +106,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
   for (size_t c = 0; c < nc; c++) {
     cJSON *q = cJSON_CreateObject();
     cJSON_AddStringToObject(q, "curve", cv[c].label);
-    cJSON_AddItemToObject(q, "order", number(dv_fit_order(cv[c].h, cv[c].y, cv[c].n)));
+    cJSON_AddItemToObject(q, "order", dv_json_number(dv_fit_order(cv[c].h, cv[c].y, cv[c].n)));
     cJSON_AddItemToArray(orders, q);
   }
   return dv_json_write(dir, "sweep.json", o, err);
