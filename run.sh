@@ -53,12 +53,12 @@ case "${1:-run}" in
     "$BUILD_DIR/bench/bench_reduced"
     "$BUILD_DIR/bench/bench_engines"
     "$BUILD_DIR/bench/bench_sweep" scenarios tests/data
-    bash bench/bench_mpi.sh "$BUILD_DIR/harness/diskval" .
+    bash bench/bench_mpi.sh "$BUILD_DIR/cli/diskval" .
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI
     status=0
-    "$BUILD_DIR/harness/diskval" suite scenarios --out out --junit out/junit.xml || status=$?
+    "$BUILD_DIR/cli/diskval" suite scenarios --out out --junit out/junit.xml || status=$?
     echo "report: $(pwd)/out/index.html (JUnit: out/junit.xml, summary: out/summary.json)"
     exit $status
     ;;

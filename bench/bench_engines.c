@@ -9,7 +9,7 @@
 #include <time.h>
 
 #include "dv_engine.h"
-#include "dv_trajectory.h"
+#include "run_trajectory.h"
 
 static double now(void) {
   struct timespec ts;
@@ -40,7 +40,7 @@ static double time_run(const dv_engine_type *e, const dv_scenario *sc, int mode,
     const double t0 = now();
     if (mode) {
       FILE *sink = mode == 2 ? fopen("/dev/null", "w") : NULL;
-      dv_trajectory_run(e, sc, sink, NULL, &st, &err);
+      dv_run_write_csv(e, sc, sink, NULL, &st, &err);
       if (sink) fclose(sink);
     } else {
       dv_sample s;

@@ -12,9 +12,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "dv_search.h"
-#include "dv_sweep.h"
-#include "dv_trajectory.h"
+#include "search_best.h"
+#include "search_sweep.h"
+#include "run_trajectory.h"
 
 static double now(void) {
   struct timespec ts;
@@ -36,15 +36,15 @@ int main(int argc, char **argv) {
   dv_error err = {{0}};
   static dv_vary v;
   static dv_sweep s;
-  dv_vary_parse("timestep=1e-3..2e-4:16", "mujoco", &v, &err);
+  dv_search_vary_parse("timestep=1e-3..2e-4:16", "mujoco", &v, &err);
 
   double t[2];
   for (int jobs = 1; jobs <= 2; jobs++) {
     const double t0 = now();
-    dv_sweep_run(shortc, NULL, 0, "mujoco", &v, 1, jobs, &s, &err);
+    dv_search_sweep_run(shortc, NULL, 0, "mujoco", &v, 1, jobs, &s, &err);
     t[jobs - 1] = now() - t0;
     if (jobs == 2) break;
-    dv_sweep_free(&s);
+    dv_search_sweep_free(&s);
   }
   printf(
       "sweep of %zu points (MuJoCo, 1 s each): 1 process %.3f s, 2 processes %.3f s: "
@@ -62,7 +62,7 @@ int main(int argc, char **argv) {
     dv_scenario_load(shortc, over, 1, &sc, &err);
     dv_engine_stats st;
     const double t0 = now();
-    dv_trajectory_collect(&dv_engine_mujoco, &sc, discard, NULL, &st, &err);
+    dv_run_collect(&dv_engine_mujoco, &sc, discard, NULL, &st, &err);
     engine += (now() - t0) * s.p[k].timed_runs; /* the compared run is the first timed one */
     runs += s.p[k].timed_runs;
   }
@@ -70,7 +70,7 @@ int main(int argc, char **argv) {
   const double one_second = engine / (double)runs;
   printf("overhead per point %.2f ms against %.1f ms for a 1 s run: %.1f%% (target <= 2%%)\n",
          1e3 * overhead, 1e3 * one_second, 100.0 * overhead / one_second);
-  dv_sweep_free(&s);
+  dv_search_sweep_free(&s);
 
   const char *paths[2] = {circle, upright}, *names[2] = {"steady circle", "upright"};
   static dv_search b;

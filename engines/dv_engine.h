@@ -13,7 +13,7 @@
 #define DV_ENGINE_H
 
 #include "dv_error.h"
-#include "dv_scenario.h"
+#include "scenario.h"
 #include "red_disk.h"
 
 /* one output sample */

@@ -18,8 +18,8 @@ sundials="-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_su
 sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
-  -I"$src/common" -I"$src/reduced" -I"$src/harness" \
-  "$src/tests/fuzz/fuzz_scenario.c" "$src/harness/dv_scenario.c" "$src/harness/dv_settings.c" \
+  -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
+  "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c \
   "$src/common/dv_error.c" "$src"/reduced/*.c \
   $(pkg-config --cflags --libs inih gsl) $sundials -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"

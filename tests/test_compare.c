@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "dv_compare.h"
+#include "run_compare.h"
 #include "dv_test.h"
 
 #define N 2001
@@ -23,7 +23,7 @@ static void circle(dv_traj *tr, double R, double cx, double cy, double lag, doub
     s.y[RED_TH] = theta;
     s.energy = 2.0 * (1.0 + 1e-3 * sin(3.0 * s.t));
     s.slip = 0.25 * s.t;
-    dv_traj_push(tr, &s);
+    dv_run_traj_push(tr, &s);
   }
 }
 
@@ -34,7 +34,7 @@ int main(void) {
   circle(&shifted, 0.5, 0.03, 0.04, 0.0, 1.0 + 1e-3, N); /* shift 0.05 m */
   circle(&late, 0.5, 0.0, 0.0, 0.3, 1.0, N);             /* 0.3 rad behind */
 
-  dv_compare(&shifted, &ref, INFINITY, &m);
+  dv_run_compare(&shifted, &ref, INFINITY, &m);
   CHECK_NEAR(m.value[DV_PATH_MAX_ERR], 0.05, 1e-12, "shifted: path max");
   CHECK_NEAR(m.value[DV_PATH_RMS_ERR], 0.05, 1e-12, "shifted: path rms");
   /* two circles of equal radius, centres 0.05 apart: Hausdorff 0.05 (sampled: within 1e-5) */
@@ -46,7 +46,7 @@ int main(void) {
   CHECK_NEAR(m.value[DV_SLIP_MAX], 0.25 * 20.0, 1e-12, "slip max");
   CHECK(m.n_window == N && m.t_window == 20.0, "window %zu %g", m.n_window, m.t_window);
 
-  dv_compare(&late, &ref, INFINITY, &m);
+  dv_run_compare(&late, &ref, INFINITY, &m);
   const double chord = 2.0 * 0.5 * sin(0.15); /* pointwise error of a 0.3 rad lag */
   CHECK_NEAR(m.value[DV_PATH_MAX_ERR], chord, 1e-12, "late: path max");
   /* the same curve: only the polyline's sagitta, R (1 - cos(0.005)) ~ 6e-6 */
@@ -55,19 +55,19 @@ int main(void) {
 
   /* the reference ends at t = 5 s: the window ends there too */
   circle(&short_ref, 0.5, 0.0, 0.0, 0.0, 1.0, 501);
-  dv_compare(&shifted, &short_ref, INFINITY, &m);
+  dv_run_compare(&shifted, &short_ref, INFINITY, &m);
   CHECK(m.n_window == 501 && m.t_window == 5.0, "short window %zu %g", m.n_window, m.t_window);
-  dv_compare(&shifted, &ref, 2.0, &m);
+  dv_run_compare(&shifted, &ref, 2.0, &m);
   CHECK(m.n_window == 201, "t_end window %zu", m.n_window);
 
   /* polyline Hausdorff, directly: a segment against a point beside its middle */
   const double seg[2][2] = {{0, 0}, {1, 0}}, pt[1][2] = {{0.5, 0.2}};
-  CHECK_NEAR(dv_hausdorff(seg, 2, pt, 1), hypot(0.5, 0.2), 1e-15, "segment vs point");
-  CHECK_NEAR(dv_hausdorff(pt, 1, seg, 2), hypot(0.5, 0.2), 1e-15, "symmetric");
+  CHECK_NEAR(dv_run_hausdorff(seg, 2, pt, 1), hypot(0.5, 0.2), 1e-15, "segment vs point");
+  CHECK_NEAR(dv_run_hausdorff(pt, 1, seg, 2), hypot(0.5, 0.2), 1e-15, "symmetric");
 
-  dv_traj_free(&ref);
-  dv_traj_free(&shifted);
-  dv_traj_free(&late);
-  dv_traj_free(&short_ref);
+  dv_run_traj_free(&ref);
+  dv_run_traj_free(&shifted);
+  dv_run_traj_free(&late);
+  dv_run_traj_free(&short_ref);
   return TEST_RESULT();
 }

@@ -15,7 +15,7 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_test.h"
-#include "dv_trajectory.h"
+#include "run_trajectory.h"
 
 #define MAXS 1001
 

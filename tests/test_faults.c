@@ -8,7 +8,7 @@
 
 #include "dv_engine.h"
 #include "dv_test.h"
-#include "dv_trajectory.h"
+#include "run_trajectory.h"
 
 /* the reference engine, with theta replaced by NaN from the k-th advance on */
 typedef struct fake {
@@ -57,13 +57,13 @@ int main(int argc, char **argv) {
   CHECK(dv_scenario_load(argv[1], NULL, 0, &sc, &err) == DV_OK, "%s", err.msg);
   dv_engine_stats st;
   FILE *sink = fopen("/dev/null", "w");
-  int status = dv_trajectory_run(&fake_engine, &sc, sink, NULL, &st, &err);
+  int status = dv_run_write_csv(&fake_engine, &sc, sink, NULL, &st, &err);
   printf("fake: status %d, outcome %s: %s\n", status, dv_outcome_name(st.outcome), st.detail);
   CHECK(status < 0 && st.outcome == DV_OUTCOME_DIVERGED, "fake engine: status %d outcome %s",
         status, dv_outcome_name(st.outcome));
   CHECK(st.detail[0] != '\0', "no message for the diverged run");
   /* the next run in the same process is unaffected */
-  status = dv_trajectory_run(&dv_engine_reduced, &sc, sink, NULL, &st, &err);
+  status = dv_run_write_csv(&dv_engine_reduced, &sc, sink, NULL, &st, &err);
   CHECK(status == DV_OK && st.outcome == DV_OUTCOME_COMPLETED, "reference after the fault: %d %s",
         status, err.msg);
   fclose(sink);

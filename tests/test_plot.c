@@ -1,7 +1,7 @@
 /* test_plot: dv_plot writes four complete SVG files from synthetic
  * trajectories (offset, NaN-holed, empty, constant), leaves no temporary file
  * behind, works twice in one process, and fails cleanly on a missing dir.
- * dv_plot_xy writes single plots (log-log with non-positive values, marks,
+ * dv_report_plot_xy writes single plots (log-log with non-positive values, marks,
  * empty curves, 16 curves, equal aspect, nothing at all) and rejects bad
  * paths and arguments without leaving files. */
 #include <dirent.h>
@@ -12,7 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "dv_plot.h"
+#include "report_plot.h"
 #include "dv_test.h"
 
 #define N 200
@@ -33,7 +33,7 @@ static dv_sample sample(double t, double offset) {
 static int make_traj(dv_traj *tr, size_t n, double offset) {
   for (size_t i = 0; i < n; i++) {
     const dv_sample s = sample(10.0 * (double)i / (double)(N - 1), offset);
-    if (dv_traj_push(tr, &s) != 0) return -1;
+    if (dv_run_traj_push(tr, &s) != 0) return -1;
   }
   return 0;
 }
@@ -54,7 +54,7 @@ static char *slurp(const char *path, long *size) {
 /* the four files are complete SVG documents with drawn lines, and nothing else is in dir */
 static void check_dir(const char *dir) {
   size_t nfiles = 0;
-  for (const char *const *name = dv_plot_files; *name; name++, nfiles++) {
+  for (const char *const *name = dv_report_plot_files; *name; name++, nfiles++) {
     char path[PATH_MAX];
     snprintf(path, sizeof path, "%s/%s", dir, *name);
     long size = 0;
@@ -68,7 +68,7 @@ static void check_dir(const char *dir) {
     CHECK(strstr(text, "</svg>") != NULL, "%s: not closed", path);
     free(text);
   }
-  CHECK(nfiles == 4, "dv_plot_files lists %zu files", nfiles);
+  CHECK(nfiles == 4, "dv_report_plot_files lists %zu files", nfiles);
   DIR *d = opendir(dir);
   CHECK(d != NULL, "%s: cannot list", dir);
   if (!d) return;
@@ -76,7 +76,7 @@ static void check_dir(const char *dir) {
   for (struct dirent *e; (e = readdir(d)) != NULL;) {
     if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
     int known = 0;
-    for (const char *const *name = dv_plot_files; *name; name++) known |= !strcmp(*name, e->d_name);
+    for (const char *const *name = dv_report_plot_files; *name; name++) known |= !strcmp(*name, e->d_name);
     CHECK(known, "%s: stray file %s", dir, e->d_name);
     seen++;
   }
@@ -86,7 +86,7 @@ static void check_dir(const char *dir) {
 
 /* remove the plots and dir */
 static void remove_dir(const char *dir) {
-  for (const char *const *name = dv_plot_files; *name; name++) {
+  for (const char *const *name = dv_report_plot_files; *name; name++) {
     char path[PATH_MAX];
     snprintf(path, sizeof path, "%s/%s", dir, *name);
     unlink(path);
@@ -94,7 +94,7 @@ static void remove_dir(const char *dir) {
   rmdir(dir);
 }
 
-/* ---- dv_plot_xy ---- */
+/* ---- dv_report_plot_xy ---- */
 
 #define NXY 40
 static const char *const xy_files[] = {"wp.svg",   "many.svg", "phase.svg",
@@ -169,7 +169,7 @@ static void test_xy(int keep) {
   };
   snprintf(path, sizeof path, "%s/wp.svg", dir);
   for (int round = 0; round < 2; round++) /* the second replaces the first */
-    CHECK(dv_plot_xy(path, "work-precision: #gh error", "wall s / simulated s",
+    CHECK(dv_report_plot_xy(path, "work-precision: #gh error", "wall s / simulated s",
                      "|#gh - #gh#dref#u| (rad)", wp, sizeof wp / sizeof wp[0],
                      DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
           "wp: %s", err.msg);
@@ -190,7 +190,7 @@ static void test_xy(int keep) {
                               k + 1};
   }
   snprintf(path, sizeof path, "%s/many.svg", dir);
-  CHECK(dv_plot_xy(path, "16 curves", "h (s)", "error", many, DV_PLOT_MAX_CURVES,
+  CHECK(dv_report_plot_xy(path, "16 curves", "h (s)", "error", many, DV_PLOT_MAX_CURVES,
                    DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
         "many: %s", err.msg);
   check_svg(path, 1);
@@ -201,23 +201,23 @@ static void test_xy(int keep) {
       {"ode", NXY, p, th, NULL, DV_CURVE_LINE, 2},
   };
   snprintf(path, sizeof path, "%s/phase.svg", dir);
-  CHECK(dv_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL, &err) ==
+  CHECK(dv_report_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL, &err) ==
             DV_OK,
         "phase: %s", err.msg);
   check_svg(path, 0);
 
   dv_plot_curve flat[] = {{"U(\u03b8)", NXY, th, u, NULL, DV_CURVE_LINE, 1}};
   snprintf(path, sizeof path, "%s/flat.svg", dir);
-  CHECK(dv_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) == DV_OK,
+  CHECK(dv_report_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) == DV_OK,
         "flat: %s", err.msg);
   check_svg(path, 0);
 
   /* nothing drawable (only non-positive values on log axes, no curves at all): "no data" */
   snprintf(path, sizeof path, "%s/none.svg", dir);
-  CHECK(dv_plot_xy(path, NULL, NULL, NULL, &wp[6], 1, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+  CHECK(dv_report_plot_xy(path, NULL, NULL, NULL, &wp[6], 1, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
         "none: %s", err.msg);
   check_svg(path, 0);
-  CHECK(dv_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK, "none: %s",
+  CHECK(dv_report_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK, "none: %s",
         err.msg);
   check_svg(path, 0);
   check_xy_dir(dir);
@@ -238,7 +238,7 @@ static void test_xy(int keep) {
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
     snprintf(path, sizeof path, "%s/%s", dir, bad[k].name);
     err.msg[0] = '\0';
-    const int status = dv_plot_xy(path, "bad", "x", "y", bad[k].c, bad[k].n, bad[k].flags, &err);
+    const int status = dv_report_plot_xy(path, "bad", "x", "y", bad[k].c, bad[k].n, bad[k].flags, &err);
     CHECK(status == bad[k].status, "bad %zu (%s): status %d, want %d", k, bad[k].name, status,
           bad[k].status);
     CHECK(err.msg[0] != '\0', "bad %zu: no message", k);
@@ -246,9 +246,9 @@ static void test_xy(int keep) {
   dv_plot_curve nocoords = {"x", 3, NULL, NULL, NULL, DV_CURVE_LINE, 1};
   dv_plot_curve badstyle = {"x", 1, &lone_x, &lone_y, NULL, 3, 1};
   snprintf(path, sizeof path, "%s/x.svg", dir);
-  CHECK(dv_plot_xy(path, "", "", "", &nocoords, 1, 0, &err) == DV_EINPUT, "no coordinates");
-  CHECK(dv_plot_xy(path, "", "", "", &badstyle, 1, 0, &err) == DV_EINPUT, "bad style");
-  CHECK(dv_plot_xy(NULL, "", "", "", wp, 1, 0, &err) == DV_EINPUT, "NULL path");
+  CHECK(dv_report_plot_xy(path, "", "", "", &nocoords, 1, 0, &err) == DV_EINPUT, "no coordinates");
+  CHECK(dv_report_plot_xy(path, "", "", "", &badstyle, 1, 0, &err) == DV_EINPUT, "bad style");
+  CHECK(dv_report_plot_xy(NULL, "", "", "", wp, 1, 0, &err) == DV_EINPUT, "NULL path");
   check_xy_dir(dir);
 
   if (keep) {
@@ -271,7 +271,7 @@ int main(int argc, char **argv) {
     dv_sample s = sample((double)i, 0.0);
     s.y[RED_TH] = 1.0;
     s.energy = 0.0;
-    CHECK(dv_traj_push(&flat, &s) == 0, "out of memory");
+    CHECK(dv_run_traj_push(&flat, &s) == 0, "out of memory");
   }
   holed.s[50].y[RED_TH] = NAN; /* a hole in every plot */
   holed.s[50].contact[0] = INFINITY;
@@ -289,7 +289,7 @@ int main(int argc, char **argv) {
   CHECK(mkdtemp(dir) != NULL, "mkdtemp failed");
   dv_error err = {{0}};
   for (int round = 0; round < 2; round++) { /* twice: PLplot's global state is reset */
-    const int status = dv_plot_scenario(dir, &in, &err);
+    const int status = dv_report_plot_scenario(dir, &in, &err);
     CHECK(status == DV_OK, "round %d: status %d: %s", round, status, err.msg);
     check_dir(dir);
   }
@@ -299,7 +299,7 @@ int main(int argc, char **argv) {
   none.series[0] = (dv_plot_series){"empty", &empty, &empty};
   char dir2[] = "/tmp/test_plot.XXXXXX";
   CHECK(mkdtemp(dir2) != NULL, "mkdtemp failed");
-  CHECK(dv_plot_scenario(dir2, &none, &err) == DV_OK, "empty input: %s", err.msg);
+  CHECK(dv_report_plot_scenario(dir2, &none, &err) == DV_OK, "empty input: %s", err.msg);
   check_dir(dir2);
   if (argc > 1)
     printf("empty plots kept in %s\n", dir2);
@@ -310,18 +310,18 @@ int main(int argc, char **argv) {
   char missing[PATH_MAX];
   snprintf(missing, sizeof missing, "%s/no/such/dir", dir);
   err.msg[0] = '\0';
-  CHECK(dv_plot_scenario(missing, &in, &err) == DV_ESYSTEM, "missing dir accepted");
+  CHECK(dv_report_plot_scenario(missing, &in, &err) == DV_ESYSTEM, "missing dir accepted");
   CHECK(err.msg[0] != '\0', "missing dir: no message");
 
   if (argc > 1)
     printf("plots kept in %s\n", dir);
   else
     remove_dir(dir);
-  dv_traj_free(&ref);
-  dv_traj_free(&close_by);
-  dv_traj_free(&holed);
-  dv_traj_free(&empty);
-  dv_traj_free(&flat);
+  dv_run_traj_free(&ref);
+  dv_run_traj_free(&close_by);
+  dv_run_traj_free(&holed);
+  dv_run_traj_free(&empty);
+  dv_run_traj_free(&flat);
   test_xy(argc > 1);
   return TEST_RESULT();
 }

@@ -15,7 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "dv_suite_report.h"
+#include "report_suite.h"
 #include "dv_test.h"
 
 /* the suite: fixture dirs, then two made here */
@@ -84,7 +84,7 @@ static int prepare(const char *fixtures, const char *dir) {
 
 static int ntemp; /* temporary files found by the walk below */
 
-/* nftw visitor: count dv_output's leftovers ("NAME.tmp.XXXXXX") */
+/* nftw visitor: count dv_io_file's leftovers ("NAME.tmp.XXXXXX") */
 static int find_temp(const char *path, const struct stat *st, int flag, struct FTW *ftw) {
   ntemp += strstr(path + ftw->base, ".tmp.") != NULL;
   return 0;
@@ -241,7 +241,7 @@ static void check_full(const char *fixtures, const char *out) {
   CHECK(engines == 4 && failing == 1 && plots == 6, "fixtures: %d engines, %d failing, %d plots",
         engines, failing, plots);
   snprintf(junit, sizeof junit, "%s/junit.xml", out);
-  CHECK(dv_suite_report_write(out, all_dirs, NALL, junit, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_report_suite_write(out, all_dirs, NALL, junit, &err) == DV_OK, "%s", err.msg);
 
   snprintf(path, sizeof path, "%s/summary.json", out);
   char *text = slurp(path);
@@ -315,7 +315,7 @@ static void check_repeatable(const char *out) {
     before[k] = slurp(path);
   }
   snprintf(junit, sizeof junit, "%s/junit.xml", out);
-  CHECK(dv_suite_report_write(out, all_dirs, NALL, junit, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_report_suite_write(out, all_dirs, NALL, junit, &err) == DV_OK, "%s", err.msg);
   for (int k = 0; k < 3; k++) {
     snprintf(path, sizeof path, "%s/%s", out, files[k]);
     char *after = slurp(path);
@@ -332,7 +332,7 @@ static void check_pass_and_errors(const char *fixtures, const char *out) {
   snprintf(src, sizeof src, "%s/rolling_pass", fixtures);
   snprintf(path, sizeof path, "%s/rolling_pass", out);
   CHECK(copy_dir(src, path) == 0, "cannot copy %s", src);
-  CHECK(dv_suite_report_write(out, all_dirs, 1, NULL, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_report_suite_write(out, all_dirs, 1, NULL, &err) == DV_OK, "%s", err.msg);
   snprintf(path, sizeof path, "%s/summary.json", out);
   char *text = slurp(path);
   cJSON *sum = text ? cJSON_Parse(text) : NULL;
@@ -346,13 +346,13 @@ static void check_pass_and_errors(const char *fixtures, const char *out) {
   /* a JUnit path that cannot be written: an error, and no file written at all */
   snprintf(path, sizeof path, "%s/no/such/dir/junit.xml", out);
   err.msg[0] = '\0';
-  CHECK(dv_suite_report_write(out, all_dirs, 1, path, &err) < 0 && err.msg[0], "bad junit path");
+  CHECK(dv_report_suite_write(out, all_dirs, 1, path, &err) < 0 && err.msg[0], "bad junit path");
   snprintf(path, sizeof path, "%s/summary.json", out);
   CHECK(access(path, F_OK) != 0, "summary.json written although the JUnit file failed");
   snprintf(path, sizeof path, "%s/no/such/dir", out);
   err.msg[0] = '\0';
-  CHECK(dv_suite_report_write(path, all_dirs, 1, NULL, &err) < 0 && err.msg[0], "bad out dir");
-  CHECK(dv_suite_report_write(NULL, all_dirs, 1, NULL, &err) == DV_EINPUT, "NULL out dir");
+  CHECK(dv_report_suite_write(path, all_dirs, 1, NULL, &err) < 0 && err.msg[0], "bad out dir");
+  CHECK(dv_report_suite_write(NULL, all_dirs, 1, NULL, &err) == DV_EINPUT, "NULL out dir");
 }
 
 int main(int argc, char **argv) {

@@ -11,8 +11,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "dv_search.h"
-#include "dv_sweep.h"
+#include "search_best.h"
+#include "search_sweep.h"
 #include "dv_test.h"
 
 static const char *path;
@@ -23,8 +23,8 @@ static double sweep_order(const char *engine, const char *spec, const char *cons
   static dv_vary v;
   static dv_sweep s;
   dv_error err = {{0}};
-  CHECK(dv_vary_parse(spec, engine, &v, &err) == DV_OK, "%s", err.msg);
-  CHECK(dv_sweep_run(path, sets, nsets, engine, &v, 1, 2, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_vary_parse(spec, engine, &v, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_sweep_run(path, sets, nsets, engine, &v, 1, 2, &s, &err) == DV_OK, "%s", err.msg);
   double h[DV_SWEEP_MAX_VALUES], e[DV_SWEEP_MAX_VALUES];
   for (size_t k = 0; k < s.n; k++) {
     h[k] = atof(s.p[k].values[0]);
@@ -33,8 +33,8 @@ static double sweep_order(const char *engine, const char *spec, const char *cons
     CHECK(s.p[k].ok, "%s: point %zu: %s %s", engine, k, s.p[k].outcome, s.p[k].detail);
     if (k) CHECK(e[k] < e[k - 1], "%s: error does not fall from %g to %g", engine, h[k - 1], h[k]);
   }
-  const double p = dv_fit_order(h, e, s.n);
-  dv_sweep_free(&s);
+  const double p = dv_search_fit_order(h, e, s.n);
+  dv_search_sweep_free(&s);
   return p;
 }
 
@@ -63,7 +63,7 @@ static void check_pareto(void) {
     p[i].wall_per_sim_s = c[i];
     p[i].ok = i != 4;
   }
-  dv_sweep_pareto(p, 5);
+  dv_search_pareto(p, 5);
   for (int i = 0; i < 5; i++) CHECK(p[i].pareto == want[i], "point %d: pareto %d", i, p[i].pareto);
 }
 
@@ -80,7 +80,7 @@ static void check_best(void) {
   snprintf(o2, sizeof o2, "%s=%.9g", s.step_key, b->step);
   const char *over[2] = {o1, o2};
   dv_sweep_point again;
-  dv_sweep_probe(path, NULL, 0, "ode", over, 2, &again, &err);
+  dv_search_sweep_probe(path, NULL, 0, "ode", over, 2, &again, &err);
   printf("best: %s %s: %.3e rad, again %.3e rad\n", o1, o2, b->point.metric[DV_THETA_MAX_ERR],
          again.metric[DV_THETA_MAX_ERR]);
   CHECK(again.ok && again.metric[DV_THETA_MAX_ERR] <= tol, "best settings re-run: %.3g > %g",
@@ -96,7 +96,7 @@ static void check_stability(void) {
   const char *over[1] = {"engines.ode.timestep=1e-5"};
   dv_sweep_point p;
   dv_error err = {{0}};
-  dv_sweep_probe(path, NULL, 0, "ode", over, 1, &p, &err);
+  dv_search_sweep_probe(path, NULL, 0, "ode", over, 1, &p, &err);
   const double tol = 2.0 * p.metric[DV_THETA_MAX_ERR];
   static dv_search s;
   CHECK(dv_search_stability(path, NULL, 0, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "dv_scenario.h"
+#include "scenario.h"
 
 /* a property every input must keep; a violation aborts, which libFuzzer reports */
 #define CHECK_OR_ABORT(cond) \

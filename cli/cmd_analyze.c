@@ -1,0 +1,147 @@
+/* dv_cli_analyze: diskval analyze SCENARIO [--json] [--set k=v]: invariants,
+ * steady motion and its stability, and the turning points of theta. */
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "run_meta.h"
+#include "scenario.h"
+#include "red_invariants.h"
+#include "red_potential.h"
+#include "red_steady.h"
+
+static const char HELP[] =
+    "usage: diskval analyze SCENARIO [--json] [--set section.key=value]...\n"
+    "\n"
+    "Analyse the initial state of SCENARIO with the reduced equations:\n"
+    "energy E and the integrals f1, f2; the upright critical spin; the range of\n"
+    "theta (turning points of the effective potential); and, when the initial\n"
+    "state is a steady motion, its rates and linear stability (eigenvalues).\n"
+    "  --json   one JSON object on stdout instead of text\n";
+
+typedef struct analysis {
+  double E, f1, f2, k, crit, range[2];
+  int falls, steady, stable;
+  double eig[RED_NREDUCED][2];
+} analysis;
+
+static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
+  const red_disk *d = &sc->disk;
+  const double *y = sc->initial;
+  memset(an, 0, sizeof *an);
+  an->E = red_energy(d, y);
+  an->k = red_legendre_k(d);
+  an->crit = red_upright_critical_spin(d);
+  if (red_invariants(d, y, &an->f1, &an->f2))
+    return dv_fail(err, DV_ENUMERIC, "f1, f2 could not be evaluated at theta = %g", y[RED_TH]);
+  int status = red_theta_range(d, y, sc->reduced.theta_limit, an->range, &an->falls, err);
+  if (status) return status;
+  an->steady = red_is_steady(d, y, 1e-9);
+  if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
+  return DV_OK;
+}
+
+static const char *branch(double k) {
+  return k == 0.0 ? "closed form (C = 0)"
+                  : (k <= 0.25 ? "real parameters" : "complex-conjugate parameters");
+}
+
+static char *to_json(const dv_scenario *sc, const analysis *an) {
+  const double *y = sc->initial;
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddNumberToObject(o, "energy", an->E);
+  cJSON_AddNumberToObject(o, "f1", an->f1);
+  cJSON_AddNumberToObject(o, "f2", an->f2);
+  cJSON_AddNumberToObject(o, "legendre_k", an->k);
+  cJSON_AddStringToObject(o, "hypergeometric_branch", branch(an->k));
+  cJSON_AddItemToObject(o, "upright_critical_spin", dv_io_json_number(an->crit));
+  cJSON_AddItemToObject(o, "theta_range", cJSON_CreateDoubleArray(an->range, 2));
+  cJSON_AddBoolToObject(o, "falls", an->falls);
+  cJSON *init = cJSON_AddObjectToObject(o, "initial");
+  const char *names[RED_NSTATE] = {"theta", "theta_dot", "phi_dot", "psi_dot",
+                                   "phi",   "psi",       "x",       "y"};
+  for (int i = 0; i < RED_NSTATE; i++) cJSON_AddNumberToObject(init, names[i], y[i]);
+  if (an->steady) {
+    cJSON *s = cJSON_AddObjectToObject(o, "steady");
+    cJSON_AddNumberToObject(s, "phi_dot", y[RED_VPH]);
+    cJSON_AddNumberToObject(s, "psi_dot", y[RED_VPS]);
+    cJSON_AddItemToObject(s, "contact_radius",
+                          dv_io_json_number(fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH])));
+    cJSON_AddBoolToObject(s, "stable", an->stable);
+    cJSON *ev = cJSON_AddArrayToObject(s, "eigenvalues");
+    for (int i = 0; i < RED_NREDUCED; i++)
+      cJSON_AddItemToArray(ev, cJSON_CreateDoubleArray(an->eig[i], 2));
+  } else {
+    cJSON_AddNullToObject(o, "steady");
+  }
+  char *text = cJSON_Print(o);
+  cJSON_Delete(o);
+  return text;
+}
+
+static void print_text(const dv_scenario *sc, const analysis *an) {
+  const double *y = sc->initial;
+  printf("scenario          %s\n", sc->name);
+  printf("energy            %.15g J\n", an->E);
+  printf("f1, f2            %.15g, %.15g kg m^2/s  (k = %.6g, %s)\n", an->f1, an->f2, an->k,
+         branch(an->k));
+  printf("upright critical  %.15g rad/s\n", an->crit);
+  printf("theta range       [%.12g, %.12g] rad%s\n", an->range[0], an->range[1],
+         an->falls ? "  (reaches the theta limit: the disk lies down)" : "");
+  if (!an->steady) {
+    printf("steady            no (theta_dot = %g rad/s)\n", y[RED_VTH]);
+    return;
+  }
+  printf("steady            phi_dot %.15g, psi_dot %.15g rad/s, contact radius %.12g m\n",
+         y[RED_VPH], y[RED_VPS], fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH]));
+  printf("stability         %s; eigenvalues", an->stable ? "linearly stable" : "unstable");
+  for (int i = 0; i < RED_NREDUCED; i++) printf(" (%.6g%+.6gi)", an->eig[i][0], an->eig[i][1]);
+  printf("\n");
+}
+
+int dv_cli_analyze(int argc, char **argv) {
+  dv_common_args a = {0};
+  int json = 0;
+  for (int i = 1; i < argc; i++) {
+    const int set = dv_cli_take_set(&a, argc, argv, &i);
+    if (set < 0) return dv_cli_usage_error("analyze", "--set needs section.key=value");
+    if (set) continue;
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      fputs(HELP, stdout);
+      return DV_EXIT_OK;
+    } else if (!strcmp(argv[i], "--json")) {
+      json = 1;
+    } else if (argv[i][0] == '-' && argv[i][1]) {
+      return dv_cli_usage_error("analyze", "unknown option '%s'", argv[i]);
+    } else if (!a.scenario) {
+      a.scenario = argv[i];
+    } else {
+      return dv_cli_usage_error("analyze", "more than one scenario given");
+    }
+  }
+  if (!a.scenario) return dv_cli_usage_error("analyze", "no scenario given");
+  static dv_scenario sc;
+  dv_error err = {{0}};
+  analysis an;
+  if (dv_scenario_load(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
+    fprintf(stderr, "%s\n", err.msg);
+    return DV_EXIT_ERROR;
+  }
+  if (analyse(&sc, &an, &err)) {
+    fprintf(stderr, "diskval analyze: %s: %s\n", sc.name, err.msg);
+    return DV_EXIT_ERROR;
+  }
+  if (!json) {
+    print_text(&sc, &an);
+    return DV_EXIT_OK;
+  }
+  char *text = to_json(&sc, &an);
+  if (!text) return DV_EXIT_ERROR;
+  puts(text);
+  free(text);
+  return DV_EXIT_OK;
+}

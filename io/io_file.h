@@ -1,0 +1,25 @@
+/* dv_io_file: files that appear whole or not at all.
+ *
+ * Output goes to a temporary file beside the target and is renamed over it
+ * on commit; abort (or a failed write) removes it. "-" means stdout; an
+ * existing device or pipe (/dev/null) is written in place, never replaced.
+ */
+#ifndef DV_OUTPUT_H
+#define DV_OUTPUT_H
+
+#include <stdio.h>
+
+#include "dv_error.h"
+
+typedef struct dv_io_file {
+  FILE *fp;
+  char path[1024];     /* final name, "" for stdout */
+  char tmp_path[1040]; /* temporary name while writing */
+  int direct;          /* a device or pipe: written in place */
+} dv_io_file;
+
+int dv_io_open(dv_io_file *out, const char *path, dv_error *err);
+int dv_io_commit(dv_io_file *out, dv_error *err); /* flush, close, rename */
+void dv_io_abort(dv_io_file *out);                /* NULL-safe, idempotent */
+
+#endif

@@ -1,0 +1,102 @@
+/* dv_plot: the plots of one scenario's comparison, drawn with PLplot (SVG).
+ *
+ * Files written into dir:
+ *   theta.svg        theta(t) of every engine over the reference's
+ *   theta_error.svg  |theta - theta_ref|(t) per engine, log axis (against
+ *                    each engine's own reference: matched, or thin)
+ *   path.svg         contact paths, equal aspect, start and end marked
+ *   energy.svg       (E(t) - E(0)) / |E(0)| per engine and reference
+ *
+ * and, separately, dv_report_plot_xy: one generic x-y plot (see below).
+ */
+#ifndef DV_PLOT_H
+#define DV_PLOT_H
+
+#include <stddef.h>
+
+#include "run_compare.h"
+#include "dv_error.h"
+
+#define DV_PLOT_MAX_SERIES 8
+
+typedef struct dv_plot_series {
+  const char *label;        /* legend text, e.g. "mujoco" */
+  const dv_traj *traj;      /* the engine's samples */
+  const dv_traj *reference; /* what its error is measured against (same times) */
+} dv_plot_series;
+
+typedef struct dv_plot_input {
+  const char *title;   /* scenario name */
+  const dv_traj *thin; /* the thin-disk reference, drawn in every plot */
+  size_t nseries;
+  dv_plot_series series[DV_PLOT_MAX_SERIES];
+} dv_plot_input;
+
+/* the names of the files dv_report_plot_scenario writes, NULL-terminated */
+extern const char *const dv_report_plot_files[];
+
+/* write the plots into the existing directory dir */
+int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *err);
+
+/* ---- generic x-y plot ------------------------------------------------------
+ *
+ * dv_report_plot_xy draws up to DV_PLOT_MAX_CURVES curves into one SVG file, with a
+ * legend right of the plot listing every curve in the order given (a curve
+ * with nothing drawable is listed as "label (no data)"). Uses: work-precision
+ * diagrams (log-log, Pareto points marked), error against time step, U(theta),
+ * phase planes (a black reference level set under coloured trajectories).
+ *
+ * flags:
+ *   DV_PLOT_LOGX, DV_PLOT_LOGY  log10 axis, labelled with decades (10^k);
+ *                               values <= 0 are skipped on it
+ *   DV_PLOT_EQUAL               one unit (one decade on a log axis) is as long
+ *                               on both axes
+ * Ranges cover every drawn point with a small margin (log axes: whole
+ * decades); a degenerate range is padded. Without any drawable point the plot
+ * gets axes and "no data".
+ *
+ * Curves: black ones (colour 0) are drawn first, wider, underneath the
+ * coloured ones. A point with a non-finite coordinate (or one that is <= 0 on
+ * a log axis, or of magnitude >= 1e150) is skipped: it breaks a line. A lone
+ * point of a line gets a dot.
+ *   DV_CURVE_LINE         a line through the points
+ *   DV_CURVE_POINTS       a dot per point, not connected
+ *   DV_CURVE_LINE_POINTS  a line through the points and a dot on each
+ * marked: points with marked[i] != 0 get a large star (the curve's colour,
+ * outlined black) drawn above all curves; when any drawn point is marked,
+ * the legend ends with a black star entry "Pareto-optimal".
+ *
+ * Text: title, xlabel and ylabel are PLplot text: UTF-8, with '#' starting a
+ * PLplot escape (#gh: theta, #d...#u: subscript, #u...#d: superscript, ##: '#').
+ * Curve labels are shown literally (their '#' are escaped). NULL: no text.
+ *
+ * Errors: DV_EINPUT for bad arguments (NULL path or curves with n > 0, more
+ * than DV_PLOT_MAX_CURVES curves, x or y NULL with n > 0, unknown flag or
+ * style, negative colour); DV_ESYSTEM when the file cannot be written (the
+ * temporary file is removed, path is left as it was). Nothing is printed.
+ * PLplot's state is global: not thread-safe.
+ */
+#define DV_PLOT_MAX_CURVES 16
+
+enum { DV_PLOT_LOGX = 1, DV_PLOT_LOGY = 2, DV_PLOT_EQUAL = 4 };
+enum { DV_CURVE_LINE = 0, DV_CURVE_POINTS = 1, DV_CURVE_LINE_POINTS = 2 };
+
+typedef struct dv_plot_curve {
+  const char *label; /* legend text */
+  size_t n;
+  const double *x, *y; /* n values each; non-finite (and, on a log axis, <= 0) skipped */
+  const int *marked;   /* optional, n flags: marked points drawn with a larger distinct
+                          symbol (e.g. Pareto points) */
+  int style;           /* DV_CURVE_* */
+  int colour;          /* 0 black (references), >= 1 the palette of the other plots:
+                          colour k is series k - 1's colour of dv_report_plot_scenario
+                          (1 blue, 2 orange, 3 green, 4 red, 5 purple, 6 brown,
+                          7 pink, 8 grey, 9 olive, 10 cyan, 11 navy, 12 dark green,
+                          13 ochre, 14 maroon, 15 magenta, 16 teal; 17 is 1 again) */
+} dv_plot_curve;
+
+/* one SVG at path (written under a temporary name in path's directory and renamed) */
+int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, const char *ylabel,
+               const dv_plot_curve *curves, size_t n, int flags, dv_error *err);
+
+#endif

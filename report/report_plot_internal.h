@@ -1,0 +1,54 @@
+/* dv_plot_internal: what dv_plot.c shares with dv_report_plot_xy.c (not public API).
+ *
+ * The palette (cmap0) is set on every stream dvp_write_svg opens: background,
+ * foreground (axes, text, black references), grid, then DVP_NPALETTE series
+ * colours. Series k of dv_report_plot_scenario and curve colour k + 1 of dv_report_plot_xy
+ * are the same colour.
+ */
+#ifndef DV_PLOT_INTERNAL_H
+#define DV_PLOT_INTERNAL_H
+
+#include <stddef.h>
+
+#include <plplot.h>
+
+#include "dv_error.h"
+
+enum {
+  DVP_COL_BG = 0,
+  DVP_COL_FG,
+  DVP_COL_GRID,
+  DVP_COL_SERIES,
+  DVP_NPALETTE = 16,
+  DVP_NCOLOURS = DVP_COL_SERIES + DVP_NPALETTE
+};
+
+#define DVP_PAGE_W 800       /* px */
+#define DVP_PAGE_H 500       /* px */
+#define DVP_PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
+
+/* copy text into out with PLplot's escape character doubled, then suffix */
+void dvp_escape(char *out, size_t size, const char *text, const char *suffix);
+
+/* whether v can be drawn */
+int dvp_plottable(double v);
+
+/* widen [lo, hi] by margin of its span, or pad it around its middle when it collapses */
+void dvp_pad_range(double *lo, double *hi, double margin, double min_pad);
+
+/* widen the narrower range of r (x0, x1, y0, y1) so a unit is as long on both
+ * axes of the current viewport */
+void dvp_equal_aspect(double r[4]);
+
+/* plslabelfunc callback: the label 10^value of a log10 axis */
+void dvp_decade_label(PLINT axis, PLFLT value, char *label, PLINT length, PLPointer data);
+
+/* whether PLplot can load its svg driver (plinit would exit the process otherwise) */
+int dvp_have_svg(void);
+
+/* draw(arg) on a fresh PLplot stream writing a temporary file next to path,
+ * check that it is a complete SVG document, rename it to path */
+typedef void (*dvp_draw_fn)(const void *arg);
+int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error *err);
+
+#endif

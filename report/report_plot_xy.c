@@ -1,0 +1,280 @@
+/* dv_report_plot_xy: one generic x-y plot (see dv_plot.h), drawn with PLplot into
+ * an SVG file through dvp_write_svg (dv_plot.c): own stream, temporary file,
+ * validation, rename, no output.
+ *
+ * Coordinates are transformed once (log10 on a log axis); a point that cannot
+ * be drawn becomes NaN there, which breaks lines and is skipped everywhere.
+ * Dots and stars are UTF-8 glyphs drawn with plstring, as the legend draws
+ * its symbols.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "report_plot.h"
+#include "report_plot_internal.h"
+
+#define DOT "\xe2\x97\x8f"          /* U+25CF black circle: a point */
+#define STAR "\xe2\x98\x85"         /* U+2605 black star: a marked point */
+#define STAR_OUTLINE "\xe2\x98\x86" /* U+2606 white star: its outline */
+#define MARK_TEXT "Pareto-optimal"  /* the legend entry of marked points */
+#define DOT_SCALE 0.5               /* of the default character height */
+#define STAR_SCALE 1.4
+#define CHUNK 65536 /* points per plline or plstring call */
+
+typedef struct xy_curve {
+  double *x, *y;     /* plotted coordinates, NaN where a point is skipped */
+  const int *marked; /* the caller's, or NULL */
+  size_t n;
+  int style, any;  /* any: a point to draw */
+  PLINT colour;    /* cmap0 index */
+  char label[128]; /* PLplot-escaped */
+} xy_curve;
+
+typedef struct xy_figure {
+  const char *title, *xlabel, *ylabel;
+  int flags, marks; /* marks: a drawn point is marked */
+  size_t n;
+  xy_curve c[DV_PLOT_MAX_CURVES];
+} xy_figure;
+
+/* v on an axis (log10 if log), NaN when it cannot be drawn there */
+static double axis_value(double v, int log) {
+  if (!dvp_plottable(v) || (log && !(v > 0))) return NAN;
+  return log ? log10(v) : v;
+}
+
+/* whether point i of c is drawn */
+static int point_ok(const xy_curve *c, size_t i) {
+  return !isnan(c->x[i]) && !isnan(c->y[i]);
+}
+
+/* whether point i of c is drawn and marked */
+static int point_marked(const xy_curve *c, size_t i) {
+  return c->marked && c->marked[i] && point_ok(c, i);
+}
+
+/* transform curve in into c; -1 out of memory */
+static int fill_curve(xy_curve *c, const dv_plot_curve *in, int flags) {
+  c->n = in->n;
+  c->style = in->style;
+  c->marked = in->marked;
+  c->colour = in->colour == 0 ? DVP_COL_FG : DVP_COL_SERIES + (in->colour - 1) % DVP_NPALETTE;
+  if (c->n > 0) {
+    c->x = malloc(c->n * sizeof *c->x);
+    c->y = malloc(c->n * sizeof *c->y);
+    if (!c->x || !c->y) return -1;
+  }
+  for (size_t i = 0; i < c->n; i++) {
+    c->x[i] = axis_value(in->x[i], flags & DV_PLOT_LOGX);
+    c->y[i] = axis_value(in->y[i], flags & DV_PLOT_LOGY);
+    c->any |= point_ok(c, i);
+  }
+  dvp_escape(c->label, sizeof c->label, in->label, c->any ? "" : " (no data)");
+  return 0;
+}
+
+/* bounds of every drawn point; 0 when there is none */
+static int data_range(const xy_figure *f, double r[4]) {
+  int any = 0;
+  for (size_t k = 0; k < f->n; k++) {
+    const xy_curve *c = &f->c[k];
+    for (size_t i = 0; i < c->n; i++) {
+      if (!point_ok(c, i)) continue;
+      if (!any || c->x[i] < r[0]) r[0] = c->x[i];
+      if (!any || c->x[i] > r[1]) r[1] = c->x[i];
+      if (!any || c->y[i] < r[2]) r[2] = c->y[i];
+      if (!any || c->y[i] > r[3]) r[3] = c->y[i];
+      any = 1;
+    }
+  }
+  return any;
+}
+
+/* pad [lo, hi]; on a log axis (decades) widen to whole decades unless two are inside */
+static void axis_range(double *lo, double *hi, int log) {
+  dvp_pad_range(lo, hi, 0.05, log ? 1.0 : 0.0);
+  if (log && floor(*hi) - ceil(*lo) < 1.0) {
+    *lo = floor(*lo);
+    *hi = ceil(*hi);
+  }
+}
+
+/* glyph at the points [a, b) of c, which are all drawn */
+static void glyphs(const xy_curve *c, size_t a, size_t b, const char *glyph) {
+  for (; a < b; a += CHUNK) {
+    const size_t m = b - a < CHUNK ? b - a : CHUNK;
+    plstring((PLINT)m, &c->x[a], &c->y[a], glyph);
+  }
+}
+
+/* the runs of drawn points of c: lines (a lone point: a dot) and/or dots */
+static void draw_curve(const xy_curve *c) {
+  const int line = c->style != DV_CURVE_POINTS, dots = c->style != DV_CURVE_LINE;
+  size_t i = 0;
+  while (i < c->n) {
+    while (i < c->n && !point_ok(c, i)) i++;
+    size_t j = i;
+    while (j < c->n && point_ok(c, j)) j++;
+    if (line)
+      for (size_t a = i; j - a > 1; a += CHUNK - 1) {
+        const size_t m = j - a < CHUNK ? j - a : CHUNK;
+        plline((PLINT)m, &c->x[a], &c->y[a]);
+        if (a + m == j) break;
+      }
+    if (dots || j - i == 1) {
+      plschr(0, DOT_SCALE);
+      glyphs(c, i, j, DOT);
+      plschr(0, 1.0);
+    }
+    i = j;
+  }
+}
+
+/* the marked points of c: a star in its colour, outlined black */
+static void draw_marks(const xy_curve *c) {
+  plschr(0, STAR_SCALE);
+  for (size_t i = 0; i < c->n; i++) {
+    if (!point_marked(c, i)) continue;
+    plcol0(c->colour);
+    plstring(1, &c->x[i], &c->y[i], STAR);
+    plcol0(DVP_COL_FG);
+    plstring(1, &c->x[i], &c->y[i], STAR_OUTLINE);
+  }
+  plschr(0, 1.0);
+}
+
+/* a legend right of the viewport: every curve, then the marks if any */
+static void draw_legend(const xy_figure *f) {
+  enum { M = DV_PLOT_MAX_CURVES + 1 };
+  PLINT opt[M], tcol[M], lcol[M], lstyle[M], scol[M], snum[M];
+  PLFLT lwidth[M], sscale[M];
+  const char *text[M], *sym[M];
+  PLINT n = 0;
+  for (size_t k = 0; k < f->n; k++, n++) {
+    const xy_curve *c = &f->c[k];
+    opt[n] = c->style == DV_CURVE_LINE     ? PL_LEGEND_LINE
+             : c->style == DV_CURVE_POINTS ? PL_LEGEND_SYMBOL
+                                           : PL_LEGEND_LINE | PL_LEGEND_SYMBOL;
+    tcol[n] = DVP_COL_FG;
+    lcol[n] = scol[n] = c->colour;
+    lstyle[n] = 1;
+    lwidth[n] = c->colour == DVP_COL_FG ? 3.0 : 2.0;
+    sscale[n] = DOT_SCALE;
+    snum[n] = 3;
+    sym[n] = DOT;
+    text[n] = c->label;
+  }
+  if (f->marks) {
+    opt[n] = PL_LEGEND_SYMBOL;
+    tcol[n] = lcol[n] = scol[n] = DVP_COL_FG;
+    lstyle[n] = 1;
+    lwidth[n] = 1.0;
+    sscale[n] = STAR_SCALE;
+    snum[n] = 1;
+    sym[n] = STAR;
+    text[n++] = MARK_TEXT;
+  }
+  if (n == 0) return;
+  const int many = n > 10; /* up to 17 lines: closer together */
+  PLFLT w, h;
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
+           PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.02, 0.0, 0.05, DVP_COL_BG, DVP_COL_FG, 1, n,
+           1, n, opt, 0.8, many ? 0.7 : 0.8, many ? 1.8 : 2.0, 0.0, tcol, text, NULL, NULL, NULL,
+           NULL, lcol, lstyle, lwidth, scol, sscale, snum, sym);
+}
+
+/* the options of one axis's box (y: labels parallel to it), its tick step in decades */
+static const char *box_opts(int log, int y, double span, double *step) {
+  *step = log ? ceil(span / 8.0) : 0.0;
+  if (!log) return y ? "bcnstv" : "bcnst";
+  if (*step > 1) return y ? "bcnotv" : "bcnot"; /* every few decades, labels of our own */
+  *step = 0.0;
+  return y ? "bcnstlv" : "bcnstl";
+}
+
+/* draw figure f (an xy_figure *) on the current, initialised stream */
+static void draw_figure(const void *arg) {
+  const xy_figure *f = arg;
+  const int logx = f->flags & DV_PLOT_LOGX, logy = f->flags & DV_PLOT_LOGY;
+  double r[4] = {logx ? -1 : 0, 1, logy ? -1 : 0, 1}; /* without data: 0.1 .. 10 on a log axis */
+  const int any = data_range(f, r);
+  if (any) {
+    axis_range(&r[0], &r[1], logx);
+    axis_range(&r[2], &r[3], logy);
+  }
+  /* small variations about a large value need long tick labels: more room */
+  const int narrow = !logy && r[3] - r[2] < 1e-3 * fmax(fabs(r[2]), fabs(r[3]));
+  pladv(0);
+  plvpor(narrow ? 0.16 : 0.12, 0.68, 0.12, 0.88);
+  plsyax(8, 0);
+  if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
+  plwind(r[0], r[1], r[2], r[3]);
+  plcol0(DVP_COL_GRID);
+  plwidth(1.0);
+  plbox(logx ? "gl" : "g", 0, 0, logy ? "gl" : "g", 0, 0);
+  plcol0(DVP_COL_FG);
+  double xstep, ystep;
+  const char *xopt = box_opts(logx, 0, r[1] - r[0], &xstep);
+  const char *yopt = box_opts(logy, 1, r[3] - r[2], &ystep);
+  if (xstep > 1 || ystep > 1) plslabelfunc(dvp_decade_label, NULL);
+  plbox(xopt, xstep, 0, yopt, ystep, 0);
+  pllab(f->xlabel ? f->xlabel : "", "", f->title ? f->title : "");
+  plmtex("l", narrow ? 8.0 : logy ? 5.5 : 5.0, 0.5, 0.5, f->ylabel ? f->ylabel : "");
+  for (int black = 1; black >= 0; black--) /* black references wide, underneath */
+    for (size_t k = 0; k < f->n; k++) {
+      const xy_curve *c = &f->c[k];
+      if ((c->colour == DVP_COL_FG) != black) continue;
+      plwidth(black ? 3.0 : 1.5);
+      plcol0(c->colour);
+      draw_curve(c);
+    }
+  plwidth(1.0);
+  for (size_t k = 0; k < f->n; k++) draw_marks(&f->c[k]);
+  plcol0(DVP_COL_FG);
+  if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
+  draw_legend(f);
+}
+
+/* free the coordinates of f */
+static void free_figure(xy_figure *f) {
+  for (size_t k = 0; k < f->n; k++) {
+    free(f->c[k].x);
+    free(f->c[k].y);
+  }
+}
+
+int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, const char *ylabel,
+               const dv_plot_curve *curves, size_t n, int flags, dv_error *err) {
+  if (!path || (n > 0 && !curves) || n > DV_PLOT_MAX_CURVES)
+    return dv_fail(err, DV_EINPUT, "dv_report_plot_xy: bad arguments");
+  if (flags & ~(DV_PLOT_LOGX | DV_PLOT_LOGY | DV_PLOT_EQUAL))
+    return dv_fail(err, DV_EINPUT, "%s: unknown plot flags %#x", path, (unsigned)flags);
+  for (size_t k = 0; k < n; k++) {
+    const dv_plot_curve *c = &curves[k];
+    if (c->n > 0 && (!c->x || !c->y))
+      return dv_fail(err, DV_EINPUT, "%s: curve %zu has no coordinates", path, k);
+    if (c->style < DV_CURVE_LINE || c->style > DV_CURVE_LINE_POINTS || c->colour < 0)
+      return dv_fail(err, DV_EINPUT, "%s: curve %zu: bad style %d or colour %d", path, k, c->style,
+                     c->colour);
+  }
+  if (!dvp_have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
+  xy_figure *f = calloc(1, sizeof *f);
+  if (!f) return dv_fail(err, DV_ESYSTEM, "%s: out of memory", path);
+  f->title = title;
+  f->xlabel = xlabel;
+  f->ylabel = ylabel;
+  f->flags = flags;
+  int status = DV_OK;
+  for (size_t k = 0; k < n && status == DV_OK; k++) {
+    xy_curve *c = &f->c[f->n++];
+    if (fill_curve(c, &curves[k], flags) != 0)
+      status = dv_fail(err, DV_ESYSTEM, "%s: out of memory", path);
+    else
+      for (size_t i = 0; i < c->n && !f->marks; i++) f->marks = point_marked(c, i);
+  }
+  if (status == DV_OK) status = dvp_write_svg(path, draw_figure, f, err);
+  free_figure(f);
+  free(f);
+  return status;
+}

@@ -1,0 +1,236 @@
+/* dv_scenario_report: CSVs, plots, report.json and report.md of one scenario. */
+#include "report_scenario.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "run_meta.h"
+#include "io_file.h"
+#include "report_plot.h"
+#include "run_trajectory.h"
+#include "red_invariants.h"
+#include "red_potential.h"
+
+static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_error *err) {
+  char path[1200];
+  dv_io_file out;
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  int status = dv_io_open(&out, path, err);
+  if (status) return status;
+  fputs(DV_CSV_HEADER "\n", out.fp);
+  for (size_t i = 0; i < tr->n; i++) dv_run_csv_row(out.fp, &tr->s[i]);
+  return dv_io_commit(&out, err);
+}
+
+/* {metric: value} with null for non-finite values */
+static cJSON *metrics_json(const double *v) {
+  cJSON *o = cJSON_CreateObject();
+  for (int m = 0; m < DV_NMETRICS; m++)
+    cJSON_AddItemToObject(o, dv_metric_names[m], dv_io_json_number(v[m]));
+  return o;
+}
+
+static double share(double matched, double thin) {
+  return thin > 0.0 ? 1.0 - matched / thin : 0.0;
+}
+
+static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
+  cJSON *o = metrics_json(r->vs_ref.value);
+  const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+  cJSON_AddNumberToObject(o, "wall_per_sim_s", sim > 0.0 ? r->wall_s / sim : 0.0);
+  cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+  cJSON_AddStringToObject(o, "outcome", r->verdict);
+  cJSON_AddStringToObject(o, "detail", r->stats.detail);
+  cJSON_AddBoolToObject(o, "pass", r->pass);
+  cJSON *f = cJSON_AddArrayToObject(o, "failures");
+  for (size_t i = 0; i < r->nfailures; i++)
+    cJSON_AddItemToArray(f, cJSON_CreateString(r->failures[i]));
+  cJSON *tol = cJSON_AddObjectToObject(o, "tolerances");
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (isfinite(r->tolerance[m]))
+      cJSON_AddNumberToObject(tol, dv_metric_names[m], r->tolerance[m]);
+  cJSON_AddNumberToObject(o, "window_end", r->vs_ref.t_window);
+  cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
+  cJSON_AddItemToObject(o, "vs_thin", metrics_json(r->vs_thin.value));
+  cJSON *g = cJSON_AddObjectToObject(o, "geometry_share");
+  cJSON_AddNumberToObject(
+      g, "theta_max_err",
+      share(r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_thin.value[DV_THETA_MAX_ERR]));
+  cJSON_AddNumberToObject(
+      g, "path_max_err",
+      share(r->vs_ref.value[DV_PATH_MAX_ERR], r->vs_thin.value[DV_PATH_MAX_ERR]));
+  cJSON_AddStringToObject(o, "version", r->engine->version());
+  cJSON_AddItemToObject(o, "settings", dv_run_meta_settings(r->engine, c->sc));
+  return o;
+}
+
+static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_error *err) {
+  const dv_scenario *sc = c->sc;
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddStringToObject(o, "description", sc->description);
+  cJSON_AddStringToObject(o, "file", sc->path);
+  cJSON_AddNumberToObject(o, "duration", sc->duration);
+  cJSON_AddNumberToObject(o, "output_dt", sc->output_dt);
+  cJSON *ref = cJSON_AddObjectToObject(o, "reference");
+  cJSON_AddStringToObject(ref, "engine", "reduced");
+  cJSON_AddStringToObject(ref, "integrator", sc->reduced.integrator);
+  cJSON_AddNumberToObject(ref, "rtol", sc->reduced.rtol);
+  cJSON_AddStringToObject(ref, "outcome", dv_outcome_name(c->thin_stats.outcome));
+  cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
+  cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  cJSON_AddStringToObject(ref, "version", dv_engine_reduced.version());
+  cJSON_AddBoolToObject(o, "pass", c->pass);
+  cJSON *engines = cJSON_AddObjectToObject(o, "engines");
+  for (size_t i = 0; i < c->n; i++)
+    cJSON_AddItemToObject(engines, c->r[i].engine->name, engine_json(c, &c->r[i]));
+  cJSON *plots = cJSON_AddArrayToObject(o, "plots");
+  for (size_t i = 0; plotted && dv_report_plot_files[i]; i++)
+    cJSON_AddItemToArray(plots, cJSON_CreateString(dv_report_plot_files[i]));
+  for (size_t i = 0; plotted && i < 2; i++) {
+    char p[1300];
+    const char *name = i ? "phase.svg" : "potential.svg";
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    if (!access(p, F_OK)) cJSON_AddItemToArray(plots, cJSON_CreateString(name));
+  }
+  return dv_io_json_write(dir, "report.json", o, err);
+}
+
+static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err) {
+  char path[1200];
+  dv_io_file out;
+  snprintf(path, sizeof path, "%s/report.md", dir);
+  int status = dv_io_open(&out, path, err);
+  if (status) return status;
+  FILE *fp = out.fp;
+  const dv_scenario *sc = c->sc;
+  fprintf(fp, "# %s: %s\n\n%s\n\n", sc->name, c->pass ? "pass" : "FAIL", sc->description);
+  fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
+          sc->reduced.integrator, sc->reduced.rtol, dv_outcome_name(c->thin_stats.outcome),
+          c->thin_stats.detail[0] ? ": " : "", c->thin_stats.detail,
+          c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  fprintf(fp,
+          "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
+          "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
+          "wall s / sim s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (size_t i = 0; i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    const double *v = r->vs_ref.value;
+    const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+    char ref[48];
+    if (r->half_thickness > 0.0)
+      snprintf(ref, sizeof ref, "matched, h = %g m", r->half_thickness);
+    else
+      snprintf(ref, sizeof ref, "thin disk");
+    fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
+            r->engine->name, r->verdict, ref, v[DV_THETA_MAX_ERR], v[DV_THETA_RMS_ERR],
+            v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF], v[DV_ENERGY_DRIFT],
+            v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR], sim > 0 ? r->wall_s / sim : 0.0);
+  }
+  for (size_t i = 0; i < c->n; i++)
+    for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);
+  fprintf(fp, "\n");
+  return dv_io_commit(&out, err);
+}
+
+#define PORTRAIT_POINTS 400
+
+/* theta and p_theta = (A + m r^2) theta' of a trajectory, for the phase plane */
+static void phase_coordinates(const red_disk *dk, const dv_traj *tr, double *th, double *p) {
+  for (size_t i = 0; i < tr->n; i++) {
+    th[i] = tr->s[i].y[RED_TH];
+    p[i] = (dk->A + dk->m * dk->r * dk->r) * tr->s[i].y[RED_VTH];
+  }
+}
+
+/* the thesis's Figures 4.1-4.6 for this scenario: the effective potential of
+ * theta for its f1, f2 with the energy level, and the phase plane with the
+ * level set and every engine's trajectory over it */
+static int write_portraits(const char *dir, const dv_comparison *c, dv_error *err) {
+  const red_disk *dk = &c->sc->disk;
+  const double *y0 = c->sc->initial;
+  double f1, f2, lo = INFINITY, hi = -INFINITY;
+  if (red_invariants(dk, y0, &f1, &f2)) return DV_OK; /* nothing to draw */
+  const double E = red_energy(dk, y0), I = dk->A + dk->m * dk->r * dk->r;
+  for (size_t i = 0; i < c->thin.n; i++) {
+    lo = fmin(lo, c->thin.s[i].y[RED_TH]);
+    hi = fmax(hi, c->thin.s[i].y[RED_TH]);
+  }
+  const double pad = fmax(0.2 * (hi - lo), 0.05);
+  lo = fmax(lo - pad, 0.02);
+  hi = fmin(hi + pad, M_PI - 0.02);
+  static double th[PORTRAIT_POINTS], U[PORTRAIT_POINTS], up[PORTRAIT_POINTS], dn[PORTRAIT_POINTS];
+  for (int i = 0; i < PORTRAIT_POINTS; i++) {
+    th[i] = lo + (hi - lo) * i / (PORTRAIT_POINTS - 1);
+    if (red_effective_potential(dk, f1, f2, th[i], &U[i])) U[i] = NAN;
+    up[i] = U[i] <= E ? sqrt(2.0 * I * (E - U[i])) : NAN;
+    dn[i] = -up[i];
+  }
+  const double ex[2] = {lo, hi}, ey[2] = {E, E};
+  dv_plot_curve pot[2] = {{"U(theta)", PORTRAIT_POINTS, th, U, NULL, DV_CURVE_LINE, 0},
+                          {"energy E", 2, ex, ey, NULL, DV_CURVE_LINE, 1}};
+  char path[1200], title[160];
+  snprintf(path, sizeof path, "%s/potential.svg", dir);
+  snprintf(title, sizeof title, "%s: effective potential (f1 %.4g, f2 %.4g)", c->sc->name, f1, f2);
+  int status = dv_report_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
+  /* phase plane: the level set, then the reference and every engine */
+  dv_plot_curve ph[2 + 1 + DV_MAX_ENGINES];
+  double *buf[1 + DV_MAX_ENGINES] = {NULL};
+  size_t n = 0;
+  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, th, up, NULL, DV_CURVE_LINE, 0};
+  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, th, dn, NULL, DV_CURVE_LINE, 0};
+  for (size_t k = 0; k <= c->n; k++) {
+    const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
+    if (!(buf[k] = malloc(2 * (tr->n + 1) * sizeof(double)))) break;
+    phase_coordinates(dk, tr, buf[k], buf[k] + tr->n);
+    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)",
+                              tr->n,
+                              buf[k],
+                              buf[k] + tr->n,
+                              NULL,
+                              DV_CURVE_LINE,
+                              (int)k + 1};
+  }
+  snprintf(path, sizeof path, "%s/phase.svg", dir);
+  snprintf(title, sizeof title, "%s: phase plane", c->sc->name);
+  if (!status)
+    status = dv_report_plot_xy(path, title, "tilt theta (rad)", "p_theta (kg m^2/s)", ph, n, 0, err);
+  for (size_t k = 0; k <= c->n; k++) free(buf[k]);
+  return status;
+}
+
+int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
+  char name[96];
+  int status = write_csv(dir, "reduced.csv", &c->thin, err);
+  dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}};
+  for (size_t i = 0; !status && i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    snprintf(name, sizeof name, "%s.csv", r->engine->name);
+    status = write_csv(dir, name, &r->traj, err);
+    if (!status && r->half_thickness > 0.0) {
+      snprintf(name, sizeof name, "matched-%s.csv", r->engine->name);
+      status = write_csv(dir, name, &r->matched, err);
+    }
+    plot.series[plot.nseries++] = (dv_plot_series){
+        r->engine->name, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin};
+  }
+  if (!status) status = dv_report_plot_scenario(dir, &plot, err);
+  if (!status) status = write_portraits(dir, c, err);
+  if (!status) status = write_markdown(dir, c, err);
+  if (!status) status = write_json(dir, c, 1, err);
+  return status;
+}
+
+void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
+  for (size_t i = 0; i < c->n; i++) {
+    const dv_engine_result *r = &c->r[i];
+    fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
+            r->verdict, r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_PATH_MAX_ERR],
+            r->pass ? "pass" : "FAIL");
+    for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
+  }
+}

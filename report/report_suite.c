@@ -1,0 +1,476 @@
+/* dv_suite_report: summary.json, index.html and JUnit XML from the scenarios' report.json. */
+#include "report_suite.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <sys/stat.h>
+
+#include "io_file.h"
+
+#define MAX_REPORT_BYTES (64L << 20) /* a larger report.json is taken as broken */
+#define PATH_CAP 4096
+
+/* one scenario: its parsed report, or why it has none usable */
+typedef struct entry {
+  const char *dir;      /* relative to out_dir */
+  const char *name;     /* the report's "scenario", else dir */
+  cJSON *report;        /* parsed report.json (may be set even on error) */
+  const cJSON *engines; /* its "engines" object, NULL on error */
+  char error[768];      /* "" when the report is usable */
+} entry;
+
+/* the page's only style: pass green, FAIL red, harness ERROR amber */
+static const char css[] =
+    "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse}"
+    "th,td{border:1px solid #bbb;padding:3px 7px;vertical-align:top}th{background:#eee}"
+    "td.n{text-align:right;font-family:monospace}.pass,.fail,.err{font-weight:bold}"
+    ".pass{background:#c8f0c8;color:#075207}.fail{background:#f6c4c4;color:#8b0000}"
+    ".err{background:#ffe0a0;color:#7a4200}figure{display:inline-block;margin:.5em}"
+    "img{max-width:560px;border:1px solid #ddd}section{border-top:2px solid #ccc}";
+
+/* member key of object o, NULL when absent or o is not an object */
+static const cJSON *item(const cJSON *o, const char *key) {
+  return cJSON_IsObject(o) ? cJSON_GetObjectItemCaseSensitive(o, key) : NULL;
+}
+
+/* string member key of o, "" when absent */
+static const char *text(const cJSON *o, const char *key) {
+  const cJSON *s = item(o, key);
+  return cJSON_IsString(s) && s->valuestring ? s->valuestring : "";
+}
+
+/* an engine passed only when its report says "pass": true */
+static int engine_pass(const cJSON *eng) {
+  return cJSON_IsTrue(item(eng, "pass"));
+}
+
+/* a scenario passed: usable report that says so, every engine passing */
+static int scenario_pass(const entry *e) {
+  if (e->error[0] || !cJSON_IsTrue(item(e->report, "pass"))) return 0;
+  const cJSON *eng;
+  cJSON_ArrayForEach(eng, e->engines) if (!engine_pass(eng)) return 0;
+  return 1;
+}
+
+/* a file name that stays inside its scenario dir */
+static int safe_name(const char *s) {
+  return s && *s && !strchr(s, '/') && strcmp(s, ".") && strcmp(s, "..");
+}
+
+/* record in e why its report is unusable */
+static void unusable(entry *e, const char *why, const char *more) {
+  snprintf(e->error, sizeof e->error, "%s/report.json: %s%s", e->dir, why, more);
+}
+
+/* read and parse out_dir/dir/report.json into e; failures are recorded in e->error */
+static void load_entry(const char *out_dir, const char *dir, entry *e) {
+  char path[PATH_CAP], where[64];
+  char *buf = NULL;
+  size_t len;
+  struct stat st;
+  FILE *fp = NULL;
+  const char *end = NULL;
+  e->dir = e->name = dir;
+  if (snprintf(path, sizeof path, "%s/%s/report.json", out_dir, dir) >= (int)sizeof path) {
+    unusable(e, "path too long", "");
+    goto cleanup;
+  }
+  if (!(fp = fopen(path, "rb"))) {
+    unusable(e, "cannot open: ", strerror(errno));
+    goto cleanup;
+  }
+  if (fstat(fileno(fp), &st) || !S_ISREG(st.st_mode) || st.st_size > MAX_REPORT_BYTES) {
+    unusable(e, "not a regular file of at most 64 MiB", "");
+    goto cleanup;
+  }
+  len = (size_t)st.st_size;
+  if (!(buf = malloc(len + 1)) || fread(buf, 1, len, fp) != len) {
+    unusable(e, "cannot read: ", strerror(errno));
+    goto cleanup;
+  }
+  buf[len] = '\0';
+  if (!(e->report = cJSON_ParseWithOpts(buf, &end, 0))) {
+    snprintf(where, sizeof where, " (at byte %ld of %zu)", end ? (long)(end - buf) : 0L, len);
+    unusable(e, "not valid JSON", where);
+    goto cleanup;
+  }
+  if (*text(e->report, "scenario")) e->name = text(e->report, "scenario");
+  const cJSON *engines = item(e->report, "engines");
+  if (!cJSON_IsObject(e->report))
+    unusable(e, "not a JSON object", "");
+  else if (!cJSON_IsObject(engines) || !engines->child)
+    unusable(e, "no engines compared", "");
+  else
+    e->engines = engines;
+cleanup:
+  if (fp) fclose(fp);
+  free(buf);
+}
+
+/* bytes in the valid UTF-8 sequence at s (XML characters only), 0 if invalid */
+static size_t utf8_len(const unsigned char *s) {
+  static const unsigned long min[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (s[0] < 0x80) return 1;
+  const size_t n = s[0] >= 0xF8 ? 0 : s[0] >= 0xF0 ? 4 : s[0] >= 0xE0 ? 3 : s[0] >= 0xC0 ? 2 : 0;
+  unsigned long cp = s[0] & (0xFFu >> (n + 1));
+  for (size_t i = 1; i < n; i++) {
+    if ((s[i] & 0xC0) != 0x80) return 0; /* also stops at the terminator */
+    cp = cp << 6 | (s[i] & 0x3F);
+  }
+  if (!n || cp < min[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF) || cp == 0xFFFE ||
+      cp == 0xFFFF)
+    return 0;
+  return n;
+}
+
+/* the bytes of invalid UTF-8 in text replaced by '?', in place */
+static void scrub_utf8(char *text) {
+  for (unsigned char *p = (unsigned char *)text; p && *p;) {
+    const size_t n = utf8_len(p);
+    if (!n) *p = '?';
+    p += n ? n : 1;
+  }
+}
+
+/* a copy of string or number o[key] for the summary, null when absent */
+static cJSON *copy_or_null(const cJSON *o, const char *key) {
+  const cJSON *v = item(o, key);
+  return cJSON_IsString(v) || cJSON_IsNumber(v) ? cJSON_Duplicate(v, 0) : cJSON_CreateNull();
+}
+
+/* summary.json as text (caller frees), NULL when out of memory */
+static char *summary_text(const entry *es, size_t n, int pass) {
+  static const char *const keys[] = {"outcome", "theta_max_err", "path_max_err", "wall_per_sim_s"};
+  cJSON *root = cJSON_CreateObject();
+  cJSON_AddBoolToObject(root, "pass", pass);
+  cJSON *list = cJSON_AddArrayToObject(root, "scenarios");
+  for (size_t i = 0; i < n; i++) {
+    const entry *e = &es[i];
+    const cJSON *eng;
+    cJSON *s = cJSON_CreateObject();
+    cJSON_AddItemToArray(list, s);
+    cJSON_AddStringToObject(s, "scenario", e->name);
+    cJSON_AddStringToObject(s, "dir", e->dir);
+    cJSON_AddBoolToObject(s, "pass", scenario_pass(e));
+    if (e->error[0]) cJSON_AddStringToObject(s, "error", e->error);
+    cJSON *engines = cJSON_AddObjectToObject(s, "engines");
+    cJSON_ArrayForEach(eng, e->engines) {
+      cJSON *o = cJSON_AddObjectToObject(engines, eng->string);
+      const cJSON *failures = item(eng, "failures");
+      cJSON_AddBoolToObject(o, "pass", engine_pass(eng));
+      for (size_t k = 0; k < sizeof keys / sizeof *keys; k++)
+        cJSON_AddItemToObject(o, keys[k], copy_or_null(eng, keys[k]));
+      cJSON_AddItemToObject(
+          o, "failures",
+          cJSON_IsArray(failures) ? cJSON_Duplicate(failures, 1) : cJSON_CreateArray());
+    }
+  }
+  char *out = cJSON_Print(root); /* report strings are copied as they are: make it UTF-8 */
+  cJSON_Delete(root);
+  scrub_utf8(out);
+  return out;
+}
+
+/* entities for the ASCII characters that need one (tab and newline in attributes only) */
+static const char *const entities[128] = {
+    ['&'] = "&amp;",  ['<'] = "&lt;",   ['>'] = "&gt;",   ['"'] = "&quot;",
+    ['\''] = "&#39;", ['\r'] = "&#13;", ['\n'] = "&#10;", ['\t'] = "&#9;"};
+
+/* s escaped for HTML/XML text, or for a double-quoted attribute when attr */
+static void put_esc(FILE *fp, const char *s, int attr) {
+  for (const unsigned char *p = (const unsigned char *)(s ? s : ""); *p;) {
+    const int space = *p == '\n' || *p == '\t';
+    size_t n = 1;
+    if (*p < 0x80 && entities[*p] && (attr || !space)) {
+      fputs(entities[*p], fp);
+    } else if ((*p < 0x20 && !space) || !(n = utf8_len(p))) {
+      fputc('?', fp);
+      n = 1;
+    } else {
+      fwrite(p, 1, n, fp);
+    }
+    p += n;
+  }
+}
+
+/* pre, s escaped (as an attribute value when attr), post */
+static void put(FILE *fp, const char *pre, const char *s, int attr, const char *post) {
+  fputs(pre, fp);
+  put_esc(fp, s, attr);
+  fputs(post, fp);
+}
+
+/* pre, number v with %.3g (an en dash when absent), post */
+static void put_num(FILE *fp, const char *pre, const cJSON *v, const char *post) {
+  if (cJSON_IsNumber(v))
+    fprintf(fp, "%s%.3g%s", pre, v->valuedouble, post);
+  else
+    fprintf(fp, "%s&#8211;%s", pre, post);
+}
+
+/* pre, the relative URL dir/name percent-encoded ('/' kept), post */
+static void put_url(FILE *fp, const char *pre, const char *dir, const char *name,
+                    const char *post) {
+  char url[PATH_CAP];
+  snprintf(url, sizeof url, "%s/%s", dir, name);
+  fputs(pre, fp);
+  for (const unsigned char *p = (const unsigned char *)url; *p; p++) {
+    const int plain = (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
+                      (*p >= '0' && *p <= '9') || strchr("-._~/", *p);
+    fprintf(fp, plain ? "%c" : "%%%02X", *p);
+  }
+  fputs(post, fp);
+}
+
+/* out_dir/dir/name is a regular file */
+static int file_exists(const char *out_dir, const char *dir, const char *name) {
+  char path[PATH_CAP];
+  struct stat st;
+  if (!safe_name(name)) return 0;
+  if (snprintf(path, sizeof path, "%s/%s/%s", out_dir, dir, name) >= (int)sizeof path) return 0;
+  return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* a link to dir/name when it exists, separated from the previous one */
+static void put_link(FILE *fp, const char *out_dir, const char *dir, const char *name,
+                     int *nlinks) {
+  if (!file_exists(out_dir, dir, name)) return;
+  put_url(fp, *nlinks ? " &#183; <a href=\"" : "<a href=\"", dir, name, "\">");
+  put(fp, "", name, 0, "</a>");
+  ++*nlinks;
+}
+
+/* one summary-table row of engine eng of scenario i */
+static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
+  static const char *const metrics[] = {"theta_max_err", "path_max_err", "path_hausdorff",
+                                        "energy_drift"};
+  const int ok = engine_pass(eng);
+  const cJSON *f;
+  fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
+  put(fp, "", e->name, 0, "</a></td>");
+  put(fp, "<td>", eng->string, 0, "</td>");
+  put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
+  fprintf(fp, "<td class=\"%s\">%s</td>", ok ? "pass" : "fail", ok ? "pass" : "FAIL");
+  for (size_t k = 0; k < sizeof metrics / sizeof *metrics; k++)
+    put_num(fp, "<td class=\"n\">", item(eng, metrics[k]), "</td>");
+  put_num(fp, "<td class=\"n\">", item(item(eng, "geometry_share"), "theta_max_err"), "</td>");
+  put_num(fp, "<td class=\"n\">", item(eng, "wall_per_sim_s"), "</td><td>");
+  int nf = 0;
+  cJSON_ArrayForEach(f, item(eng, "failures")) if (cJSON_IsString(f))
+      put(fp, nf++ ? "<br />" : "", f->valuestring, 0, "");
+  fputs("</td></tr>\n", fp);
+}
+
+/* the section of scenario i: description, reference, engines, plots, files */
+static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i) {
+  fprintf(fp, "<section id=\"s%zu\">\n", i);
+  put(fp, "<h2>", e->name, 0, "</h2>\n");
+  if (e->error[0]) {
+    put(fp, "<p class=\"err\">harness error: ", e->error, 0, "</p>\n</section>\n");
+    return;
+  }
+  const cJSON *r = e->report, *ref = item(r, "reference"), *eng, *plot;
+  put(fp, "<p>", text(r, "description"), 0, "</p>\n");
+  put(fp, "<p>Scenario file ", text(r, "file"), 0, ": ");
+  put_num(fp, "duration ", item(r, "duration"), " s, ");
+  put_num(fp, "output every ", item(r, "output_dt"), " s.</p>\n");
+  put(fp, "<p>Reference ", text(ref, "engine"), 0, " (");
+  put(fp, "", text(ref, "integrator"), 0, ", ");
+  put_num(fp, "rtol ", item(ref, "rtol"), "): ");
+  put(fp, "<b>", text(ref, "outcome"), 0, "</b>");
+  put_num(fp, " at t = ", item(ref, "t_end"), " s. ");
+  put(fp, "", text(ref, "detail"), 0, "</p>\n<ul>\n");
+  cJSON_ArrayForEach(eng, e->engines) {
+    put(fp, "<li>", eng->string, 0, ": ");
+    put(fp, "", text(eng, "outcome"), 0, *text(eng, "detail") ? " &#8211; " : "");
+    put(fp, "", text(eng, "detail"), 0, "</li>\n");
+  }
+  fputs("</ul>\n<div>\n", fp);
+  cJSON_ArrayForEach(plot, item(r, "plots")) {
+    if (!cJSON_IsString(plot) || !file_exists(out_dir, e->dir, plot->valuestring)) continue;
+    put_url(fp, "<figure><img src=\"", e->dir, plot->valuestring, "\"");
+    put(fp, " alt=\"", plot->valuestring, 1, "\" />");
+    put(fp, "<figcaption>", plot->valuestring, 0, "</figcaption></figure>\n");
+  }
+  fputs("</div>\n<p>Files: ", fp);
+  int nlinks = 0;
+  char name[PATH_CAP];
+  put_link(fp, out_dir, e->dir, "report.md", &nlinks);
+  put_link(fp, out_dir, e->dir, "report.json", &nlinks);
+  put_link(fp, out_dir, e->dir, "reduced.csv", &nlinks);
+  cJSON_ArrayForEach(eng, e->engines) {
+    snprintf(name, sizeof name, "%s.csv", eng->string);
+    put_link(fp, out_dir, e->dir, name, &nlinks);
+    snprintf(name, sizeof name, "matched-%s.csv", eng->string);
+    put_link(fp, out_dir, e->dir, name, &nlinks);
+  }
+  fputs(nlinks ? "</p>\n</section>\n" : "none</p>\n</section>\n", fp);
+}
+
+/* wall-clock seconds of engine eng: wall_per_sim_s x simulated window */
+static double wall_seconds(const cJSON *report, const cJSON *eng) {
+  const cJSON *rate = item(eng, "wall_per_sim_s"), *span = item(eng, "window_end");
+  if (!cJSON_IsNumber(span)) span = item(report, "duration");
+  if (!cJSON_IsNumber(rate) || !cJSON_IsNumber(span)) return 0.0;
+  const double w = rate->valuedouble * span->valuedouble;
+  return isfinite(w) && w > 0.0 ? w : 0.0;
+}
+
+/* engine runs, failing ones, errored scenarios and total wall seconds (if total) */
+static void tally(const entry *es, size_t n, int *runs, int *failing, int *errors, double *total) {
+  for (size_t i = 0; i < n; i++) {
+    const cJSON *eng;
+    *errors += es[i].error[0] != 0;
+    cJSON_ArrayForEach(eng, es[i].engines) {
+      ++*runs, *failing += !engine_pass(eng);
+      if (total) *total += wall_seconds(es[i].report, eng);
+    }
+  }
+}
+
+/* index.html: title, summary table, one section per scenario */
+static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n, int pass) {
+  int runs = 0, failing = 0, errors = 0;
+  tally(es, n, &runs, &failing, &errors, NULL);
+  fprintf(fp,
+          "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
+          "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"
+          "<h1>diskval suite: <span class=\"%s\">%s</span></h1>\n"
+          "<p>%zu scenarios, %d engine runs, %d failing, %d harness errors. "
+          "Errors against the reference: theta in rad, path in m; energy drift relative; "
+          "geometry share: part of the theta error explained by the stand-in's geometry.</p>\n",
+          pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL", n, runs,
+          failing, errors);
+  fputs(
+      "<table>\n<tr><th>scenario</th><th>engine</th><th>outcome</th><th>verdict</th>"
+      "<th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
+      "<th>energy_drift</th><th>geometry share</th><th>wall_per_sim_s</th>"
+      "<th>failures</th></tr>\n",
+      fp);
+  for (size_t i = 0; i < n; i++) {
+    const cJSON *eng;
+    if (es[i].error[0]) {
+      fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
+      put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
+      put(fp, "<td class=\"err\">ERROR</td><td colspan=\"6\"></td><td>", es[i].error, 0,
+          "</td></tr>\n");
+    }
+    cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);
+  }
+  fputs("</table>\n", fp);
+  char stability[PATH_CAP];
+  snprintf(stability, sizeof stability, "%s/stability.html", out_dir);
+  if (access(stability, F_OK) == 0) /* written by suite --stability */
+    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n",
+          fp);
+  for (size_t i = 0; i < n; i++) put_section(fp, out_dir, &es[i], i);
+  fputs("</body>\n</html>\n", fp);
+}
+
+/* the <failure> of engine eng: its listed failures, else how it ended */
+static void put_failure(FILE *fp, const entry *e, const cJSON *eng) {
+  const cJSON *list = item(eng, "failures"), *first = NULL, *f;
+  cJSON_ArrayForEach(f, list) if (!first && cJSON_IsString(f)) first = f;
+  if (first) {
+    put(fp, "      <failure message=\"", first->valuestring, 1, "\">");
+    int nf = 0;
+    cJSON_ArrayForEach(f, list) if (cJSON_IsString(f))
+        put(fp, nf++ ? "\n" : "", f->valuestring, 0, "");
+  } else {
+    char why[1024];
+    snprintf(why, sizeof why, "%s: %s: %s%s%s", e->name, eng->string,
+             *text(eng, "outcome") ? text(eng, "outcome") : "failed",
+             *text(eng, "detail") ? ": " : "", text(eng, "detail"));
+    put(fp, "      <failure message=\"", why, 1, "\">");
+    put_esc(fp, why, 0);
+  }
+  fputs("</failure>\n", fp);
+}
+
+/* the JUnit XML: one test case per scenario x engine, one per errored scenario */
+static void write_junit(FILE *fp, const entry *es, size_t n) {
+  int tests = 0, failures = 0, errors = 0;
+  double total = 0.0;
+  char counts[160];
+  tally(es, n, &tests, &failures, &errors, &total);
+  tests += errors; /* an errored scenario is a test case of its own */
+  snprintf(counts, sizeof counts, "tests=\"%d\" failures=\"%d\" errors=\"%d\" time=\"%.3f\">\n",
+           tests, failures, errors, total);
+  fprintf(fp, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"diskval\" %s",
+          counts);
+  fprintf(fp, "  <testsuite name=\"diskval\" %s", counts);
+  for (size_t i = 0; i < n; i++) {
+    const entry *e = &es[i];
+    const cJSON *eng;
+    if (e->error[0]) {
+      put(fp, "    <testcase classname=\"", e->name, 1, "\"");
+      put(fp, " name=\"", e->dir, 1, "\" time=\"0.000\">\n");
+      put(fp, "      <error message=\"", e->error, 1, "\">");
+      put(fp, "", e->error, 0, "</error>\n    </testcase>\n");
+    }
+    cJSON_ArrayForEach(eng, e->engines) {
+      put(fp, "    <testcase classname=\"", e->name, 1, "\"");
+      put(fp, " name=\"", eng->string, 1, "\"");
+      fprintf(fp, " time=\"%.3f\"%s", wall_seconds(e->report, eng),
+              engine_pass(eng) ? " />\n" : ">\n");
+      if (engine_pass(eng)) continue;
+      put_failure(fp, e, eng);
+      fputs("    </testcase>\n", fp);
+    }
+  }
+  fputs("  </testsuite>\n</testsuites>\n", fp);
+}
+
+/* load every report, then write the files: all opened before any is committed */
+int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs, size_t n,
+                          const char *junit_path, dv_error *err) {
+  dv_io_file outs[3];
+  char paths[2][PATH_CAP];
+  entry *es = NULL;
+  char *summary = NULL;
+  int status = DV_OK;
+  memset(outs, 0, sizeof outs);
+  if (!out_dir || (n && !scenario_dirs))
+    return dv_fail(err, DV_EINPUT, "suite report: no output directory or no scenario list");
+  for (size_t i = 0; i < n; i++)
+    if (!scenario_dirs[i])
+      return dv_fail(err, DV_EINPUT, "suite report: scenario %zu has no dir", i);
+  snprintf(paths[0], PATH_CAP, "%s/summary.json", out_dir);
+  snprintf(paths[1], PATH_CAP, "%s/index.html", out_dir);
+  const char *targets[3] = {paths[0], paths[1], junit_path};
+  for (int k = 0; k < 3; k++)
+    if (targets[k] && strlen(targets[k]) >= sizeof outs[k].path)
+      return dv_fail(err, DV_EINPUT, "suite report: path too long: %.200s", targets[k]);
+  int pass = 1;
+  if ((es = calloc(n ? n : 1, sizeof *es))) {
+    for (size_t i = 0; i < n; i++) {
+      load_entry(out_dir, scenario_dirs[i], &es[i]);
+      pass &= scenario_pass(&es[i]);
+    }
+    summary = summary_text(es, n, pass);
+  }
+  if (!summary) {
+    status = dv_fail(err, DV_ESYSTEM, "suite report: out of memory");
+    goto cleanup;
+  }
+  for (int k = 0; k < 3 && !status; k++)
+    if (targets[k]) status = dv_io_open(&outs[k], targets[k], err);
+  if (status) goto cleanup;
+  fputs(summary, outs[0].fp);
+  fputc('\n', outs[0].fp);
+  write_html(outs[1].fp, out_dir, es, n, pass);
+  if (junit_path) write_junit(outs[2].fp, es, n);
+  for (int k = 0; k < 3 && !status; k++)
+    if (targets[k]) status = dv_io_commit(&outs[k], err);
+cleanup:
+  for (int k = 0; k < 3; k++) dv_io_abort(&outs[k]);
+  for (size_t i = 0; es && i < n; i++) cJSON_Delete(es[i].report);
+  free(es);
+  free(summary);
+  return status;
+}

@@ -1,0 +1,37 @@
+/* dv_suite: scenarios run into report directories, one process each.
+ *
+ * A scenario's directory OUT/<name>/ is built under a temporary name and
+ * renamed into place when complete, replacing an older one: an interrupted or
+ * failed run never leaves a half-written report. Each scenario runs in its
+ * own process (MuJoCo's and ODE's error handlers are process-wide), at most
+ * jobs at a time.
+ */
+#ifndef DV_SUITE_H
+#define DV_SUITE_H
+
+#include <stddef.h>
+
+#include "dv_engine.h"
+#include "scenario.h"
+
+/* how one scenario of a suite ended */
+typedef enum dv_suite_result { DV_SUITE_PASS = 0, DV_SUITE_FAIL = 1, DV_SUITE_ERROR = 2 } dv_suite_result;
+
+/* parse "mujoco,ode" into engines (NULL-terminated, at most max - 1) */
+int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max, dv_error *err);
+
+/* compare sc and write OUT/<name>/; print a line per engine to stdout when
+ * verbose. Returns a dv_suite_result. */
+int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
+                     const char *out_dir, int verbose, dv_error *err);
+
+/* run scenarios[0..n) in up to jobs processes; exit codes into codes[].
+ * SIGINT or SIGTERM stops it: running scenarios are ended, their temporary
+ * directories removed, finished reports kept; returns DV_EVENT then. */
+int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n, const dv_engine_type *const *engines,
+                     const char *out_dir, int jobs, int *codes, dv_error *err);
+
+/* mkdir -p */
+int dv_io_make_dirs(const char *path, dv_error *err);
+
+#endif

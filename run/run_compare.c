@@ -1,0 +1,94 @@
+/* dv_run_compare: comparison metrics; checked by tests/test_compare against
+ * synthetic trajectories with known answers. */
+#include "run_compare.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+const char *const dv_metric_names[DV_NMETRICS] = {"theta_max_err", "theta_rms_err",  "path_max_err",
+                                                  "path_rms_err",  "path_hausdorff", "energy_drift",
+                                                  "slip_max"};
+
+int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
+  if (tr->n == tr->cap) {
+    const size_t cap = tr->cap ? 2 * tr->cap : 256;
+    dv_sample *grown = realloc(tr->s, cap * sizeof *grown);
+    if (!grown) return -1;
+    tr->s = grown;
+    tr->cap = cap;
+  }
+  tr->s[tr->n++] = *s;
+  return 0;
+}
+
+void dv_run_traj_free(dv_traj *tr) {
+  if (!tr) return;
+  free(tr->s);
+  tr->s = NULL;
+  tr->n = tr->cap = 0;
+}
+
+/* distance from p to the segment a-b */
+static double segment_distance(const double p[2], const double a[2], const double b[2]) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+  double u = len2 > 0.0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2 : 0.0;
+  u = fmin(1.0, fmax(0.0, u));
+  return hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy);
+}
+
+/* the largest distance from a vertex of a to the polyline b */
+static double directed(const double (*a)[2], size_t na, const double (*b)[2], size_t nb) {
+  double worst = 0.0;
+  for (size_t i = 0; i < na; i++) {
+    double best = INFINITY;
+    if (nb == 1) best = hypot(a[i][0] - b[0][0], a[i][1] - b[0][1]);
+    for (size_t j = 0; j + 1 < nb && best > worst; j++)
+      best = fmin(best, segment_distance(a[i], b[j], b[j + 1]));
+    if (best > worst) worst = best;
+  }
+  return worst;
+}
+
+double dv_run_hausdorff(const double (*a)[2], size_t na, const double (*b)[2], size_t nb) {
+  if (!na || !nb) return (na || nb) ? INFINITY : 0.0;
+  return fmax(directed(a, na, b, nb), directed(b, nb, a, na));
+}
+
+void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metrics *out) {
+  size_t n = e->n < ref->n ? e->n : ref->n;
+  while (n > 0 && (e->s[n - 1].t > t_end || ref->s[n - 1].t > t_end ||
+                   fabs(e->s[n - 1].t - ref->s[n - 1].t) > 1e-9))
+    n--;
+  double th_max = 0, th_sq = 0, p_max = 0, p_sq = 0, e_drift = 0, slip = 0;
+  const double e0 = n ? e->s[0].energy : 0.0;
+  double(*pa)[2] = malloc((n ? n : 1) * sizeof *pa), (*pb)[2] = malloc((n ? n : 1) * sizeof *pb);
+  for (size_t i = 0; i < n; i++) {
+    const dv_sample *a = &e->s[i], *b = &ref->s[i];
+    const double dth = fabs(a->y[RED_TH] - b->y[RED_TH]);
+    const double dp = hypot(a->contact[0] - b->contact[0], a->contact[1] - b->contact[1]);
+    th_max = fmax(th_max, dth);
+    th_sq += dth * dth;
+    p_max = fmax(p_max, dp);
+    p_sq += dp * dp;
+    e_drift = fmax(e_drift, fabs(a->energy - e0) / fabs(e0));
+    slip = fmax(slip, a->slip);
+    if (pa && pb) {
+      pa[i][0] = a->contact[0];
+      pa[i][1] = a->contact[1];
+      pb[i][0] = b->contact[0];
+      pb[i][1] = b->contact[1];
+    }
+  }
+  out->n_window = n;
+  out->t_window = n ? e->s[n - 1].t : 0.0;
+  out->value[DV_THETA_MAX_ERR] = th_max;
+  out->value[DV_THETA_RMS_ERR] = n ? sqrt(th_sq / n) : 0.0;
+  out->value[DV_PATH_MAX_ERR] = p_max;
+  out->value[DV_PATH_RMS_ERR] = n ? sqrt(p_sq / n) : 0.0;
+  out->value[DV_PATH_HAUSDORFF] =
+      (pa && pb) ? dv_run_hausdorff((const double(*)[2])pa, n, (const double(*)[2])pb, n) : NAN;
+  out->value[DV_ENERGY_DRIFT] = e_drift;
+  out->value[DV_SLIP_MAX] = slip;
+  free(pa);
+  free(pb);
+}

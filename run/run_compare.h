@@ -1,0 +1,55 @@
+/* dv_run_compare: trajectories in memory and the metrics that compare them.
+ *
+ * Metrics of an engine against a reference, over the compared window: the
+ * samples both have at equal times, up to the reference's end (its event or
+ * validity limit) and the engine's.
+ *   theta_max_err, theta_rms_err   |theta - theta_ref| (rad)
+ *   path_max_err, path_rms_err     |contact - contact_ref| at equal times (m)
+ *   path_hausdorff                 Hausdorff distance between the two contact
+ *                                  paths as polylines: insensitive to timing (m)
+ *   energy_drift                   max |E(t) - E(0)| / |E(0)| of the engine
+ *   slip_max                       largest slip speed of the engine (m/s)
+ */
+#ifndef DV_COMPARE_H
+#define DV_COMPARE_H
+
+#include <stddef.h>
+
+#include "dv_engine.h"
+
+/* a trajectory: samples in time order */
+typedef struct dv_traj {
+  size_t n, cap;
+  dv_sample *s;
+} dv_traj;
+
+int dv_run_traj_push(dv_traj *tr, const dv_sample *s); /* 0, or -1 out of memory */
+void dv_run_traj_free(dv_traj *tr);                    /* NULL-safe */
+
+typedef enum dv_metric_id {
+  DV_THETA_MAX_ERR = 0,
+  DV_THETA_RMS_ERR,
+  DV_PATH_MAX_ERR,
+  DV_PATH_RMS_ERR,
+  DV_PATH_HAUSDORFF,
+  DV_ENERGY_DRIFT,
+  DV_SLIP_MAX,
+  DV_NMETRICS
+} dv_metric_id;
+
+/* names as in scenario files and reports: "theta_max_err", ... */
+extern const char *const dv_metric_names[DV_NMETRICS];
+
+typedef struct dv_metrics {
+  double value[DV_NMETRICS];
+  size_t n_window; /* samples compared */
+  double t_window; /* end of the compared window, s */
+} dv_metrics;
+
+/* metrics of engine against reference; t_end bounds the window (INFINITY: none) */
+void dv_run_compare(const dv_traj *engine, const dv_traj *reference, double t_end, dv_metrics *out);
+
+/* Hausdorff distance between two polylines of points (x, y), m */
+double dv_run_hausdorff(const double (*a)[2], size_t na, const double (*b)[2], size_t nb);
+
+#endif

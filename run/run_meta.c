@@ -1,0 +1,74 @@
+/* dv_meta: run metadata as JSON (cJSON). */
+#include "run_meta.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io_file.h"
+
+void *dv_run_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) {
+  cJSON *o = cJSON_CreateObject();
+  char section[64];
+  snprintf(section, sizeof section, "engines.%s", engine->name);
+  /* both references integrate with the [engines.reduced] solver settings */
+  if (!strcmp(engine->name, "reduced") || !strcmp(engine->name, "matched")) {
+    cJSON_AddStringToObject(o, "integrator", sc->reduced.integrator);
+    cJSON_AddNumberToObject(o, "rtol", sc->reduced.rtol);
+    cJSON_AddNumberToObject(o, "atol", sc->reduced.atol);
+    cJSON_AddNumberToObject(o, "theta_limit", sc->reduced.theta_limit);
+  }
+  for (size_t i = 0; i < dv_nsetting_specs; i++) {
+    const dv_setting_spec *sp = &dv_setting_specs[i];
+    if (strcmp(sp->section, section) != 0) continue;
+    const char *field = (const char *)sc + sp->offset;
+    if (sp->choices)
+      cJSON_AddStringToObject(o, sp->key, sp->choices[*(const int *)field]);
+    else if (sp->is_int)
+      cJSON_AddNumberToObject(o, sp->key, *(const int *)field);
+    else
+      cJSON_AddNumberToObject(o, sp->key, *(const double *)field);
+  }
+  return o;
+}
+
+void *dv_io_json_number(double v) {
+  return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
+}
+
+int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *err) {
+  char *text = cJSON_Print(json);
+  cJSON_Delete(json);
+  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  char path[1200];
+  dv_io_file out;
+  snprintf(path, sizeof path, "%s%s%s", dir, name ? "/" : "", name ? name : "");
+  int status = dv_io_open(&out, path, err);
+  if (!status) {
+    fprintf(out.fp, "%s\n", text);
+    status = dv_io_commit(&out, err);
+  }
+  free(text);
+  return status;
+}
+
+int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
+                  const dv_engine_stats *st, dv_error *err) {
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddStringToObject(o, "engine", engine->name);
+  cJSON_AddStringToObject(o, "version", engine->version());
+  cJSON_AddItemToObject(o, "settings", dv_run_meta_settings(engine, sc));
+  cJSON *s = cJSON_AddObjectToObject(o, "run");
+  cJSON_AddStringToObject(s, "outcome", dv_outcome_name(st->outcome));
+  cJSON_AddStringToObject(s, "detail", st->detail);
+  cJSON_AddNumberToObject(s, "steps", (double)st->steps);
+  cJSON_AddNumberToObject(s, "rhs_evals", (double)st->rhs_evals);
+  cJSON_AddNumberToObject(s, "slip_max", st->slip_max);
+  cJSON_AddNumberToObject(s, "penetration_max", st->penetration_max);
+  cJSON_AddNumberToObject(s, "contacts_max", st->contacts_max);
+  cJSON_AddNumberToObject(s, "warnings", (double)st->warnings);
+  return dv_io_json_write(path, NULL, o, err);
+}

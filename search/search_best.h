@@ -1,0 +1,52 @@
+/* dv_search: searches over an engine's settings by probing runs.
+ *
+ * best: for every choice of the engine's discrete setting (MuJoCo's
+ * integrator, ODE's stepper, the reference's integrator), the largest
+ * timestep (rtol for the reference) whose theta error meets a tolerance:
+ * doubling or halving from the default until the answer changes, then six
+ * bisections on a log scale; the cheapest passing probe wins. The error is
+ * assumed to grow with the step; a probe that diverges counts as too large.
+ *
+ * stability: the largest timestep at which a run stays finite and within a
+ * theta error, by the same bracketing and bisection; every probe recorded.
+ */
+#ifndef DV_SEARCH_H
+#define DV_SEARCH_H
+
+#include <stddef.h>
+
+#include "search_sweep.h"
+
+#define DV_SEARCH_MAX_PROBES 64
+
+typedef struct dv_probe {
+  char choice[32];      /* the discrete setting, e.g. "rk4" */
+  double step;          /* the continuous setting, e.g. the timestep */
+  dv_sweep_point point; /* what the run gave */
+  int pass;             /* ok and theta error within the tolerance */
+} dv_probe;
+
+typedef struct dv_search {
+  char engine[32];
+  char choice_key[96], step_key[96]; /* e.g. engines.mujoco.integrator, engines.mujoco.timestep */
+  double tolerance;                  /* theta_max_err limit, rad */
+  size_t nprobes;
+  dv_probe probes[DV_SEARCH_MAX_PROBES];
+  int best;          /* index of the cheapest passing probe, or -1 */
+  double limit;      /* stability: largest passing step, NAN when none */
+  int first_failure; /* stability: the probe just above the limit, or -1 */
+} dv_search;
+
+/* the cheapest settings of engine meeting theta_max_err <= tol */
+int dv_search_best(const char *scenario_path, const char *const *sets, size_t nsets,
+                   const char *engine, double tol, dv_search *out, dv_error *err);
+
+/* the largest timestep (engine's default discrete setting) within tol */
+int dv_search_stability(const char *scenario_path, const char *const *sets, size_t nsets,
+                        const char *engine, double tol, dv_search *out, dv_error *err);
+
+/* the failure mode of a probe: "NaN", "silent reset", "energy blow-up",
+ * "sinks", "lost contact", "falls", "drifts" (exceeds the error), "error" */
+const char *dv_search_failure_mode(const dv_probe *p);
+
+#endif

@@ -1,0 +1,260 @@
+/* dv_sweep: grids of settings run in a pool of processes over shared memory. */
+#include "search_sweep.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "exec_pool.h"
+#include "run_scenario.h"
+#include "scenario.h"
+#include "run_trajectory.h"
+
+int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err) {
+  const char *eq = strchr(spec, '=');
+  memset(out, 0, sizeof *out);
+  if (!eq || eq == spec || !eq[1])
+    return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
+  const int bare = memchr(spec, '.', (size_t)(eq - spec)) == NULL;
+  snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "", bare ? engine : "",
+           bare ? "." : "", (int)(eq - spec), spec);
+  const char *list = eq + 1, *dots = strstr(list, "..");
+  if (dots) { /* a..b:n on a log scale */
+    char first[64], *end;
+    snprintf(first, sizeof first, "%.*s", (int)(dots - list), list); /* "1..40": not "1." */
+    double a = strtod(first, &end);
+    if (*end) a = NAN;
+    const double b = strtod(dots + 2, &end);
+    const long n = (*end == ':') ? strtol(end + 1, &end, 10) : 0;
+    if (*end || !(a > 0.0) || !(b > 0.0) || n < 2 || n > DV_SWEEP_MAX_VALUES)
+      return dv_fail(err, DV_EINPUT, "--vary %s: a range is a..b:n with a, b > 0 and 2 <= n <= %d",
+                     spec, DV_SWEEP_MAX_VALUES);
+    for (long i = 0; i < n; i++)
+      snprintf(out->values[i], sizeof out->values[i], "%.6g",
+               a * pow(b / a, (double)i / (double)(n - 1)));
+    out->n = (size_t)n;
+    return DV_OK;
+  }
+  char buf[2048];
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+    if (out->n == DV_SWEEP_MAX_VALUES)
+      return dv_fail(err, DV_EINPUT, "--vary %s: at most %d values", spec, DV_SWEEP_MAX_VALUES);
+    snprintf(out->values[out->n++], sizeof out->values[0], "%s", tok);
+  }
+  return out->n ? DV_OK : dv_fail(err, DV_EINPUT, "--vary %s: no values", spec);
+}
+
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int discard(void *ctx, const dv_sample *s) {
+  return 0;
+}
+
+static int cmp_double(const void *a, const void *b) {
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* the median wall time of the engine alone, first run given */
+static double median_wall(const dv_engine_type *e, const dv_scenario *sc, double first) {
+  double w[5] = {first};
+  for (int i = 1; i < 5; i++) {
+    dv_engine_stats st;
+    const double t0 = now();
+    dv_run_collect(e, sc, discard, NULL, &st, NULL);
+    w[i] = now() - t0;
+  }
+  qsort(w, 5, sizeof w[0], cmp_double);
+  return w[2];
+}
+
+typedef struct job {
+  const char *path;
+  const char *const *sets;
+  size_t nsets;
+  const dv_engine_type *engine;
+  const dv_vary *vary;
+  size_t nvary;
+} job;
+
+/* the k-th point of the grid: values and the overrides that set them */
+static void point_values(const job *jb, size_t k, dv_sweep_point *pt, char (*over)[160]) {
+  for (size_t v = jb->nvary; v-- > 0;) {
+    const dv_vary *vy = &jb->vary[v];
+    snprintf(pt->values[v], sizeof pt->values[v], "%s", vy->values[k % vy->n]);
+    snprintf(over[v], sizeof over[v], "%s=%s", vy->key, vy->values[k % vy->n]);
+    k /= vy->n;
+  }
+}
+
+/* run one point: the scenario with sets and then over[0..nover) */
+static void run_overrides(const job *jb, const char *const *over, size_t nover,
+                          dv_sweep_point *pt) {
+  static dv_scenario sc, ref;
+  const char *sets[64 + DV_SWEEP_MAX_VARY];
+  dv_error err = {{0}};
+  size_t nsets = 0;
+  for (size_t i = 0; i < jb->nsets && nsets < 64; i++) sets[nsets++] = jb->sets[i];
+  for (size_t v = 0; v < nover && v < DV_SWEEP_MAX_VARY; v++) sets[nsets++] = over[v];
+  snprintf(pt->outcome, sizeof pt->outcome, "invalid");
+  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
+  if (dv_scenario_load(jb->path, sets, nsets, &sc, &err)) {
+    snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
+    return;
+  }
+  const dv_scenario *ref_sc = NULL;
+  if (jb->engine == &dv_engine_reduced || jb->engine == &dv_engine_matched) {
+    dv_scenario_load(jb->path, jb->sets, jb->nsets, &ref, &err);
+    snprintf(ref.reduced.integrator, sizeof ref.reduced.integrator, "gsl-rk8pd-stepped");
+    ref.reduced.rtol = 1e-14;
+    ref.reduced.atol = 1e-16;
+    ref_sc = &ref;
+  }
+  static dv_comparison c;
+  const dv_engine_type *engines[1] = {jb->engine};
+  if (dv_run_scenario(&sc, ref_sc, engines, 1, &c, &err)) {
+    snprintf(pt->outcome, sizeof pt->outcome, "error");
+    snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
+    dv_run_comparison_free(&c);
+    return;
+  }
+  const dv_engine_result *r = &c.r[0];
+  const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
+  pt->timed_runs = r->wall_s < 0.2 ? 5 : 1;
+  const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, &sc, r->wall_s) : r->wall_s;
+  memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
+  pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
+  pt->wall_per_sim_s = sim > 0.0 ? wall / sim : NAN;
+  pt->steps = r->stats.steps;
+  pt->ok = strcmp(r->verdict, "diverged") && strcmp(r->verdict, "lost contact") &&
+           strcmp(r->verdict, "error");
+  snprintf(pt->outcome, sizeof pt->outcome, "%s", r->verdict);
+  snprintf(pt->detail, sizeof pt->detail, "%.191s", r->stats.detail);
+  dv_run_comparison_free(&c);
+}
+
+static void run_point(const job *jb, size_t k, dv_sweep_point *pt);
+
+typedef struct checkpoint_ctx {
+  const job *jb;
+  dv_sweep *out;
+  dv_sweep_point *pts;
+  size_t n;
+  const char *dir;
+} checkpoint_ctx;
+
+/* dv_exec_mpi_farm's task: one point */
+static void farm_point(size_t k, void *result, void *ctx) {
+  const checkpoint_ctx *ck = ctx;
+  run_point(ck->jb, k, result);
+}
+
+/* rank 0, after every result: the tables so far, so a job killed by a dying
+ * rank still leaves what finished (points not run say "missing") */
+static void checkpoint(size_t k, void *ctx) {
+  checkpoint_ctx *ck = ctx;
+  ck->out->p = ck->pts;
+  ck->out->n = ck->n;
+  dv_search_sweep_write_tables(ck->dir, ck->out, NULL);
+  ck->out->p = NULL;
+  ck->out->n = 0;
+}
+
+static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
+  char over[DV_SWEEP_MAX_VARY][160];
+  const char *ptrs[DV_SWEEP_MAX_VARY];
+  memset(pt, 0, sizeof *pt);
+  point_values(jb, k, pt, over);
+  for (size_t v = 0; v < jb->nvary; v++) ptrs[v] = over[v];
+  run_overrides(jb, ptrs, jb->nvary, pt);
+}
+
+int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nsets, const char *engine,
+                   const char *const *overrides, size_t n, dv_sweep_point *out, dv_error *err) {
+  const dv_engine_type *e = dv_engine_find(engine);
+  if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
+  const job jb = {path, sets, nsets, e, NULL, 0};
+  memset(out, 0, sizeof *out);
+  run_overrides(&jb, overrides, n, out);
+  return DV_OK;
+}
+
+int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets, const char *engine,
+                 const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
+  const char *checkpoint_dir = out->checkpoint_dir;
+  memset(out, 0, sizeof *out);
+  out->checkpoint_dir = checkpoint_dir;
+  const dv_engine_type *e = dv_engine_find(engine);
+  if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
+  if (nvary > DV_SWEEP_MAX_VARY)
+    return dv_fail(err, DV_EINPUT, "at most %d --vary", DV_SWEEP_MAX_VARY);
+  size_t n = 1;
+  for (size_t v = 0; v < nvary; v++) n *= vary[v].n;
+  if (n > DV_SWEEP_MAX_POINTS)
+    return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
+  static dv_scenario sc;
+  if (dv_scenario_load(path, sets, nsets, &sc, err)) return DV_EINPUT;
+  snprintf(out->scenario, sizeof out->scenario, "%s", sc.name);
+  snprintf(out->engine, sizeof out->engine, "%s", engine);
+  out->nvary = nvary;
+  memcpy(out->vary, vary, nvary * sizeof *vary);
+  dv_sweep_point *pts = calloc(n, sizeof *pts);
+  if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
+  const job jb = {path, sets, nsets, e, vary, nvary};
+  checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
+  /* under mpirun, rank 0 keeps the tables current as results arrive */
+  const int pool = dv_exec_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs,
+                               dv_exec_mpi_size() > 1 && checkpoint_dir ? checkpoint : NULL);
+  if (pool == 1 || pool < 0) { /* a worker rank: rank 0 has the results */
+    free(pts);
+    return pool == 1 ? DV_EVENT : dv_fail(err, DV_ESYSTEM, "out of memory");
+  }
+  out->interrupted = pool == 2;
+  out->p = pts;
+  out->n = n;
+  dv_search_pareto(out->p, n);
+  return DV_OK;
+}
+
+void dv_search_sweep_free(dv_sweep *s) {
+  if (!s) return;
+  free(s->p);
+  s->p = NULL;
+  s->n = 0;
+}
+
+void dv_search_pareto(dv_sweep_point *p, size_t n) {
+  for (size_t i = 0; i < n; i++) {
+    const double e = p[i].metric[DV_THETA_MAX_ERR], c = p[i].wall_per_sim_s;
+    p[i].pareto = p[i].ok && isfinite(e) && isfinite(c);
+    for (size_t j = 0; j < n && p[i].pareto; j++) {
+      const double ej = p[j].metric[DV_THETA_MAX_ERR], cj = p[j].wall_per_sim_s;
+      if (j != i && p[j].ok && ej <= e && cj <= c && (ej < e || cj < c)) p[i].pareto = 0;
+    }
+  }
+}
+
+double dv_search_fit_order(const double *h, const double *err, size_t n) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  size_t m = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!(h[i] > 0.0) || !(err[i] > 0.0) || !isfinite(err[i])) continue;
+    const double x = log(h[i]), y = log(err[i]);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+    m++;
+  }
+  const double d = (double)m * sxx - sx * sx;
+  return (m < 2 || d == 0.0) ? NAN : ((double)m * sxy - sx * sy) / d;
+}

@@ -1,0 +1,87 @@
+/* dv_sweep: speed against error over a grid of engine settings.
+ *
+ * A sweep varies settings of one engine ("key=v1,v2,..." or, on a log scale,
+ * "key=a..b:n"; a key without a section means [engines.ENGINE]) over the
+ * cartesian product of the lists. Every point re-reads the scenario with the
+ * point's settings (so every value is validated like a scenario key), runs
+ * the engine against its reference (dv_run.h) and records the metrics and
+ * the cost: wall-clock seconds per simulated second, the median of five runs
+ * where one run is shorter than 0.2 s. When the engine is a reference itself
+ * (reduced, matched), its reference is the reduced solver stepping onto every
+ * sample at rtol 1e-14. Points run in up to jobs processes, each taking the
+ * next point as it finishes one.
+ */
+#ifndef DV_SWEEP_H
+#define DV_SWEEP_H
+
+#include <stddef.h>
+
+#include "run_compare.h"
+#include "dv_error.h"
+
+#define DV_SWEEP_MAX_VARY 4
+#define DV_SWEEP_MAX_VALUES 64
+#define DV_SWEEP_MAX_POINTS 4096
+
+typedef struct dv_vary {
+  char key[96]; /* section.key */
+  size_t n;
+  char values[DV_SWEEP_MAX_VALUES][32];
+} dv_vary;
+
+typedef struct dv_sweep_point {
+  char values[DV_SWEEP_MAX_VARY][32]; /* this point's value of each varied key */
+  double metric[DV_NMETRICS];         /* against the engine's reference */
+  double theta_thin;                  /* theta_max_err against the thin disk */
+  double wall_per_sim_s;              /* s per simulated s (median where repeated) */
+  int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */
+  long steps;
+  int ok;     /* ran through its compared window */
+  int pareto; /* no other ok point is both cheaper and more accurate */
+  char outcome[32];
+  char detail[192];
+} dv_sweep_point;
+
+typedef struct dv_sweep {
+  char scenario[64]; /* scenario name */
+  char engine[32];
+  size_t nvary;
+  dv_vary vary[DV_SWEEP_MAX_VARY];
+  size_t n;
+  dv_sweep_point *p;          /* n points, the first key varying slowest */
+  int interrupted;            /* under MPI: stopped early, points "missing" */
+  const char *checkpoint_dir; /* under MPI: tables rewritten after every result */
+} dv_sweep;
+
+/* parse "key=v1,v2" or "key=a..b:n" for engine into out */
+int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err);
+
+/* run the sweep; sets are extra section.key=value overrides for every point.
+ * Under mpirun the ranks share the points: rank 0 gets the results, the
+ * other ranks return DV_EVENT. */
+int dv_search_sweep_run(const char *scenario_path, const char *const *sets, size_t nsets,
+                 const char *engine, const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out,
+                 dv_error *err);
+
+void dv_search_sweep_free(dv_sweep *s); /* NULL-safe */
+
+/* one run in this process with the given key=value overrides (section.key) */
+int dv_search_sweep_probe(const char *scenario_path, const char *const *sets, size_t nsets,
+                   const char *engine, const char *const *overrides, size_t n, dv_sweep_point *out,
+                   dv_error *err);
+
+/* mark the Pareto points (theta_max_err against wall_per_sim_s) among ok points */
+void dv_search_pareto(dv_sweep_point *p, size_t n);
+
+/* least-squares slope of log(err) against log(h) over the points with
+ * err > 0 and h > 0: the observed order of convergence (NAN below 2 points) */
+double dv_search_fit_order(const double *h, const double *err, size_t n);
+
+/* sweep.csv, sweep.json and the plots into the existing dir; reference is an
+ * optional sweep of the reference's own integrators drawn on the same axes */
+int dv_search_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *reference, dv_error *err);
+
+/* sweep.csv and sweep.json only (no plots): the checkpoint written under MPI */
+int dv_search_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err);
+
+#endif
