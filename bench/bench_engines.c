@@ -19,12 +19,11 @@ static double now(void) {
 
 static dv_scenario circle(void) {
   dv_scenario sc;
-  memset(&sc, 0, sizeof sc);
+  dv_engine_init_scenario(&sc);
   snprintf(sc.name, sizeof sc.name, "steady circle");
   sc.duration = 5.0;
   sc.output_dt = 0.01;
   sc.disk = red_disk_uniform(0.1, 1.0, 9.81);
-  dv_scenario_defaults(&sc);
   const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};
   memcpy(sc.initial, y, sizeof y);
   return sc;
@@ -66,10 +65,7 @@ int main(void) {
   for (int v = 0; v < 5; v++) {
     dv_scenario sc = circle();
     const dv_engine_type *e = v < 3 ? &dv_engine_mujoco : &dv_engine_ode;
-    if (v < 3)
-      sc.mujoco.integrator = v;
-    else
-      sc.ode.stepper = v - 3;
+    dv_scenario_set(&sc, e->name, e->search->choice_key, v < 3 ? mj[v] : ode[v - 3], NULL);
     long steps;
     const double bare = time_run(e, &sc, 0, &steps);
     const double sampled = time_run(e, &sc, 1, &steps);

@@ -59,7 +59,7 @@ int main(int argc, char **argv) {
     char o[96];
     const char *over[1] = {o};
     snprintf(o, sizeof o, "engines.mujoco.timestep=%s", s.p[k].values[0]);
-    dv_scenario_load(shortc, over, 1, &sc, &err);
+    dv_engine_load_scenario(shortc, over, 1, &sc, &err);
     dv_engine_stats st;
     const double t0 = now();
     dv_run_collect(&dv_engine_mujoco, &sc, discard, NULL, &st, &err);

@@ -35,21 +35,22 @@ int dv_cli_engines(int argc, char **argv) {
     return DV_EXIT_OK;
   }
   for (const dv_engine_type *const *e = dv_engines; *e; e++) {
-    char section[64];
     printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
-    snprintf(section, sizeof section, "engines.%s", (*e)->name);
-    for (size_t i = 0; i < dv_nsetting_specs; i++) {
-      const dv_setting_spec *sp = &dv_setting_specs[i];
-      if (strcmp(sp->section, section) != 0) continue;
+    for (size_t i = 0; (*e)->settings && i < (*e)->settings->nspecs; i++) {
+      const dv_setting_spec *sp = &(*e)->settings->specs[i];
+      char range[96];
       printf("    %-20s default ", sp->key);
-      if (sp->choices) {
-        printf("%-10s (", sp->choices[(int)sp->def]);
-        for (size_t j = 0; sp->choices[j]; j++) printf("%s%s", j ? ", " : "", sp->choices[j]);
+      if (sp->type == DV_SETTING_CHOICE) {
+        printf("%-10s (", dv_setting_choice(sp, (size_t)sp->def));
+        for (size_t j = 0; dv_setting_choice(sp, j); j++)
+          printf("%s%s", j ? ", " : "", dv_setting_choice(sp, j));
         printf(")");
       } else {
-        printf("%-10g [%g, %g]", sp->def, sp->lo, sp->hi);
+        dv_setting_range_text(sp, range, sizeof range);
+        printf("%-10g %s", sp->def, range);
       }
-      printf("%s%s\n", sp->doc[0] ? "  " : "", sp->doc);
+      printf("%s%s%s%s\n", sp->unit[0] || sp->doc[0] ? "  " : "", sp->unit,
+             sp->unit[0] && sp->doc[0] ? ", " : "", sp->doc);
     }
   }
   printf("\nreference integrators (default %s):\n", red_stepper_default()->name);

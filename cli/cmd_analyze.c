@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "dv_reference.h"
 #include "run_meta.h"
 #include "scenario.h"
 #include "red_invariants.h"
@@ -37,7 +38,7 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   an->crit = red_upright_critical_spin(d);
   if (red_invariants(d, y, &an->f1, &an->f2))
     return dv_fail(err, DV_ENUMERIC, "f1, f2 could not be evaluated at theta = %g", y[RED_TH]);
-  int status = red_theta_range(d, y, sc->reduced.theta_limit, an->range, &an->falls, err);
+  int status = red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, err);
   if (status) return status;
   an->steady = red_is_steady(d, y, 1e-9);
   if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
@@ -127,7 +128,7 @@ int dv_cli_analyze(int argc, char **argv) {
   static dv_scenario sc;
   dv_error err = {{0}};
   analysis an;
-  if (dv_scenario_load(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
+  if (dv_engine_load_scenario(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }

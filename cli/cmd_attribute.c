@@ -63,25 +63,25 @@ int dv_cli_attribute(int argc, char **argv) {
     return dv_cli_usage_error("attribute", "needs SCENARIO and --engine mujoco or ode");
   static dv_scenario sc;
   dv_error err = {{0}};
-  if (dv_scenario_load(a.scenario, a.sets, (size_t)a.nsets, &sc, &err))
+  if (dv_engine_load_scenario(a.scenario, a.sets, (size_t)a.nsets, &sc, &err))
     return fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR;
   const int mj = !strcmp(engine, "mujoco");
-  const double dt = mj ? sc.mujoco.timestep : sc.ode.timestep;
-  const double h = mj ? (sc.mujoco.geom ? 0.0 : sc.mujoco.half_thickness) : sc.ode.half_thickness;
+  const double dt = mj ? dv_scenario_get(&sc, "mujoco", "timestep") : dv_scenario_get(&sc, "ode", "timestep");
+  const double h = mj ? (dv_scenario_get(&sc, "mujoco", "geom") ? 0.0 : dv_scenario_get(&sc, "mujoco", "half_thickness")) : dv_scenario_get(&sc, "ode", "half_thickness");
   const probe_set ps = {a.scenario, a.sets, (size_t)a.nsets, engine};
   char s1[96], s2[96], s4[96], stiff[96], fric[96], tc1[96];
   snprintf(s1, sizeof s1, "engines.%s.timestep=%.9g", engine, dt);
   snprintf(s2, sizeof s2, "engines.%s.timestep=%.9g", engine, dt / 2);
   snprintf(s4, sizeof s4, "engines.%s.timestep=%.9g", engine, dt / 4);
   /* MuJoCo's contact time constant follows the step where it is clamped to 2 dt */
-  const double tc = mj ? sc.mujoco.solref_timeconst : 0.0;
+  const double tc = mj ? dv_scenario_get(&sc, "mujoco", "solref_timeconst") : 0.0;
   snprintf(tc1, sizeof tc1, "engines.mujoco.solref_timeconst=%.9g", fmax(tc, 2 * dt));
   if (mj)
     snprintf(stiff, sizeof stiff, "engines.mujoco.solref_timeconst=%.9g", fmax(tc, 2 * dt) / 4);
   else
-    snprintf(stiff, sizeof stiff, "engines.ode.soft_cfm=%.9g", sc.ode.soft_cfm / 100);
+    snprintf(stiff, sizeof stiff, "engines.ode.soft_cfm=%.9g", dv_scenario_get(&sc, "ode", "soft_cfm") / 100);
   snprintf(fric, sizeof fric, "engines.%s.friction=%.9g", engine,
-           10 * (mj ? sc.mujoco.friction : sc.ode.friction));
+           10 * (mj ? dv_scenario_get(&sc, "mujoco", "friction") : dv_scenario_get(&sc, "ode", "friction")));
   const double e_thin = err_of(&ps, s1, mj ? tc1 : NULL, NULL, 1);
   const double e_ref = err_of(&ps, s1, mj ? tc1 : NULL, NULL, 0);
   const double e2 = err_of(&ps, s2, mj ? tc1 : NULL, NULL, 0);

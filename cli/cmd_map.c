@@ -52,13 +52,14 @@ static double value(const dv_vary *v, size_t i) {
 /* the scenario of one cell */
 static void cell_scenario(const map *mp, size_t ic, size_t is, dv_scenario *sc) {
   memset(sc, 0, sizeof *sc);
-  dv_scenario_defaults(sc);
+  dv_engine_init_scenario(sc);
   snprintf(sc->name, sizeof sc->name, "map");
   sc->duration = mp->duration;
   sc->output_dt = 0.01;
   sc->disk = red_disk_uniform(0.1, 1.0, 9.81);
   sc->disk.C = value(mp->c, ic) * sc->disk.m * sc->disk.r * sc->disk.r;
-  sc->ode.half_thickness = 1e-6; /* as thin as ODE stays stable: upright cylinders rock */
+  /* as thin as ODE stays stable: upright cylinders rock */
+  dv_scenario_set_number(sc, "ode", "half_thickness", 1e-6, NULL);
   sc->initial[RED_TH] = M_PI / 2;
   sc->initial[RED_VTH] = 0.05;
   sc->initial[RED_VPS] = value(mp->spin, is);

@@ -73,7 +73,7 @@ int dv_cli_simulate(int argc, char **argv) {
 
   static dv_scenario sc;
   dv_error err = {{0}};
-  if (dv_scenario_load(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
+  if (dv_engine_load_scenario(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }

@@ -129,7 +129,7 @@ static int load_all(const char *cmd, suite_args *a, dv_scenario *scs, size_t *n)
   for (size_t i = 0; i < nfiles; i++) {
     dv_error err = {{0}};
     if (code == DV_EXIT_OK &&
-        dv_scenario_load(files[i], a->common.sets, (size_t)a->common.nsets, &scs[*n], &err)) {
+        dv_engine_load_scenario(files[i], a->common.sets, (size_t)a->common.nsets, &scs[*n], &err)) {
       fprintf(stderr, "%s\n", err.msg);
       code = DV_EXIT_ERROR;
     }

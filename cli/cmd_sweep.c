@@ -103,7 +103,7 @@ int dv_cli_sweep(int argc, char **argv) {
       snprintf(label + strlen(label), sizeof label - strlen(label), "%s%s", v ? " " : "",
                s.p[k].values[v]);
     printf("%-40s %12.3e %12.4g %8s %s\n", label, s.p[k].metric[DV_THETA_MAX_ERR],
-           s.p[k].wall_per_sim_s, s.p[k].pareto ? "*" : "", s.p[k].outcome);
+           s.p[k].wall_per_sim_s, s.p[k].pareto ? "*" : "", dv_run_verdict_name(s.p[k].verdict));
   }
   const int interrupted = s.interrupted;
   dv_search_sweep_free(&s);
@@ -152,7 +152,7 @@ int dv_cli_best(int argc, char **argv) {
   for (size_t i = 0; i < s.nprobes; i++) {
     const dv_probe *p = &s.probes[i];
     printf("%-20s %12.4g %12.3e %12.4g %s%s\n", p->choice, p->step,
-           p->point.metric[DV_THETA_MAX_ERR], p->point.wall_per_sim_s, p->point.outcome,
+           p->point.metric[DV_THETA_MAX_ERR], p->point.wall_per_sim_s, dv_run_verdict_name(p->point.verdict),
            p->pass ? "" : " (fails)");
   }
   if (s.best < 0) {

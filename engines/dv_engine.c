@@ -2,6 +2,7 @@
 #include "dv_engine.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "dv_pose.h"
@@ -13,6 +14,87 @@ const dv_engine_type *dv_engine_find(const char *name) {
   for (const dv_engine_type *const *e = dv_engines; *e; e++)
     if (strcmp((*e)->name, name) == 0) return *e;
   return NULL;
+}
+
+const dv_engine_type *dv_engine_of_role(dv_engine_role role) {
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+    if ((*e)->role == role) return *e;
+  return NULL;
+}
+
+double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc) {
+  return engine->half_thickness ? engine->half_thickness(sc) : 0.0;
+}
+
+/* every engine's settings table, NULL-terminated */
+static void tables(const dv_settings_section **out) {
+  size_t n = 0;
+  for (const dv_engine_type *const *e = dv_engines; *e && n < DV_MAX_ENGINE_SECTIONS; e++)
+    if ((*e)->settings) out[n++] = (*e)->settings;
+  out[n] = NULL;
+}
+
+int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
+                            dv_scenario *sc, dv_error *err) {
+  const dv_settings_section *t[DV_MAX_ENGINE_SECTIONS + 1];
+  tables(t);
+  return dv_scenario_load(t, path, overrides, noverrides, sc, err);
+}
+
+void dv_engine_init_scenario(dv_scenario *sc) {
+  const dv_settings_section *t[DV_MAX_ENGINE_SECTIONS + 1];
+  tables(t);
+  dv_scenario_init(sc, t);
+}
+
+int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max,
+                         dv_error *err) {
+  char buf[256];
+  size_t n = 0;
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
+       tok = strtok_r(NULL, ", ", &save)) {
+    const dv_engine_type *e = dv_engine_find(tok);
+    if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s' (see diskval engines)", tok);
+    if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
+    engines[n++] = e;
+  }
+  if (!n) return dv_fail(err, DV_EINPUT, "no engine in '%s'", list);
+  engines[n] = NULL;
+  return DV_OK;
+}
+
+int dv_engine_check_step(const dv_scenario *sc, const char *engine, double dt,
+                         dv_setting_issue *issue) {
+  if (!(dt > sc->output_dt * (1.0 + 1e-12))) return 0;
+  issue->section = engine;
+  issue->key = "timestep";
+  snprintf(issue->what, sizeof issue->what, "%g s is longer than output_dt %g s", dt,
+           sc->output_dt);
+  return -1;
+}
+
+const char *dv_failure_name(dv_failure failure) {
+  static const char *const names[DV_NFAILURES] = {
+      [DV_FAILURE_NONE] = "none",          [DV_FAILURE_NAN] = "NaN",
+      [DV_FAILURE_RESET] = "silent reset", [DV_FAILURE_ENERGY] = "energy blow-up",
+      [DV_FAILURE_SANK] = "sinks",         [DV_FAILURE_LOST_CONTACT] = "lost contact",
+      [DV_FAILURE_LIBRARY] = "error",      [DV_FAILURE_SETUP] = "error"};
+  return (unsigned)failure < DV_NFAILURES ? names[failure] : "unknown";
+}
+
+dv_outcome dv_failure_outcome(dv_failure failure) {
+  switch (failure) {
+    case DV_FAILURE_NONE:
+      return DV_OUTCOME_COMPLETED;
+    case DV_FAILURE_LOST_CONTACT:
+      return DV_OUTCOME_LOST_CONTACT;
+    case DV_FAILURE_LIBRARY:
+    case DV_FAILURE_SETUP:
+      return DV_OUTCOME_ERROR;
+    default:
+      return DV_OUTCOME_DIVERGED;
+  }
 }
 
 const char *dv_outcome_name(dv_outcome outcome) {

@@ -39,6 +39,25 @@ typedef enum dv_outcome {
 
 const char *dv_outcome_name(dv_outcome outcome);
 
+/* why a run failed, as the engine saw it */
+typedef enum dv_failure {
+  DV_FAILURE_NONE = 0,
+  DV_FAILURE_NAN,          /* a non-finite state */
+  DV_FAILURE_RESET,        /* the library replaced a bad state silently */
+  DV_FAILURE_ENERGY,       /* the energy ran away */
+  DV_FAILURE_SANK,         /* the disk sank into the ground */
+  DV_FAILURE_LOST_CONTACT, /* the disk left the ground */
+  DV_FAILURE_LIBRARY,      /* a library error */
+  DV_FAILURE_SETUP,        /* a model or initial state the engine cannot take */
+  DV_NFAILURES
+} dv_failure;
+
+/* "NaN", "silent reset", "energy blow-up", "sinks", "lost contact", "error", ... */
+const char *dv_failure_name(dv_failure failure);
+
+/* the outcome a failure ends a run with */
+dv_outcome dv_failure_outcome(dv_failure failure);
+
 typedef struct dv_engine_stats {
   long steps;             /* internal steps taken */
   long rhs_evals;         /* right-hand side evaluations (reference), 0 for contact engines */
@@ -47,12 +66,37 @@ typedef struct dv_engine_stats {
   int contacts_max;       /* most contact points at a sample */
   long warnings;          /* library warnings counted (MuJoCo) */
   dv_outcome outcome;
-  char detail[256]; /* why the run ended, when not completed */
+  dv_failure failure; /* DV_FAILURE_NONE unless the run failed */
+  char detail[256];   /* why the run ended, when not completed */
 } dv_engine_stats;
+
+/* what an engine is for */
+typedef enum dv_engine_role {
+  DV_ENGINE_CONTACT = 0,      /* a contact simulation, compared with the references */
+  DV_ENGINE_THIN_REFERENCE,   /* the thin disk: the reference of every comparison */
+  DV_ENGINE_MATCHED_REFERENCE /* the disk of a stand-in's thickness, rolling */
+} dv_engine_role;
+
+/* what best, stability and sweeps vary: a discrete choice and a step */
+typedef struct dv_engine_search {
+  const char *section;    /* engine whose [engines.NAME] holds the keys */
+  const char *choice_key; /* e.g. "integrator" */
+  const char *step_key;   /* e.g. "timestep", "rtol" */
+  double lo, hi;          /* range of the step searched */
+} dv_engine_search;
 
 typedef struct dv_engine_type {
   const char *name;        /* as given to --engine */
   const char *description; /* one line */
+  dv_engine_role role;
+  const dv_settings_section *settings; /* [engines.NAME] */
+  const dv_engine_search *search;      /* NULL: nothing to search */
+  /* half-thickness (m) of the body it simulates in sc: 0 for the thin disk or a
+   * smooth stand-in compared with it; NULL: 0 */
+  double (*half_thickness)(const dv_scenario *sc);
+  /* a reference: make sc's reference settings tighter than any compared with
+   * (the reference of a sweep over a reference's own settings); NULL otherwise */
+  int (*tighten)(dv_scenario *sc, dv_error *err);
   const char *(*version)(void);
   void *(*alloc)(const dv_scenario *sc, dv_error *err);
   int (*reset)(void *engine, const double state[RED_NSTATE], dv_error *err);
@@ -72,6 +116,27 @@ extern const dv_engine_type *const dv_engines[];
 
 /* the engine called name, or NULL */
 const dv_engine_type *dv_engine_find(const char *name);
+
+/* the first engine of role (every role has one) */
+const dv_engine_type *dv_engine_of_role(dv_engine_role role);
+
+/* the half-thickness of engine's body in sc (0: thin) */
+double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc);
+
+/* sc, loaded against every engine's settings table (scenario.h) */
+int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
+                            dv_scenario *sc, dv_error *err);
+
+/* a scenario with every engine's settings at their defaults (for code) */
+void dv_engine_init_scenario(dv_scenario *sc);
+
+/* parse "mujoco,ode" into engines (NULL-terminated, at most max - 1) */
+int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max,
+                         dv_error *err);
+
+/* the section check shared by the stepping engines: a step no longer than output_dt */
+int dv_engine_check_step(const dv_scenario *sc, const char *engine, double dt,
+                         dv_setting_issue *issue);
 
 /* fill the sample's derived fields (contact, energy, slip, penetration) from a
  * pose and geometry; used by the contact engines */

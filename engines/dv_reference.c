@@ -27,3 +27,20 @@ void dv_reference_stats(const red_integrator *in, int event, const char *detail,
   out->outcome = event >= 0 ? DV_OUTCOME_EVENT : DV_OUTCOME_COMPLETED;
   if (event >= 0) snprintf(out->detail, sizeof out->detail, "%s", detail);
 }
+
+const dv_reduced_settings *dv_reference_settings(const dv_scenario *sc) {
+  return dv_scenario_settings(sc, dv_engine_reduced.name);
+}
+
+const dv_matched_settings *dv_matched_settings_of(const dv_scenario *sc) {
+  return dv_scenario_settings(sc, dv_engine_matched.name);
+}
+
+double dv_reference_valid_until(const dv_scenario *sc, const dv_sample *s, size_t n) {
+  const double mu = dv_matched_settings_of(sc)->friction;
+  for (size_t i = 0; i < n; i++) {
+    const double *F = s[i].force;
+    if (!(F[2] > 0.0) || hypot(F[0], F[1]) > mu * F[2]) return i ? s[i - 1].t : 0.0;
+  }
+  return INFINITY;
+}

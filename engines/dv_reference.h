@@ -6,6 +6,30 @@
 #include "red_rolling.h"
 #include "red_solver.h"
 
+/* [engines.reduced]: the reference solver's settings, table in engine_reduced.c */
+typedef struct dv_reduced_settings {
+  int integrator;     /* index into red_steppers */
+  double rtol, atol;  /* of the integrator */
+  double theta_limit; /* rad; every run ends where theta < limit or > pi - limit */
+} dv_reduced_settings;
+
+/* [engines.matched]: the geometry-matched reference, table in engine_matched.c */
+typedef struct dv_matched_settings {
+  double half_thickness; /* m, cylinder half-length matched to the engine's */
+  double friction;       /* the validity window ends where |F_h| > friction F_z */
+} dv_matched_settings;
+
+const dv_reduced_settings *dv_reference_settings(const dv_scenario *sc);
+
+/* what a search over a reference varies: its integrator and rtol */
+extern const dv_engine_search dv_reference_search;
+const dv_matched_settings *dv_matched_settings_of(const dv_scenario *sc);
+
+/* the end of the thin reference's validity along its samples: the last one
+ * before the rolling contact force turns away from the ground or leaves the
+ * friction cone of [engines.matched] friction; INFINITY when it never does */
+double dv_reference_valid_until(const dv_scenario *sc, const dv_sample *s, size_t n);
+
 /* a sample from a rolling state: canonical state, contact point, energy and
  * the contact force rolling needs (NaN where undefined); no slip, no depth */
 void dv_reference_sample(const red_rolling *rr, const double s[RR_NSTATE], dv_sample *out);

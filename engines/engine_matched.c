@@ -31,14 +31,14 @@ static void matched_free(void *p) {
 }
 
 static void *matched_alloc(const dv_scenario *sc, dv_error *err) {
+  const dv_reduced_settings *r = dv_reference_settings(sc);
+  const dv_matched_settings *s = dv_matched_settings_of(sc);
   matched_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
-  red_rolling_init(&e->rr, &sc->disk, sc->matched.half_thickness, sc->matched.friction,
-                   sc->reduced.theta_limit);
+  red_rolling_init(&e->rr, &sc->disk, s->half_thickness, s->friction, r->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
-  const red_stepper_type *T = red_stepper_find(sc->reduced.integrator);
-  e->in = T ? red_integrator_alloc(&e->rr.sys, T, sc->reduced.rtol, sc->reduced.atol, err) : NULL;
+  e->in = red_integrator_alloc(&e->rr.sys, red_steppers[r->integrator], r->rtol, r->atol, err);
   if (!e->in) return matched_free(e), NULL;
   return e;
 }
@@ -73,12 +73,39 @@ static void matched_stats(const void *p, dv_engine_stats *out) {
   dv_reference_stats(e->in, e->event, detail, out);
 }
 
+#define AT(field) offsetof(dv_matched_settings, field)
+
+static const dv_setting_spec KEYS[] = {
+    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, 0.002, 0.0, 1.0, NULL, NULL, "m",
+     "half-thickness of the cylinder to match (0: the thin disk)"},
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "",
+     "friction coefficient that ends the validity window"},
+};
+
+static const dv_settings_section SETTINGS = {"matched", KEYS, sizeof KEYS / sizeof KEYS[0],
+                                             sizeof(dv_matched_settings), NULL};
+
+static double matched_half_thickness(const dv_scenario *sc) {
+  return dv_matched_settings_of(sc)->half_thickness;
+}
+
+static int matched_tighten(dv_scenario *sc, dv_error *err) {
+  return dv_engine_reduced.tighten(sc, err);
+}
+
 const dv_engine_type dv_engine_matched = {
-    "matched",
-    "reference for a disk of finite thickness (Newton-Euler rolling, validity window)",
-    matched_version,
-    matched_alloc,
-    matched_reset,
-    matched_advance,
-    matched_stats,
-    matched_free};
+    .name = "matched",
+    .description =
+        "reference for a disk of finite thickness (Newton-Euler rolling, validity window)",
+    .role = DV_ENGINE_MATCHED_REFERENCE,
+    .settings = &SETTINGS,
+    .search = &dv_reference_search,
+    .half_thickness = matched_half_thickness,
+    .tighten = matched_tighten,
+    .version = matched_version,
+    .alloc = matched_alloc,
+    .reset = matched_reset,
+    .advance = matched_advance,
+    .stats = matched_stats,
+    .free = matched_free,
+};

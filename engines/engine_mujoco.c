@@ -23,6 +23,76 @@
 
 #include "dv_engine.h"
 #include "dv_pose.h"
+#include "dv_reference.h"
+
+/* [engines.mujoco]: the defaults are the most accurate affordable settings
+ * measured (README, "Engine settings"), not MuJoCo's own */
+typedef struct mujoco_settings {
+  double timestep;                               /* s */
+  int integrator;                                /* 0 euler, 1 rk4, 2 implicit */
+  int cone;                                      /* 0 pyramidal, 1 elliptic */
+  double impratio;                               /* frictional-to-normal impedance ratio */
+  int solver;                                    /* 0 pgs, 1 cg, 2 newton */
+  double tolerance;                              /* solver tolerance */
+  int iterations;                                /* solver iterations */
+  int noslip_iterations;                         /* noslip solver iterations */
+  double solref_timeconst;                       /* s (MuJoCo raises it to >= 2 timestep) */
+  double solref_dampratio;                       /* 1: critical damping */
+  double solimp_dmin, solimp_dmax, solimp_width; /* impedance, width in m */
+  double friction;                               /* sliding friction coefficient */
+  int geom;                                      /* 0 cylinder, 1 ellipsoid */
+  double half_thickness; /* m: cylinder half-length or ellipsoid semi-axis */
+} mujoco_settings;
+
+static const char *const INTEGRATORS[] = {"euler", "rk4", "implicit", NULL};
+static const char *const CONES[] = {"pyramidal", "elliptic", NULL};
+static const char *const SOLVERS[] = {"pgs", "cg", "newton", NULL};
+static const char *const GEOMS[] = {"cylinder", "ellipsoid", NULL};
+
+#define AT(field) offsetof(mujoco_settings, field)
+#define NUM DV_SETTING_REAL, AT
+#define WHOLE DV_SETTING_INT, AT
+#define PICK DV_SETTING_CHOICE, AT
+
+static const dv_setting_spec KEYS[] = {
+    {"timestep", NUM(timestep), 0, 0, 2e-4, 1e-7, 0.1, NULL, NULL, "s", ""},
+    {"integrator", PICK(integrator), 0, 0, 1, 0, 2, INTEGRATORS, NULL, "", ""},
+    {"cone", PICK(cone), 0, 0, 1, 0, 1, CONES, NULL, "", "friction cone"},
+    {"impratio", NUM(impratio), 0, 0, 10.0, 1e-6, 1e6, NULL, NULL, "", ""},
+    {"solver", PICK(solver), 0, 0, 2, 0, 2, SOLVERS, NULL, "", ""},
+    {"tolerance", NUM(tolerance), 0, 0, 1e-10, 0.0, 1.0, NULL, NULL, "", "solver tolerance"},
+    {"iterations", WHOLE(iterations), 0, 0, 100, 1, 100000, NULL, NULL, "", "solver"},
+    {"noslip_iterations", WHOLE(noslip_iterations), 0, 0, 0, 0, 100000, NULL, NULL, "", ""},
+    {"solref_timeconst", NUM(solref_timeconst), 0, 0, 4e-4, 1e-7, 10.0, NULL, NULL, "s",
+     "raised by MuJoCo to >= 2 timestep"},
+    {"solref_dampratio", NUM(solref_dampratio), 0, 0, 1.0, 0.0, 100.0, NULL, NULL, "", ""},
+    {"solimp_dmin", NUM(solimp_dmin), 0, 0, 0.9, 0.0001, 0.9999, NULL, NULL, "", ""},
+    {"solimp_dmax", NUM(solimp_dmax), 0, 0, 0.95, 0.0001, 0.9999, NULL, NULL, "", ""},
+    {"solimp_width", NUM(solimp_width), 0, 0, 0.001, 0.0, 1.0, NULL, NULL, "m", ""},
+    {"friction", NUM(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "", "sliding coefficient"},
+    {"geom", PICK(geom), 0, 0, 1, 0, 1, GEOMS, NULL, "", "stand-in for the thin disk"},
+    {"half_thickness", NUM(half_thickness), 0, 0, 5e-4, 1e-6, 1.0, NULL, NULL, "m",
+     "cylinder half-length or ellipsoid semi-axis"},
+};
+
+static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
+  return dv_engine_check_step(sc, "mujoco", ((const mujoco_settings *)block)->timestep, issue);
+}
+
+static const dv_settings_section SETTINGS = {"mujoco", KEYS, sizeof KEYS / sizeof KEYS[0],
+                                             sizeof(mujoco_settings), mujoco_check};
+
+static const mujoco_settings *settings_of(const dv_scenario *sc) {
+  return dv_scenario_settings(sc, SETTINGS.name);
+}
+
+/* the ellipsoid is smooth and compared with the thin disk; the cylinder with its match */
+static double mujoco_half_thickness(const dv_scenario *sc) {
+  const mujoco_settings *s = settings_of(sc);
+  return s->geom == 0 ? s->half_thickness : 0.0;
+}
+
+static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02};
 
 #define LOST_CONTACT_TIME 0.05 /* s the lowest point may stay above the gap before lost_contact */
 
@@ -42,13 +112,14 @@ typedef struct mujoco_engine {
 } mujoco_engine;
 
 /* end the run: outcome, detail and the status every later call returns */
-__attribute__((format(printf, 3, 4))) static int end_run(mujoco_engine *e, dv_outcome outcome,
-                                                         const char *fmt, ...) {
+__attribute__((format(printf, 4, 5))) static int end_run(mujoco_engine *e, dv_outcome outcome,
+                                                         dv_failure failure, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(e->stats.detail, sizeof e->stats.detail, fmt, ap);
   va_end(ap);
   e->stats.outcome = outcome;
+  e->stats.failure = failure;
   e->status = outcome == DV_OUTCOME_EVENT   ? DV_EVENT
               : outcome == DV_OUTCOME_ERROR ? DV_ESYSTEM
                                             : DV_ENUMERIC;
@@ -103,10 +174,9 @@ static const char *mujoco_version(void) {
 
 /* the MJCF model of the scene; returns its length, or -1 if it did not fit */
 static int write_model(const dv_scenario *sc, char *xml, size_t size) {
-  static const char *const INTEGRATORS[] = {"Euler", "RK4", "implicit"};
-  static const char *const CONES[] = {"pyramidal", "elliptic"};
-  static const char *const SOLVERS[] = {"PGS", "CG", "Newton"};
-  const dv_mujoco_settings *s = &sc->mujoco;
+  static const char *const MJ_INTEGRATORS[] = {"Euler", "RK4", "implicit"};
+  static const char *const MJ_SOLVERS[] = {"PGS", "CG", "Newton"};
+  const mujoco_settings *s = settings_of(sc);
   const red_disk *k = &sc->disk;
   char size_attr[96];
   if (s->geom == 1)
@@ -132,8 +202,8 @@ static int write_model(const dv_scenario *sc, char *xml, size_t size) {
       "    </body>\n"
       "  </worldbody>\n"
       "</mujoco>\n",
-      s->timestep, -k->g, INTEGRATORS[s->integrator], CONES[s->cone], s->impratio,
-      SOLVERS[s->solver], s->tolerance, s->iterations, s->noslip_iterations, s->friction,
+      s->timestep, -k->g, MJ_INTEGRATORS[s->integrator], CONES[s->cone], s->impratio,
+      MJ_SOLVERS[s->solver], s->tolerance, s->iterations, s->noslip_iterations, s->friction,
       s->solref_timeconst, s->solref_dampratio, s->solimp_dmin, s->solimp_dmax, s->solimp_width,
       k->m, k->A, k->A, k->C, s->geom == 1 ? "ellipsoid" : "cylinder", size_attr);
   return n > 0 && (size_t)n < size ? n : -1;
@@ -193,11 +263,12 @@ static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
     goto cleanup;
   }
   e->disk = sc->disk;
-  e->geom = (dv_geometry){sc->mujoco.geom == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
-                          sc->mujoco.half_thickness};
-  e->gap = fmax(0.01 * sc->disk.r, 5.0 * sc->mujoco.solimp_width);
-  e->theta_limit = sc->reduced.theta_limit;
-  end_run(e, DV_OUTCOME_ERROR, "advance before reset");
+  const mujoco_settings *s = settings_of(sc);
+  e->geom = (dv_geometry){s->geom == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
+                          s->half_thickness};
+  e->gap = fmax(0.01 * sc->disk.r, 5.0 * s->solimp_width);
+  e->theta_limit = dv_reference_settings(sc)->theta_limit;
+  end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_SETUP, "advance before reset");
   result = e;
   e = NULL;
 cleanup:
@@ -234,22 +305,25 @@ static int check_state(mujoco_engine *e) {
   long bad;
   e->stats.warnings = warning_count(d, &bad);
   if (bad)
-    return end_run(e, DV_OUTCOME_DIVERGED,
+    return end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_RESET,
                    "MuJoCo reset a bad qpos/qvel/qacc at step %ld (t = %g s)", e->stats.steps,
                    e->stats.steps * e->m->opt.timestep);
   for (int i = 0; i < 7; i++)
     if (!isfinite(d->qpos[i]) || (i < 6 && !isfinite(d->qvel[i])))
-      return end_run(e, DV_OUTCOME_DIVERGED, "non-finite state at t = %g s", d->time);
+      return end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_NAN, "non-finite state at t = %g s",
+                     d->time);
   dv_pose p;
   double low[3], slip;
   read_pose(d, &p);
   /* runaway: E > E0 + |E0|/2 + m g r cannot come from a passive contact */
   const double energy = dv_pose_energy(&e->disk, &p);
   if (energy > e->e_max)
-    return end_run(e, DV_OUTCOME_DIVERGED, "energy %g J ran away (limit %g J)", energy, e->e_max);
+    return end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_ENERGY, "energy %g J ran away (limit %g J)",
+                   energy, e->e_max);
   /* n.z = cos(theta), n = R ez */
   if (fabs(p.R[8]) > cos(e->theta_limit))
-    return end_run(e, DV_OUTCOME_EVENT, "theta reached %s limit %g rad at t = %g s",
+    return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE,
+                   "theta reached %s limit %g rad at t = %g s",
                    p.R[8] > 0.0 ? "the lower" : "the upper",
                    p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, d->time);
   dv_pose_lowest_point(&e->geom, &p, low, &slip);
@@ -258,7 +332,7 @@ static int check_state(mujoco_engine *e) {
   else if (e->off_since < 0.0)
     e->off_since = d->time;
   else if (d->time - e->off_since > LOST_CONTACT_TIME)
-    return end_run(e, DV_OUTCOME_LOST_CONTACT,
+    return end_run(e, DV_OUTCOME_LOST_CONTACT, DV_FAILURE_LOST_CONTACT,
                    "the lowest point was %g m above the ground, off it since t = %g s", low[2],
                    e->off_since);
   return DV_OK;
@@ -282,7 +356,8 @@ static int mujoco_reset(void *p, const double state[RED_NSTATE], dv_error *err) 
   memcpy(e->prev, state, sizeof e->prev);
   for (int i = 0; i < RED_NSTATE; i++)
     if (!isfinite(state[i])) {
-      end_run(e, DV_OUTCOME_DIVERGED, "non-finite initial state (component %d)", i);
+      end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_SETUP, "non-finite initial state (component %d)",
+              i);
       return dv_fail(err, e->status, "%s", e->stats.detail);
     }
   dv_pose_from_state(&e->geom, state, &pose);
@@ -293,7 +368,7 @@ static int mujoco_reset(void *p, const double state[RED_NSTATE], dv_error *err) 
   e->e0 = dv_pose_energy(&e->disk, &pose);
   e->e_max = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   if (trapped(forward, e, msg, sizeof msg))
-    end_run(e, DV_OUTCOME_ERROR, "%s", msg);
+    end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_LIBRARY, "%s", msg);
   else
     check_state(e);
   return e->status < 0 ? dv_fail(err, e->status, "%s", e->stats.detail) : DV_OK;
@@ -324,7 +399,7 @@ static int mujoco_advance(void *p, double t, dv_sample *out, dv_error *err) {
   char msg[300];
   dv_pose pose;
   if (e->status == DV_OK && trapped(step_to, &call, msg, sizeof msg))
-    end_run(e, DV_OUTCOME_ERROR, "%s", msg);
+    end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_LIBRARY, "%s", msg);
   if (e->status < 0) return dv_fail(err, e->status, "%s", e->stats.detail);
   read_pose(e->d, &pose);
   dv_sample_from_pose(&e->disk, &e->geom, &pose, e->status == DV_EVENT ? e->d->time : t, e->prev,
@@ -342,7 +417,16 @@ static void mujoco_stats(const void *p, dv_engine_stats *out) {
 }
 
 const dv_engine_type dv_engine_mujoco = {
-    "mujoco",       "MuJoCo 2.2 contact simulation (free body on a plane)",
-    mujoco_version, mujoco_alloc,
-    mujoco_reset,   mujoco_advance,
-    mujoco_stats,   mujoco_free};
+    .name = "mujoco",
+    .description = "MuJoCo 2.2 contact simulation (free body on a plane)",
+    .role = DV_ENGINE_CONTACT,
+    .settings = &SETTINGS,
+    .search = &SEARCH,
+    .half_thickness = mujoco_half_thickness,
+    .version = mujoco_version,
+    .alloc = mujoco_alloc,
+    .reset = mujoco_reset,
+    .advance = mujoco_advance,
+    .stats = mujoco_stats,
+    .free = mujoco_free,
+};

@@ -28,14 +28,65 @@
 
 #include "dv_engine.h"
 #include "dv_pose.h"
+#include "dv_reference.h"
 
 #define ODE_MAX_CONTACTS 4
 #define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
 #define AIR_TIME 0.05   /* and for longer than this, s */
 #define SUNK_DEPTH 0.05 /* diverged: lowest point this deep below the ground, in radii */
 
+/* [engines.ode] */
+typedef struct ode_settings {
+  double timestep;           /* s */
+  int stepper;               /* 0 dWorldStep, 1 dWorldQuickStep */
+  int iterations;            /* QuickStep iterations */
+  double erp, cfm;           /* world error reduction, constraint force mixing */
+  int friction_model;        /* 0 coefficient (dContactApprox1), 1 force limit (N) */
+  double friction;           /* coefficient, or force limit in N */
+  double soft_erp, soft_cfm; /* contact softness */
+  double half_thickness;     /* m, cylinder half-length */
+} ode_settings;
+
+static const char *const STEPPERS[] = {"step", "quickstep", NULL};
+static const char *const FRICTION_MODELS[] = {"coefficient", "force_limit", NULL};
+
+#define AT(field) offsetof(ode_settings, field)
+#define NUM DV_SETTING_REAL, AT
+#define WHOLE DV_SETTING_INT, AT
+#define PICK DV_SETTING_CHOICE, AT
+
+static const dv_setting_spec KEYS[] = {
+    {"timestep", NUM(timestep), 0, 0, 1e-5, 1e-7, 0.1, NULL, NULL, "s", ""},
+    {"stepper", PICK(stepper), 0, 0, 0, 0, 1, STEPPERS, NULL, "", ""},
+    {"iterations", WHOLE(iterations), 0, 0, 50, 1, 100000, NULL, NULL, "", "QuickStep"},
+    {"erp", NUM(erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "",
+     "world ERP (inert: only contact joints)"},
+    {"cfm", NUM(cfm), 0, 0, 1e-10, 0.0, 1.0, NULL, NULL, "",
+     "world CFM (inert: only contact joints)"},
+    {"friction_model", PICK(friction_model), 0, 0, 0, 0, 1, FRICTION_MODELS, NULL, "",
+     "coefficient: dContactApprox1"},
+    {"friction", NUM(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "", "coefficient, or N"},
+    {"soft_erp", NUM(soft_erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "", "contact"},
+    {"soft_cfm", NUM(soft_cfm), 0, 0, 1e-8, 0.0, 1.0, NULL, NULL, "", "contact"},
+    {"half_thickness", NUM(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL, "m",
+     "cylinder half-length"},
+};
+
+static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
+  return dv_engine_check_step(sc, "ode", ((const ode_settings *)block)->timestep, issue);
+}
+
+static const dv_settings_section SETTINGS = {"ode", KEYS, sizeof KEYS / sizeof KEYS[0],
+                                             sizeof(ode_settings), ode_check};
+
+static double ode_half_thickness(const dv_scenario *sc) {
+  return ((const ode_settings *)dv_scenario_settings(sc, SETTINGS.name))->half_thickness;
+}
+
+static const dv_engine_search SEARCH = {"ode", "stepper", "timestep", 1e-7, 0.02};
+
 typedef struct ode_engine {
-  dv_ode_settings set;
+  ode_settings set;
   red_disk disk;
   dv_geometry geom;
   dWorldID world;
@@ -106,12 +157,14 @@ static const char *ode_version(void) {
 }
 
 /* mark the run failed: stats outcome and detail, err, and the status kept */
-static int ode_failed(ode_engine *e, dv_outcome outcome, dv_error *err, const char *fmt, ...) {
+static int ode_failed(ode_engine *e, dv_failure failure, dv_error *err, const char *fmt, ...) {
+  const dv_outcome outcome = dv_failure_outcome(failure);
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(e->st.detail, sizeof e->st.detail, fmt, ap);
   va_end(ap);
   e->st.outcome = outcome;
+  e->st.failure = failure;
   e->status = DV_ENUMERIC;
   return dv_fail(err, DV_ENUMERIC, "%s: %s", dv_outcome_name(outcome), e->st.detail);
 }
@@ -150,10 +203,9 @@ static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
     e->broken = 1;
     dv_pose p;
     ode_read_pose(e, &p);
-    status =
-        ode_pose_finite(&p)
-            ? ode_failed(e, DV_OUTCOME_ERROR, err, "ODE error: %s", ode_message)
-            : ode_failed(e, DV_OUTCOME_DIVERGED, err, "non-finite state (ODE: %s)", ode_message);
+    status = ode_pose_finite(&p)
+                 ? ode_failed(e, DV_FAILURE_LIBRARY, err, "ODE error: %s", ode_message)
+                 : ode_failed(e, DV_FAILURE_NAN, err, "non-finite state (ODE: %s)", ode_message);
   }
   ode_jump = outer;
   ode_current = outer_engine;
@@ -207,10 +259,10 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
   ode_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
   ode_init_once();
-  e->set = sc->ode;
+  e->set = *(const ode_settings *)dv_scenario_settings(sc, SETTINGS.name);
   e->disk = sc->disk;
-  e->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, sc->ode.half_thickness};
-  e->theta_limit = sc->reduced.theta_limit;
+  e->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, e->set.half_thickness};
+  e->theta_limit = dv_reference_settings(sc)->theta_limit;
   if (ode_guarded(e, ode_build, NULL, err) < 0) return ode_free(e), NULL;
   return e;
 }
@@ -252,7 +304,7 @@ static int ode_place(ode_engine *e, void *arg, dv_error *err) {
   e->e0 = dv_pose_energy(&e->disk, &p);
   ode_collide(e, 0);
   if (!ode_pose_finite(&p) || !isfinite(e->e0))
-    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "the initial pose or energy is not finite");
+    return ode_failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
   return DV_OK;
 }
 
@@ -267,7 +319,7 @@ static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
     if (!isfinite(state[i]))
-      return ode_failed(e, DV_OUTCOME_ERROR, err, "non-finite initial state");
+      return ode_failed(e, DV_FAILURE_SETUP, err, "non-finite initial state");
   return ode_guarded(e, ode_place, (void *)state, err);
 }
 
@@ -286,7 +338,7 @@ static int ode_step(ode_engine *e, dv_error *err) {
   ode_read_pose(e, &p);
   const double t = e->k * dt;
   if (!ode_pose_finite(&p))
-    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "non-finite state at t = %g s", t);
+    return ode_failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
   /* like the references: a disk lying down ends the run (n.z = cos theta) */
   if (fabs(p.R[8]) > cos(e->theta_limit)) {
     snprintf(e->st.detail, sizeof e->st.detail, "theta reached %s limit %g rad at t = %g s",
@@ -299,18 +351,17 @@ static int ode_step(ode_engine *e, dv_error *err) {
   const double energy = dv_pose_energy(&e->disk, &p);
   const double limit = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   if (!(energy <= limit))
-    return ode_failed(e, DV_OUTCOME_DIVERGED, err,
+    return ode_failed(e, DV_FAILURE_ENERGY, err,
                       "runaway energy at t = %g s: %g J > %g J (E0 = %g J)", t, energy, limit,
                       e->e0);
   double rho[3];
   dv_geometry_contact_vector(&e->geom, p.R, rho);
   const double height = p.pos[2] + rho[2];
   if (height < -SUNK_DEPTH * e->disk.r)
-    return ode_failed(e, DV_OUTCOME_DIVERGED, err, "sank %g m into the ground at t = %g s", -height,
-                      t);
+    return ode_failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
   e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + dt : 0.0;
   if (e->airborne > AIR_TIME)
-    return ode_failed(e, DV_OUTCOME_LOST_CONTACT, err,
+    return ode_failed(e, DV_FAILURE_LOST_CONTACT, err,
                       "lowest point %g m above the ground for %g s at t = %g s", height,
                       e->airborne, t);
   return DV_OK;
@@ -355,7 +406,16 @@ static void ode_stats(const void *p, dv_engine_stats *out) {
 }
 
 const dv_engine_type dv_engine_ode = {
-    "ode",       "ODE 0.16 contact simulation: a thin cylinder on a plane",
-    ode_version, ode_alloc,
-    ode_reset,   ode_advance,
-    ode_stats,   ode_free};
+    .name = "ode",
+    .description = "ODE 0.16 contact simulation: a thin cylinder on a plane",
+    .role = DV_ENGINE_CONTACT,
+    .settings = &SETTINGS,
+    .search = &SEARCH,
+    .half_thickness = ode_half_thickness,
+    .version = ode_version,
+    .alloc = ode_alloc,
+    .reset = ode_reset,
+    .advance = ode_advance,
+    .stats = ode_stats,
+    .free = ode_free,
+};

@@ -37,18 +37,14 @@ static void reduced_free(void *p) {
 }
 
 static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
+  const dv_reduced_settings *s = dv_reference_settings(sc);
   reduced_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
-  red_reference_init(&e->ref, &sc->disk, sc->reduced.theta_limit);
-  red_rolling_init(&e->thin, &sc->disk, 0.0, INFINITY, sc->reduced.theta_limit);
+  red_reference_init(&e->ref, &sc->disk, s->theta_limit);
+  red_rolling_init(&e->thin, &sc->disk, 0.0, INFINITY, s->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
-  const red_stepper_type *T = red_stepper_find(sc->reduced.integrator);
-  if (!T) {
-    reduced_free(e);
-    return dv_fail(err, DV_EINPUT, "unknown integrator '%s'", sc->reduced.integrator), NULL;
-  }
-  e->in = red_integrator_alloc(&e->ref.sys, T, sc->reduced.rtol, sc->reduced.atol, err);
+  e->in = red_integrator_alloc(&e->ref.sys, red_steppers[s->integrator], s->rtol, s->atol, err);
   if (!e->in) return reduced_free(e), NULL;
   return e;
 }
@@ -78,8 +74,63 @@ static void reduced_stats(const void *p, dv_engine_stats *out) {
   dv_reference_stats(e->in, e->event, detail, out);
 }
 
+static const char *integrator_at(size_t i) {
+  for (size_t k = 0; k < i; k++)
+    if (!red_steppers[k]) return NULL;
+  return red_steppers[i] ? red_steppers[i]->name : NULL;
+}
+
+/* the lying-down limit is every engine's: the initial tilt must lie inside it */
+static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
+  const dv_reduced_settings *s = block;
+  const double theta = sc->initial[RED_TH];
+  if (theta > s->theta_limit && theta < M_PI - s->theta_limit) return 0;
+  issue->section = "initial";
+  issue->key = "theta";
+  snprintf(issue->what, sizeof issue->what, "%g is outside (%g, %g), the lying-down limits", theta,
+           s->theta_limit, M_PI - s->theta_limit);
+  return -1;
+}
+
+#define AT(field) offsetof(dv_reduced_settings, field)
+#define OPEN (DV_SETTING_OPEN_LO | DV_SETTING_OPEN_HI)
+
+/* the default integrator comes first in red_steppers */
+static const dv_setting_spec KEYS[] = {
+    {"integrator", DV_SETTING_CHOICE, AT(integrator), 0, 0, 0, 0, 0, NULL, integrator_at, "",
+     "GSL or SUNDIALS integrator (diskval engines lists them)"},
+    {"rtol", DV_SETTING_REAL, AT(rtol), 0, OPEN, 1e-12, 0.0, 1.0, NULL, NULL, "", "relative"},
+    {"atol", DV_SETTING_REAL, AT(atol), 0, OPEN, 1e-14, 0.0, 1.0, NULL, NULL, "", "absolute"},
+    {"theta_limit", DV_SETTING_REAL, AT(theta_limit), 0, OPEN, 0.01, 0.0, M_PI / 2, NULL, NULL,
+     "rad", "every run ends where theta < limit or > pi - limit"},
+};
+
+static const dv_settings_section SETTINGS = {"reduced", KEYS, sizeof KEYS / sizeof KEYS[0],
+                                             sizeof(dv_reduced_settings), reduced_check};
+
+/* the tightest reference: stepping onto every sample at rtol 1e-14 */
+static int reduced_tighten(dv_scenario *sc, dv_error *err) {
+  if (dv_scenario_set(sc, "reduced", "integrator", "gsl-rk8pd-stepped", err) ||
+      dv_scenario_set_number(sc, "reduced", "rtol", 1e-14, err) ||
+      dv_scenario_set_number(sc, "reduced", "atol", 1e-16, err))
+    return DV_EINPUT;
+  return DV_OK;
+}
+
+/* the reference's own accuracy: its integrator and rtol */
+const dv_engine_search dv_reference_search = {"reduced", "integrator", "rtol", 1e-14, 1e-3};
+
 const dv_engine_type dv_engine_reduced = {
-    "reduced",       "reference: the reduced equations (GSL / SUNDIALS integrators)",
-    reduced_version, reduced_alloc,
-    reduced_reset,   reduced_advance,
-    reduced_stats,   reduced_free};
+    .name = "reduced",
+    .description = "reference: the reduced equations (GSL / SUNDIALS integrators)",
+    .role = DV_ENGINE_THIN_REFERENCE,
+    .settings = &SETTINGS,
+    .search = &dv_reference_search,
+    .tighten = reduced_tighten,
+    .version = reduced_version,
+    .alloc = reduced_alloc,
+    .reset = reduced_reset,
+    .advance = reduced_advance,
+    .stats = reduced_stats,
+    .free = reduced_free,
+};

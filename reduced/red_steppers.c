@@ -3,6 +3,7 @@
 
 #include "red_solver.h"
 
+/* the default first: settings tables name it by its index, 0 */
 const red_stepper_type *const red_steppers[] = {
     &red_gsl_rk8pd,
     &red_gsl_rk8pd_stepped,
@@ -21,5 +22,5 @@ const red_stepper_type *red_stepper_find(const char *name) {
 
 /* measured by bench/bench_reduced: fastest at theta error <= 1e-10 */
 const red_stepper_type *red_stepper_default(void) {
-  return &red_gsl_rk8pd;
+  return red_steppers[0];
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "dv_reference.h"
 #include "run_meta.h"
 #include "io_file.h"
 #include "report_plot.h"
@@ -38,12 +39,17 @@ static double share(double matched, double thin) {
   return thin > 0.0 ? 1.0 - matched / thin : 0.0;
 }
 
+/* the name of the reference's integrator in sc */
+static const char *integrator_name(const dv_scenario *sc) {
+  return red_steppers[dv_reference_settings(sc)->integrator]->name;
+}
+
 static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON *o = metrics_json(r->vs_ref.value);
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   cJSON_AddNumberToObject(o, "wall_per_sim_s", sim > 0.0 ? r->wall_s / sim : 0.0);
   cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
-  cJSON_AddStringToObject(o, "outcome", r->verdict);
+  cJSON_AddStringToObject(o, "outcome", dv_run_verdict_name(r->verdict));
   cJSON_AddStringToObject(o, "detail", r->stats.detail);
   cJSON_AddBoolToObject(o, "pass", r->pass);
   cJSON *f = cJSON_AddArrayToObject(o, "failures");
@@ -77,13 +83,14 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON_AddNumberToObject(o, "duration", sc->duration);
   cJSON_AddNumberToObject(o, "output_dt", sc->output_dt);
   cJSON *ref = cJSON_AddObjectToObject(o, "reference");
-  cJSON_AddStringToObject(ref, "engine", "reduced");
-  cJSON_AddStringToObject(ref, "integrator", sc->reduced.integrator);
-  cJSON_AddNumberToObject(ref, "rtol", sc->reduced.rtol);
+  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  cJSON_AddStringToObject(ref, "engine", thin->name);
+  cJSON_AddStringToObject(ref, "integrator", integrator_name(sc));
+  cJSON_AddNumberToObject(ref, "rtol", dv_reference_settings(sc)->rtol);
   cJSON_AddStringToObject(ref, "outcome", dv_outcome_name(c->thin_stats.outcome));
   cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
   cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
-  cJSON_AddStringToObject(ref, "version", dv_engine_reduced.version());
+  cJSON_AddStringToObject(ref, "version", thin->version());
   cJSON_AddBoolToObject(o, "pass", c->pass);
   cJSON *engines = cJSON_AddObjectToObject(o, "engines");
   for (size_t i = 0; i < c->n; i++)
@@ -110,7 +117,7 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   const dv_scenario *sc = c->sc;
   fprintf(fp, "# %s: %s\n\n%s\n\n", sc->name, c->pass ? "pass" : "FAIL", sc->description);
   fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
-          sc->reduced.integrator, sc->reduced.rtol, dv_outcome_name(c->thin_stats.outcome),
+          integrator_name(sc), dv_reference_settings(sc)->rtol, dv_outcome_name(c->thin_stats.outcome),
           c->thin_stats.detail[0] ? ": " : "", c->thin_stats.detail,
           c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   fprintf(fp,
@@ -127,7 +134,7 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     else
       snprintf(ref, sizeof ref, "thin disk");
     fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
-            r->engine->name, r->verdict, ref, v[DV_THETA_MAX_ERR], v[DV_THETA_RMS_ERR],
+            r->engine->name, dv_run_verdict_name(r->verdict), ref, v[DV_THETA_MAX_ERR], v[DV_THETA_RMS_ERR],
             v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF], v[DV_ENERGY_DRIFT],
             v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR], sim > 0 ? r->wall_s / sim : 0.0);
   }
@@ -205,14 +212,16 @@ static int write_portraits(const char *dir, const dv_comparison *c, dv_error *er
 
 int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
   char name[96];
-  int status = write_csv(dir, "reduced.csv", &c->thin, err);
+  snprintf(name, sizeof name, "%s.csv", dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
+  int status = write_csv(dir, name, &c->thin, err);
   dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}};
   for (size_t i = 0; !status && i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
     snprintf(name, sizeof name, "%s.csv", r->engine->name);
     status = write_csv(dir, name, &r->traj, err);
     if (!status && r->half_thickness > 0.0) {
-      snprintf(name, sizeof name, "matched-%s.csv", r->engine->name);
+      snprintf(name, sizeof name, "%s-%s.csv", dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name,
+               r->engine->name);
       status = write_csv(dir, name, &r->matched, err);
     }
     plot.series[plot.nseries++] = (dv_plot_series){
@@ -229,7 +238,7 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
   for (size_t i = 0; i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
     fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
-            r->verdict, r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_PATH_MAX_ERR],
+            dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_PATH_MAX_ERR],
             r->pass ? "pass" : "FAIL");
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
   }

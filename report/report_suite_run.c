@@ -15,22 +15,6 @@
 #include "run_scenario.h"
 #include "report_scenario.h"
 
-int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max, dv_error *err) {
-  char buf[256];
-  size_t n = 0;
-  snprintf(buf, sizeof buf, "%s", list);
-  for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
-       tok = strtok_r(NULL, ", ", &save)) {
-    const dv_engine_type *e = dv_engine_find(tok);
-    if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s' (see diskval engines)", tok);
-    if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
-    engines[n++] = e;
-  }
-  if (!n) return dv_fail(err, DV_EINPUT, "no engine in '%s'", list);
-  engines[n] = NULL;
-  return DV_OK;
-}
-
 int dv_io_make_dirs(const char *path, dv_error *err) {
   char buf[1024];
   snprintf(buf, sizeof buf, "%s", path);

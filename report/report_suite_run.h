@@ -17,9 +17,6 @@
 /* how one scenario of a suite ended */
 typedef enum dv_suite_result { DV_SUITE_PASS = 0, DV_SUITE_FAIL = 1, DV_SUITE_ERROR = 2 } dv_suite_result;
 
-/* parse "mujoco,ode" into engines (NULL-terminated, at most max - 1) */
-int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max, dv_error *err);
-
 /* compare sc and write OUT/<name>/; print a line per engine to stdout when
  * verbose. Returns a dv_suite_result. */
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,

@@ -5,10 +5,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-const char *const dv_metric_names[DV_NMETRICS] = {"theta_max_err", "theta_rms_err",  "path_max_err",
-                                                  "path_rms_err",  "path_hausdorff", "energy_drift",
-                                                  "slip_max"};
-
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
   if (tr->n == tr->cap) {
     const size_t cap = tr->cap ? 2 * tr->cap : 256;

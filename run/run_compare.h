@@ -26,20 +26,6 @@ typedef struct dv_traj {
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s); /* 0, or -1 out of memory */
 void dv_run_traj_free(dv_traj *tr);                    /* NULL-safe */
 
-typedef enum dv_metric_id {
-  DV_THETA_MAX_ERR = 0,
-  DV_THETA_RMS_ERR,
-  DV_PATH_MAX_ERR,
-  DV_PATH_RMS_ERR,
-  DV_PATH_HAUSDORFF,
-  DV_ENERGY_DRIFT,
-  DV_SLIP_MAX,
-  DV_NMETRICS
-} dv_metric_id;
-
-/* names as in scenario files and reports: "theta_max_err", ... */
-extern const char *const dv_metric_names[DV_NMETRICS];
-
 typedef struct dv_metrics {
   double value[DV_NMETRICS];
   size_t n_window; /* samples compared */

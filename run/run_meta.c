@@ -9,28 +9,27 @@
 
 #include "io_file.h"
 
+/* every key of engine's table in sc, by name */
+static void add_settings(cJSON *o, const dv_scenario *sc, const char *engine) {
+  const void *block = dv_scenario_settings(sc, engine);
+  const dv_engine_type *type = dv_engine_find(engine);
+  if (!block || !type || !type->settings) return;
+  for (size_t i = 0; i < type->settings->nspecs; i++) {
+    const dv_setting_spec *sp = &type->settings->specs[i];
+    const double v = dv_setting_value(sp, block);
+    if (sp->type == DV_SETTING_CHOICE)
+      cJSON_AddStringToObject(o, sp->key, dv_setting_choice(sp, (size_t)v));
+    else
+      cJSON_AddNumberToObject(o, sp->key, v);
+  }
+}
+
 void *dv_run_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) {
   cJSON *o = cJSON_CreateObject();
-  char section[64];
-  snprintf(section, sizeof section, "engines.%s", engine->name);
-  /* both references integrate with the [engines.reduced] solver settings */
-  if (!strcmp(engine->name, "reduced") || !strcmp(engine->name, "matched")) {
-    cJSON_AddStringToObject(o, "integrator", sc->reduced.integrator);
-    cJSON_AddNumberToObject(o, "rtol", sc->reduced.rtol);
-    cJSON_AddNumberToObject(o, "atol", sc->reduced.atol);
-    cJSON_AddNumberToObject(o, "theta_limit", sc->reduced.theta_limit);
-  }
-  for (size_t i = 0; i < dv_nsetting_specs; i++) {
-    const dv_setting_spec *sp = &dv_setting_specs[i];
-    if (strcmp(sp->section, section) != 0) continue;
-    const char *field = (const char *)sc + sp->offset;
-    if (sp->choices)
-      cJSON_AddStringToObject(o, sp->key, sp->choices[*(const int *)field]);
-    else if (sp->is_int)
-      cJSON_AddNumberToObject(o, sp->key, *(const int *)field);
-    else
-      cJSON_AddNumberToObject(o, sp->key, *(const double *)field);
-  }
+  /* a reference integrates with another engine's solver settings: those first */
+  if (engine->search && strcmp(engine->search->section, engine->name) != 0)
+    add_settings(o, sc, engine->search->section);
+  add_settings(o, sc, engine->name);
   return o;
 }
 
@@ -55,7 +54,7 @@ int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *er
 }
 
 int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
-                  const dv_engine_stats *st, dv_error *err) {
+                      const dv_engine_stats *st, dv_error *err) {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "scenario", sc->name);
   cJSON_AddStringToObject(o, "engine", engine->name);

@@ -7,9 +7,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "dv_reference.h"
 #include "run_trajectory.h"
-
-const dv_engine_type *const dv_run_default_engines[] = {&dv_engine_mujoco, &dv_engine_ode, NULL};
 
 static double now(void) {
   struct timespec ts;
@@ -20,24 +19,6 @@ static double now(void) {
 /* sink: keep every sample */
 static int keep(void *ctx, const dv_sample *s) {
   return dv_run_traj_push(ctx, s);
-}
-
-/* half-thickness of the cylinder engine simulates (0: thin or smooth) */
-static double engine_half_thickness(const dv_engine_type *e, const dv_scenario *sc) {
-  if (e == &dv_engine_ode) return sc->ode.half_thickness;
-  if (e == &dv_engine_mujoco && sc->mujoco.geom == 0) return sc->mujoco.half_thickness;
-  if (e == &dv_engine_matched) return sc->matched.half_thickness;
-  return 0.0;
-}
-
-/* end of the thin reference's validity: the last sample before the rolling
- * contact force turns away from the ground or outside the friction cone */
-static double validity_end(const dv_traj *tr, double mu) {
-  for (size_t i = 0; i < tr->n; i++) {
-    const double *F = tr->s[i].force;
-    if (!(F[2] > 0.0) || hypot(F[0], F[1]) > mu * F[2]) return i ? tr->s[i - 1].t : 0.0;
-  }
-  return INFINITY;
 }
 
 /* did the matched reference end where the thick disk reaches upright */
@@ -56,40 +37,26 @@ static void add_failure(dv_engine_result *r, const char *fmt, ...) {
   va_end(ap);
 }
 
-/* limits for engine: its own, else the scenario's, else none */
-static void tolerances(const dv_scenario *sc, const char *engine, double *limit) {
-  for (int m = 0; m < DV_NMETRICS; m++) limit[m] = INFINITY;
-  for (int pass = 0; pass < 2; pass++)
-    for (size_t i = 0; i < sc->ntolerances; i++) {
-      const dv_tolerance *t = &sc->tolerances[i];
-      if (strcmp(t->engine, pass ? engine : "") != 0) continue;
-      for (int m = 0; m < DV_NMETRICS; m++)
-        if (!strcmp(t->metric, dv_metric_names[m])) limit[m] = t->limit;
-    }
-}
-
 static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_engine_result *r) {
   const char *name = r->engine->name;
   const double t_ref = fmin(ref_end, ref->n ? ref->s[ref->n - 1].t : 0.0);
   const double t_eng = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
-  r->verdict = "agrees";
+  r->verdict = DV_VERDICT_AGREES;
   if (r->status < 0 && t_eng < t_ref - 0.5 * sc->output_dt) {
-    const dv_outcome o = r->stats.outcome;
-    r->verdict = o == DV_OUTCOME_DIVERGED       ? "diverged"
-                 : o == DV_OUTCOME_LOST_CONTACT ? "lost contact"
-                                                : "error";
-    add_failure(r, "%s: %s: %s at t = %g s: %s", sc->name, name, r->verdict, t_eng,
-                r->stats.detail);
+    const dv_verdict v = dv_run_verdict_of_outcome(r->stats.outcome);
+    r->verdict = dv_run_verdict_failed(v) ? v : DV_VERDICT_ERROR;
+    add_failure(r, "%s: %s: %s at t = %g s: %s", sc->name, name, dv_run_verdict_name(r->verdict),
+                t_eng, r->stats.detail);
   }
   for (int m = 0; m < DV_NMETRICS; m++)
     if (!(r->vs_ref.value[m] <= r->tolerance[m])) {
       add_failure(r, "%s: %s: %s = %.6g > %.6g", sc->name, name, dv_metric_names[m],
                   r->vs_ref.value[m], r->tolerance[m]);
-      if (!strcmp(r->verdict, "agrees")) r->verdict = "exceeds tolerance";
+      if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
     }
-  if (!strcmp(r->verdict, "agrees") && r->stats.outcome == DV_OUTCOME_EVENT &&
+  if (r->verdict == DV_VERDICT_AGREES && r->stats.outcome == DV_OUTCOME_EVENT &&
       t_eng < t_ref - 0.5 * sc->output_dt)
-    r->verdict = "ended by event";
+    r->verdict = DV_VERDICT_ENDED_BY_EVENT;
   r->pass = r->nfailures == 0;
 }
 
@@ -110,9 +77,11 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   c->pass = 1;
   if (!ref_sc) ref_sc = sc;
   if (n > DV_MAX_ENGINES) return dv_fail(err, DV_EINPUT, "at most %d engines", DV_MAX_ENGINES);
-  int status = run_into(&dv_engine_reduced, ref_sc, &c->thin, &c->thin_stats, NULL, err);
+  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
+  int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, NULL, err);
   if (status < 0) return status;
-  c->thin_valid_end = validity_end(&c->thin, sc->matched.friction);
+  c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
   for (size_t i = 0; i < n; i++) {
     dv_engine_result *r = &c->r[c->n++];
     dv_error e = {{0}};
@@ -120,14 +89,14 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
     r->status = run_into(engines[i], sc, &r->traj, &r->stats, &r->wall_s, &e);
     if (r->status < 0 && !r->stats.detail[0])
       snprintf(r->stats.detail, sizeof r->stats.detail, "%.255s", e.msg);
-    r->half_thickness = engine_half_thickness(engines[i], sc);
+    r->half_thickness = dv_engine_half_thickness(engines[i], sc);
     const dv_traj *ref = &c->thin;
     double ref_end = c->thin_valid_end;
     if (r->half_thickness > 0.0) {
-      static dv_scenario matched;
-      matched = *ref_sc;
-      matched.matched.half_thickness = r->half_thickness;
-      status = run_into(&dv_engine_matched, &matched, &r->matched, &r->matched_stats, NULL, err);
+      dv_scenario match = *ref_sc;
+      status =
+          dv_scenario_set_number(&match, matched->name, "half_thickness", r->half_thickness, err);
+      if (!status) status = run_into(matched, &match, &r->matched, &r->matched_stats, NULL, err);
       if (status < 0) return status;
       ref = &r->matched;
       ref_end = INFINITY; /* the matched reference ends at its own validity limit */
@@ -145,7 +114,8 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       r->vs_ref = r->vs_thin;
     else
       dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
-    tolerances(sc, engines[i]->name, r->tolerance);
+    for (int m = 0; m < DV_NMETRICS; m++)
+      r->tolerance[m] = dv_scenario_tolerance(sc, engines[i]->name, (dv_metric_id)m);
     judge(sc, ref, ref_end, r);
     c->pass &= r->pass;
   }

@@ -12,6 +12,7 @@
 #define DV_RUN_H
 
 #include "run_compare.h"
+#include "run_verdict.h"
 #include "dv_engine.h"
 #include "scenario.h"
 
@@ -30,7 +31,7 @@ typedef struct dv_engine_result {
   dv_metrics vs_ref, vs_thin;    /* against its own reference, and the thin disk */
   double tolerance[DV_NMETRICS]; /* limits, INFINITY where none */
   int pass;
-  const char *verdict; /* agrees, exceeds tolerance, diverged, ... */
+  dv_verdict verdict;
   size_t nfailures;
   char failures[DV_MAX_FAILURES][256];
 } dv_engine_result;
@@ -44,9 +45,6 @@ typedef struct dv_comparison {
   dv_engine_result r[DV_MAX_ENGINES];
   int pass; /* every engine passed */
 } dv_comparison;
-
-/* engines compared by default: every contact engine */
-extern const dv_engine_type *const dv_run_default_engines[];
 
 /* run the engines on sc and compare; the references run on ref_sc (NULL:
  * sc; a tighter reference for sweeps of the reference's own settings).

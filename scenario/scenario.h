@@ -1,12 +1,13 @@
-/* dv_scenario: a scenario file, parsed (inih) and validated.
+/* scenario: a scenario file, parsed (inih) and validated against a schema.
  *
  * Sections and keys (radians, SI units), see README "Scenario files":
  *   [scenario]   name, description, duration, output_dt, engines
  *   [disk]       radius, mass, A, C, gravity     (A, C default to a uniform disk)
  *   [initial]    theta and phi, psi, x, y, theta_dot, phi_dot, psi_dot
  *                or theta + steady_circle_radius, or theta + steady_phi_dot
- *   [engines.reduced]   integrator, rtol, atol, theta_limit
- *   [tolerance], [tolerance.ENGINE]   limits on the comparison metrics
+ *   [engines.NAME]   the settings of engine NAME, as its own table declares
+ *                    (scenario_schema.h); the engines layer passes the tables
+ *   [tolerance], [tolerance.NAME]   limits on the comparison metrics
  * Unknown sections and keys, duplicates, non-numbers and out-of-range values
  * are errors reported as "FILE:LINE: key: what".
  */
@@ -17,8 +18,15 @@
 
 #include "dv_error.h"
 #include "red_disk.h"
+#include "scenario_schema.h"
 
 #define DV_MAX_TOLERANCES 32
+#define DV_MAX_ENGINE_SECTIONS 8
+#define DV_SETTINGS_BYTES 256 /* the largest engine settings struct */
+
+/* what a scenario name may hold: it names the report's directory, so it is
+ * one path component of these characters, and not "." or ".." */
+#define DV_SCENARIO_NAME_CHARS "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._-+"
 
 typedef enum dv_init_mode {
   DV_INIT_STATE = 0,     /* the state is given key by key */
@@ -26,70 +34,34 @@ typedef enum dv_init_mode {
   DV_INIT_STEADY_PHI_DOT /* theta + steady_phi_dot */
 } dv_init_mode;
 
+/* the metrics a comparison measures and a tolerance may limit */
+typedef enum dv_metric_id {
+  DV_THETA_MAX_ERR = 0,
+  DV_THETA_RMS_ERR,
+  DV_PATH_MAX_ERR,
+  DV_PATH_RMS_ERR,
+  DV_PATH_HAUSDORFF,
+  DV_ENERGY_DRIFT,
+  DV_SLIP_MAX,
+  DV_NMETRICS
+} dv_metric_id;
+
+/* names as in scenario files and reports: "theta_max_err", ... */
+extern const char *const dv_metric_names[DV_NMETRICS];
+
 /* one tolerance: metric <= limit, for one engine or all ("") */
 typedef struct dv_tolerance {
   char engine[32];
-  char metric[32];
+  dv_metric_id metric;
   double limit;
 } dv_tolerance;
 
-/* the reference solver's settings, [engines.reduced] */
-typedef struct dv_reduced_settings {
-  char integrator[32]; /* default: red_stepper_default() */
-  double rtol;         /* default 1e-12 */
-  double atol;         /* default 1e-14 */
-  double theta_limit;  /* rad; the run ends where theta < limit or > pi - limit; default 0.01 */
-} dv_reduced_settings;
-
-/* [engines.mujoco]: MuJoCo 2.2 settings (defaults: dv_setting_specs) */
-typedef struct dv_mujoco_settings {
-  double timestep;                               /* s */
-  int integrator;                                /* 0 euler, 1 rk4, 2 implicit */
-  int cone;                                      /* 0 pyramidal, 1 elliptic */
-  double impratio;                               /* frictional-to-normal impedance ratio */
-  int solver;                                    /* 0 pgs, 1 cg, 2 newton */
-  double tolerance;                              /* solver tolerance */
-  int iterations;                                /* solver iterations */
-  int noslip_iterations;                         /* noslip solver iterations */
-  double solref_timeconst;                       /* s (MuJoCo raises it to >= 2 timestep) */
-  double solref_dampratio;                       /* 1: critical damping */
-  double solimp_dmin, solimp_dmax, solimp_width; /* impedance, width in m */
-  double friction;                               /* sliding friction coefficient */
-  int geom;                                      /* 0 cylinder, 1 ellipsoid */
-  double half_thickness; /* m: cylinder half-length or ellipsoid semi-axis */
-} dv_mujoco_settings;
-
-/* [engines.ode]: ODE 0.16 settings */
-typedef struct dv_ode_settings {
-  double timestep;           /* s */
-  int stepper;               /* 0 dWorldStep, 1 dWorldQuickStep */
-  int iterations;            /* QuickStep iterations */
-  double erp, cfm;           /* world error reduction, constraint force mixing */
-  int friction_model;        /* 0 coefficient (dContactApprox1), 1 force limit (N) */
-  double friction;           /* coefficient, or force limit in N */
-  double soft_erp, soft_cfm; /* contact softness */
-  double half_thickness;     /* m, cylinder half-length */
-} dv_ode_settings;
-
-/* [engines.matched]: the reference for the disk an engine simulates */
-typedef struct dv_matched_settings {
-  double half_thickness; /* m, cylinder half-length matched to the engine's */
-  double friction;       /* the validity window ends where |F_h| > friction F_z */
-} dv_matched_settings;
-
-/* one engine setting: section, key, where it lives, default, range, doc */
-typedef struct dv_setting_spec {
-  const char *section;
-  const char *key;
-  size_t offset;              /* into dv_scenario */
-  int is_int;                 /* stored as int (choices and counts) */
-  double def, lo, hi;         /* default and inclusive range */
-  const char *const *choices; /* NULL-terminated names; value = index */
-  const char *doc;            /* units and meaning */
-} dv_setting_spec;
-
-extern const dv_setting_spec dv_setting_specs[];
-extern const size_t dv_nsetting_specs;
+/* an engine's settings: a block only that engine's table knows the layout of */
+typedef union dv_settings_block {
+  double align;
+  void *align_ptr;
+  unsigned char bytes[DV_SETTINGS_BYTES];
+} dv_settings_block;
 
 typedef struct dv_scenario {
   char path[1024];
@@ -100,22 +72,44 @@ typedef struct dv_scenario {
   double output_dt; /* s */
   red_disk disk;
   dv_init_mode init_mode;
-  double initial[RED_NSTATE]; /* resolved initial state */
-  dv_reduced_settings reduced;
-  dv_matched_settings matched;
-  dv_mujoco_settings mujoco;
-  dv_ode_settings ode;
+  double initial[RED_NSTATE];                  /* resolved initial state */
+  double steady_circle_radius, steady_phi_dot; /* m, rad/s as given; NAN when not */
   size_t ntolerances;
   dv_tolerance tolerances[DV_MAX_TOLERANCES];
+  /* the engine tables it was read with, and their values */
+  size_t nsections;
+  const dv_settings_section *sections[DV_MAX_ENGINE_SECTIONS];
+  dv_settings_block settings[DV_MAX_ENGINE_SECTIONS];
 } dv_scenario;
 
-/* every engine setting and the reference's solver settings at their
- * defaults (for scenarios built in code) */
-void dv_scenario_defaults(dv_scenario *sc);
+/* engines: NULL-terminated, at most DV_MAX_ENGINE_SECTIONS, each named after
+ * its engine. Every setting at its default; the rest zero (for scenarios
+ * built in code). */
+void dv_scenario_init(dv_scenario *sc, const dv_settings_section *const *engines);
 
-/* parse and validate path; overrides are "section.key=value" strings applied
- * after the file (as from --set). Returns DV_OK or DV_EINPUT with err set. */
-int dv_scenario_load(const char *path, const char *const *overrides, size_t noverrides,
-                     dv_scenario *sc, dv_error *err);
+/* parse and validate path against the core sections and engines; overrides
+ * are "section.key=value" strings applied after the file (as from --set).
+ * Returns DV_OK or DV_EINPUT with err set. */
+int dv_scenario_load(const dv_settings_section *const *engines, const char *path,
+                     const char *const *overrides, size_t noverrides, dv_scenario *sc,
+                     dv_error *err);
+
+/* the settings block of engine (its struct, as its table describes), or NULL */
+const void *dv_scenario_settings(const dv_scenario *sc, const char *engine);
+
+/* the value of [engines.ENGINE] key as a number (a choice's index); NAN when unknown */
+double dv_scenario_get(const dv_scenario *sc, const char *engine, const char *key);
+
+/* set [engines.ENGINE] key from text (as in a file), or to a number, checked as at load */
+int dv_scenario_set(dv_scenario *sc, const char *engine, const char *key, const char *text,
+                    dv_error *err);
+int dv_scenario_set_number(dv_scenario *sc, const char *engine, const char *key, double v,
+                           dv_error *err);
+
+/* the limit on metric for engine: [tolerance.ENGINE], else [tolerance], else INFINITY */
+double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric);
+
+/* 0 when name may name a scenario (DV_SCENARIO_NAME_CHARS), else -1 with what set */
+int dv_scenario_check_name(const char *name, char *what, size_t size);
 
 #endif

@@ -3,42 +3,25 @@
 #include "search_best.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "scenario.h"
 
-/* what an engine's search varies: a discrete choice and a step */
+/* what a search varies: the engine's declared keys, and the names of its choices */
 typedef struct space {
-  const char *engine, *choice_key, *step_key;
-  const char *const *choices;
-  double lo, hi; /* range of the step */
+  const char *engine;
+  const dv_engine_search *search;
+  const dv_setting_spec *choice;     /* the choice key's spec */
+  char choice_key[96], step_key[96]; /* engines.SECTION.KEY */
+  double lo, hi;                     /* range of the step */
 } space;
-
-static const char *const MJ_CHOICES[] = {"euler", "rk4", "implicit", NULL};
-static const char *const ODE_CHOICES[] = {"step", "quickstep", NULL};
-static const char *const REF_CHOICES[] = {"gsl-rk8pd",   "gsl-rk8pd-stepped", "gsl-msadams",
-                                          "cvode-adams", "cvode-bdf",         "arkode-fehlberg13",
-                                          NULL};
-
-static const space SPACES[] = {
-    {"mujoco", "engines.mujoco.integrator", "engines.mujoco.timestep", MJ_CHOICES, 1e-6, 0.02},
-    {"ode", "engines.ode.stepper", "engines.ode.timestep", ODE_CHOICES, 1e-7, 0.02},
-    {"reduced", "engines.reduced.integrator", "engines.reduced.rtol", REF_CHOICES, 1e-14, 1e-3},
-    {"matched", "engines.reduced.integrator", "engines.reduced.rtol", REF_CHOICES, 1e-14, 1e-3},
-};
-
-static const space *find_space(const char *engine) {
-  for (size_t i = 0; i < sizeof SPACES / sizeof SPACES[0]; i++)
-    if (!strcmp(SPACES[i].engine, engine)) return &SPACES[i];
-  return NULL;
-}
-
 typedef struct ctx {
   const char *path;
   const char *const *sets;
   size_t nsets;
-  const space *sp;
+  space sp;
   dv_search *out;
 } ctx;
 
@@ -50,17 +33,18 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   char over[2][160];
   const char *ptrs[2];
   size_t n = 0;
-  snprintf(over[n], sizeof over[n], "%s=%.9g", c->sp->step_key, step);
+  snprintf(over[n], sizeof over[n], "%s=%.9g", c->sp.step_key, step);
   ptrs[n] = over[n];
   n++;
   if (choice) {
-    snprintf(over[n], sizeof over[n], "%s=%s", c->sp->choice_key, choice);
+    snprintf(over[n], sizeof over[n], "%s=%s", c->sp.choice_key, choice);
     ptrs[n] = over[n];
     n++;
   }
   snprintf(p->choice, sizeof p->choice, "%s", choice ? choice : "default");
   p->step = step;
-  if (dv_search_sweep_probe(c->path, c->sets, c->nsets, c->sp->engine, ptrs, n, &p->point, err)) return -1;
+  if (dv_search_sweep_probe(c->path, c->sets, c->nsets, c->sp.engine, ptrs, n, &p->point, err))
+    return -1;
   p->pass = p->point.ok && p->point.metric[DV_THETA_MAX_ERR] <= s->tolerance;
   return p->pass;
 }
@@ -75,12 +59,12 @@ static double largest(ctx *c, const char *choice, double start, int *fail_probe,
     if (ok < 0) return pass;
     if (ok) {
       pass = h;
-      if (!isnan(fail) || h * 2.0 > c->sp->hi) break;
+      if (!isnan(fail) || h * 2.0 > c->sp.hi) break;
       h *= 2.0;
     } else {
       fail = h;
       *fail_probe = (int)c->out->nprobes - 1;
-      if (!isnan(pass) || h / 2.0 < c->sp->lo) break;
+      if (!isnan(pass) || h / 2.0 < c->sp.lo) break;
       h /= 2.0;
     }
   }
@@ -101,21 +85,34 @@ static double largest(ctx *c, const char *choice, double start, int *fail_probe,
 static int setup(const char *path, const char *const *sets, size_t nsets, const char *engine,
                  double tol, dv_search *out, ctx *c, double *start, dv_error *err) {
   memset(out, 0, sizeof *out);
-  const space *sp = find_space(engine);
-  if (!sp) return dv_fail(err, DV_EINPUT, "no search space for engine '%s'", engine);
+  const dv_engine_type *type = dv_engine_find(engine);
+  const dv_engine_search *search = type ? type->search : NULL;
+  const dv_engine_type *owner = search ? dv_engine_find(search->section) : NULL;
+  if (!search || !owner || !owner->settings)
+    return dv_fail(err, DV_EINPUT, "no search space for engine '%s'", engine);
   if (!(tol > 0.0)) return dv_fail(err, DV_EINPUT, "the tolerance must be > 0");
-  static dv_scenario sc;
-  if (dv_scenario_load(path, sets, nsets, &sc, err)) return DV_EINPUT;
+  dv_scenario *sc = malloc(sizeof *sc);
+  if (!sc) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  const int status = dv_engine_load_scenario(path, sets, nsets, sc, err);
+  *start = dv_scenario_get(sc, search->section, search->step_key);
+  free(sc);
+  if (status) return DV_EINPUT;
+  *c = (ctx){.path = path, .sets = sets, .nsets = nsets, .out = out};
+  c->sp.engine = engine;
+  c->sp.search = search;
+  c->sp.choice = dv_settings_find(owner->settings, search->choice_key);
+  snprintf(c->sp.choice_key, sizeof c->sp.choice_key, "engines.%s.%s", search->section,
+           search->choice_key);
+  snprintf(c->sp.step_key, sizeof c->sp.step_key, "engines.%s.%s", search->section,
+           search->step_key);
+  c->sp.lo = search->lo;
+  c->sp.hi = search->hi;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
-  snprintf(out->choice_key, sizeof out->choice_key, "%s", sp->choice_key);
-  snprintf(out->step_key, sizeof out->step_key, "%s", sp->step_key);
+  snprintf(out->choice_key, sizeof out->choice_key, "%s", c->sp.choice_key);
+  snprintf(out->step_key, sizeof out->step_key, "%s", c->sp.step_key);
   out->tolerance = tol;
   out->best = out->first_failure = -1;
   out->limit = NAN;
-  *c = (ctx){path, sets, nsets, sp, out};
-  *start = !strcmp(engine, "mujoco") ? sc.mujoco.timestep
-           : !strcmp(engine, "ode")  ? sc.ode.timestep
-                                     : sc.reduced.rtol;
   return DV_OK;
 }
 
@@ -125,9 +122,10 @@ int dv_search_best(const char *path, const char *const *sets, size_t nsets, cons
   double start;
   int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);
   if (status) return status;
-  for (const char *const *ch = c.sp->choices; *ch; ch++) {
+  const char *choice;
+  for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++) {
     int fail;
-    largest(&c, *ch, start, &fail, err);
+    largest(&c, choice, start, &fail, err);
   }
   for (size_t i = 0; i < out->nprobes; i++) {
     const dv_probe *p = &out->probes[i];
@@ -151,14 +149,14 @@ int dv_search_stability(const char *path, const char *const *sets, size_t nsets,
 const char *dv_search_failure_mode(const dv_probe *p) {
   const dv_sweep_point *q = &p->point;
   if (p->pass) return "none";
-  if (!strcmp(q->outcome, "diverged")) {
-    if (strstr(q->detail, "reset")) return "silent reset";
-    if (strstr(q->detail, "energy")) return "energy blow-up";
-    if (strstr(q->detail, "sank")) return "sinks";
-    return "NaN";
+  if (q->failure != DV_FAILURE_NONE) return dv_failure_name(q->failure);
+  switch (q->verdict) {
+    case DV_VERDICT_ENDED_BY_EVENT:
+      return "falls";
+    case DV_VERDICT_AGREES:
+    case DV_VERDICT_EXCEEDS:
+      return "drifts";
+    default:
+      return "error";
   }
-  if (!strcmp(q->outcome, "lost contact")) return "lost contact";
-  if (!strcmp(q->outcome, "ended by event")) return "falls";
-  if (!strcmp(q->outcome, "error") || !strcmp(q->outcome, "invalid")) return "error";
-  return "drifts";
 }

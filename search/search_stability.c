@@ -23,13 +23,8 @@ typedef struct task {
 
 /* the scenario's theta_max_err limit for engine, its own first */
 static double theta_tolerance(const dv_scenario *sc, const char *engine) {
-  double tol = DEFAULT_TOL;
-  for (int pass = 0; pass < 2; pass++)
-    for (size_t i = 0; i < sc->ntolerances; i++)
-      if (!strcmp(sc->tolerances[i].metric, "theta_max_err") &&
-          !strcmp(sc->tolerances[i].engine, pass ? engine : ""))
-        tol = sc->tolerances[i].limit;
-  return tol;
+  const double tol = dv_scenario_tolerance(sc, engine, DV_THETA_MAX_ERR);
+  return isinf(tol) ? DEFAULT_TOL : tol;
 }
 
 static const char *mode(const dv_search *s) {
@@ -90,7 +85,7 @@ static int write_tables(const char *dir, const task *tk, const dv_search *res, s
       cJSON *q = cJSON_CreateObject();
       cJSON_AddNumberToObject(q, "timestep", p->step);
       cJSON_AddItemToObject(q, "theta_max_err", dv_io_json_number(p->point.metric[DV_THETA_MAX_ERR]));
-      cJSON_AddStringToObject(q, "outcome", p->point.outcome);
+      cJSON_AddStringToObject(q, "outcome", dv_run_verdict_name(p->point.verdict));
       cJSON_AddStringToObject(q, "failure_mode", dv_search_failure_mode(p));
       cJSON_AddStringToObject(q, "detail", p->point.detail);
       cJSON_AddBoolToObject(q, "pass", p->pass);
@@ -132,7 +127,7 @@ int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_ty
   if (!tk) return dv_fail(err, DV_ESYSTEM, "out of memory");
   for (size_t i = 0; i < n; i++)
     for (size_t k = 0; k < ne; k++)
-      if (engines[k] != &dv_engine_reduced && engines[k] != &dv_engine_matched)
+      if (engines[k]->role == DV_ENGINE_CONTACT)
         tk[nt++] = (task){&scs[i], engines[k], theta_tolerance(&scs[i], engines[k]->name)};
   dv_search *res = calloc(nt + 1, sizeof *res);
   if (!res) return free(tk), dv_fail(err, DV_ESYSTEM, "out of memory");

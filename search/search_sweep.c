@@ -98,47 +98,58 @@ static void point_values(const job *jb, size_t k, dv_sweep_point *pt, char (*ove
 /* run one point: the scenario with sets and then over[0..nover) */
 static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
-  static dv_scenario sc, ref;
+  dv_scenario *sc = malloc(sizeof *sc), *ref = malloc(sizeof *ref);
+  dv_comparison *c = malloc(sizeof *c);
   const char *sets[64 + DV_SWEEP_MAX_VARY];
   dv_error err = {{0}};
+  pt->verdict = DV_VERDICT_INVALID;
+  pt->failure = DV_FAILURE_NONE;
+  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
+  if (!sc || !ref || !c) {
+    snprintf(pt->detail, sizeof pt->detail, "out of memory");
+    goto cleanup;
+  }
   size_t nsets = 0;
   for (size_t i = 0; i < jb->nsets && nsets < 64; i++) sets[nsets++] = jb->sets[i];
   for (size_t v = 0; v < nover && v < DV_SWEEP_MAX_VARY; v++) sets[nsets++] = over[v];
-  snprintf(pt->outcome, sizeof pt->outcome, "invalid");
-  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
-  if (dv_scenario_load(jb->path, sets, nsets, &sc, &err)) {
+  if (dv_engine_load_scenario(jb->path, sets, nsets, sc, &err)) {
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
-    return;
+    goto cleanup;
   }
+  /* a reference's own settings are measured against a tighter reference */
   const dv_scenario *ref_sc = NULL;
-  if (jb->engine == &dv_engine_reduced || jb->engine == &dv_engine_matched) {
-    dv_scenario_load(jb->path, jb->sets, jb->nsets, &ref, &err);
-    snprintf(ref.reduced.integrator, sizeof ref.reduced.integrator, "gsl-rk8pd-stepped");
-    ref.reduced.rtol = 1e-14;
-    ref.reduced.atol = 1e-16;
-    ref_sc = &ref;
+  if (jb->engine->tighten) {
+    if (dv_engine_load_scenario(jb->path, jb->sets, jb->nsets, ref, &err) ||
+        jb->engine->tighten(ref, &err)) {
+      snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
+      goto cleanup;
+    }
+    ref_sc = ref;
   }
-  static dv_comparison c;
   const dv_engine_type *engines[1] = {jb->engine};
-  if (dv_run_scenario(&sc, ref_sc, engines, 1, &c, &err)) {
-    snprintf(pt->outcome, sizeof pt->outcome, "error");
+  if (dv_run_scenario(sc, ref_sc, engines, 1, c, &err)) {
+    pt->verdict = DV_VERDICT_ERROR;
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
-    dv_run_comparison_free(&c);
-    return;
+    dv_run_comparison_free(c);
+    goto cleanup;
   }
-  const dv_engine_result *r = &c.r[0];
+  const dv_engine_result *r = &c->r[0];
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   pt->timed_runs = r->wall_s < 0.2 ? 5 : 1;
-  const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, &sc, r->wall_s) : r->wall_s;
+  const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, sc, r->wall_s) : r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
   pt->wall_per_sim_s = sim > 0.0 ? wall / sim : NAN;
   pt->steps = r->stats.steps;
-  pt->ok = strcmp(r->verdict, "diverged") && strcmp(r->verdict, "lost contact") &&
-           strcmp(r->verdict, "error");
-  snprintf(pt->outcome, sizeof pt->outcome, "%s", r->verdict);
+  pt->ok = !dv_run_verdict_failed(r->verdict);
+  pt->verdict = r->verdict;
+  pt->failure = r->stats.failure;
   snprintf(pt->detail, sizeof pt->detail, "%.191s", r->stats.detail);
-  dv_run_comparison_free(&c);
+  dv_run_comparison_free(c);
+cleanup:
+  free(sc);
+  free(ref);
+  free(c);
 }
 
 static void run_point(const job *jb, size_t k, dv_sweep_point *pt);
@@ -177,8 +188,9 @@ static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
   run_overrides(jb, ptrs, jb->nvary, pt);
 }
 
-int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                   const char *const *overrides, size_t n, dv_sweep_point *out, dv_error *err) {
+int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nsets,
+                          const char *engine, const char *const *overrides, size_t n,
+                          dv_sweep_point *out, dv_error *err) {
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
   const job jb = {path, sets, nsets, e, NULL, 0};
@@ -188,7 +200,7 @@ int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nset
 }
 
 int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                 const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
+                        const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
   const char *checkpoint_dir = out->checkpoint_dir;
   memset(out, 0, sizeof *out);
   out->checkpoint_dir = checkpoint_dir;
@@ -201,19 +213,19 @@ int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets,
   if (n > DV_SWEEP_MAX_POINTS)
     return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
   static dv_scenario sc;
-  if (dv_scenario_load(path, sets, nsets, &sc, err)) return DV_EINPUT;
+  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
   snprintf(out->scenario, sizeof out->scenario, "%s", sc.name);
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   out->nvary = nvary;
   memcpy(out->vary, vary, nvary * sizeof *vary);
   dv_sweep_point *pts = calloc(n, sizeof *pts);
   if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  for (size_t k = 0; k < n; k++) snprintf(pts[k].outcome, sizeof pts[k].outcome, "missing");
+  for (size_t k = 0; k < n; k++) pts[k].verdict = DV_VERDICT_MISSING;
   const job jb = {path, sets, nsets, e, vary, nvary};
   checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
   /* under mpirun, rank 0 keeps the tables current as results arrive */
   const int pool = dv_exec_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs,
-                               dv_exec_mpi_size() > 1 && checkpoint_dir ? checkpoint : NULL);
+                                    dv_exec_mpi_size() > 1 && checkpoint_dir ? checkpoint : NULL);
   if (pool == 1 || pool < 0) { /* a worker rank: rank 0 has the results */
     free(pts);
     return pool == 1 ? DV_EVENT : dv_fail(err, DV_ESYSTEM, "out of memory");

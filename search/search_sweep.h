@@ -17,6 +17,7 @@
 #include <stddef.h>
 
 #include "run_compare.h"
+#include "run_verdict.h"
 #include "dv_error.h"
 
 #define DV_SWEEP_MAX_VARY 4
@@ -38,7 +39,8 @@ typedef struct dv_sweep_point {
   long steps;
   int ok;     /* ran through its compared window */
   int pareto; /* no other ok point is both cheaper and more accurate */
-  char outcome[32];
+  dv_verdict verdict;
+  dv_failure failure; /* why the run failed, as the engine saw it */
   char detail[192];
 } dv_sweep_point;
 

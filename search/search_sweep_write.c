@@ -72,7 +72,7 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
     fprintf(out.fp, "%s", s->engine);
     for (size_t v = 0; v < s->nvary; v++) fprintf(out.fp, ",%s", p->values[v]);
     for (int m = 0; m < DV_NMETRICS; m++) fprintf(out.fp, ",%.9g", p->metric[m]);
-    fprintf(out.fp, ",%.6g,%ld,%s,%d\n", p->wall_per_sim_s, p->steps, p->outcome, p->pareto);
+    fprintf(out.fp, ",%.6g,%ld,%s,%d\n", p->wall_per_sim_s, p->steps, dv_run_verdict_name(p->verdict), p->pareto);
   }
   return dv_io_commit(&out, err);
 }
@@ -96,7 +96,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
       cJSON_AddItemToObject(q, dv_metric_names[m], dv_io_json_number(p->metric[m]));
     cJSON_AddItemToObject(q, "wall_per_sim_s", dv_io_json_number(p->wall_per_sim_s));
     cJSON_AddNumberToObject(q, "steps", (double)p->steps);
-    cJSON_AddStringToObject(q, "outcome", p->outcome);
+    cJSON_AddStringToObject(q, "outcome", dv_run_verdict_name(p->verdict));
     cJSON_AddStringToObject(q, "detail", p->detail);
     cJSON_AddBoolToObject(q, "ok", p->ok);
     cJSON_AddBoolToObject(q, "pareto", p->pareto);

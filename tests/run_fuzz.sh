@@ -19,9 +19,9 @@ sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
-  "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c \
+  "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "$src"/engines/*.c \
   "$src/common/dv_error.c" "$src"/reduced/*.c \
-  $(pkg-config --cflags --libs inih gsl) $sundials -lm -o "$work/fuzz" || exit 1
+  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode) -lmujoco $sundials -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
 cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
 cd "$work" || exit 1

@@ -22,12 +22,10 @@ static const dv_engine_type *const E = &dv_engine_mujoco;
 /* a uniform disk (r 0.1 m, m 1 kg) with every engine setting at its default */
 static dv_scenario base(void) {
   dv_scenario sc;
-  memset(&sc, 0, sizeof sc);
+  dv_engine_init_scenario(&sc);
   sc.duration = 1.0;
   sc.output_dt = 0.01;
   sc.disk = red_disk_uniform(0.1, 1.0, 9.81);
-  sc.reduced.theta_limit = 0.01;
-  dv_scenario_defaults(&sc);
   return sc;
 }
 
@@ -54,7 +52,7 @@ static void check_round_trip(void) {
   for (int geom = 0; geom < 2; geom++)
     for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
       dv_scenario sc = base();
-      sc.mujoco.geom = geom;
+      dv_scenario_set_number(&sc, "mujoco", "geom", geom, NULL);
       dv_error err = {{0}};
       dv_sample s;
       dv_engine_stats st;
@@ -69,7 +67,7 @@ static void check_round_trip(void) {
       for (int i = 0; i < RED_NSTATE; i++)
         CHECK_NEAR(s.y[i], states[k][i], 1e-12 * (1 + fabs(states[k][i])), "state component");
       const dv_geometry g = {geom ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc.disk.r,
-                             sc.mujoco.half_thickness};
+                             dv_scenario_get(&sc, "mujoco", "half_thickness")};
       dv_pose pose;
       dv_pose_from_state(&g, states[k], &pose);
       const double energy = dv_pose_energy(&sc.disk, &pose);
@@ -80,8 +78,8 @@ static void check_round_trip(void) {
     }
   /* a flat ellipsoid (e = 1e-6 m) is the thin disk to O(e^2 / r^2) */
   dv_scenario sc = base();
-  sc.mujoco.geom = 1;
-  sc.mujoco.half_thickness = 1e-6;
+  dv_scenario_set_number(&sc, "mujoco", "geom", 1, NULL);
+  dv_scenario_set_number(&sc, "mujoco", "half_thickness", 1e-6, NULL);
   dv_sample s;
   dv_engine_stats st;
   sc.duration = 0.0;
@@ -92,7 +90,7 @@ static void check_round_trip(void) {
 
 static void check_grid(void) {
   dv_scenario sc = base();
-  sc.mujoco.timestep = 1e-3;
+  dv_scenario_set_number(&sc, "mujoco", "timestep", 1e-3, NULL);
   const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};
   dv_sample s;
   dv_engine_stats st;
@@ -105,9 +103,9 @@ static void check_grid(void) {
 /* largest |theta - 1| over 1 s of a steady circle at theta = 1 (thin ellipsoid) */
 static double circle_drift(double dt, double timeconst) {
   dv_scenario sc = base();
-  sc.mujoco.geom = 1;
-  sc.mujoco.timestep = dt;
-  sc.mujoco.solref_timeconst = timeconst;
+  dv_scenario_set_number(&sc, "mujoco", "geom", 1, NULL);
+  dv_scenario_set_number(&sc, "mujoco", "timestep", dt, NULL);
+  dv_scenario_set_number(&sc, "mujoco", "solref_timeconst", timeconst, NULL);
   const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};
   dv_error err = {{0}};
   dv_sample s;
@@ -144,7 +142,7 @@ static void check_faults(void) {
   CHECK(e && st.outcome == DV_OUTCOME_DIVERGED && st.detail[0], "NaN: %s", st.detail);
   E->free(e);
   /* a 50 ms step under a huge spin blows up */
-  sc.mujoco.timestep = 0.05;
+  dv_scenario_set_number(&sc, "mujoco", "timestep", 0.05, NULL);
   sc.output_dt = 0.05;
   const double spin[RED_NSTATE] = {M_PI / 2, 0.01, 0, 1e4, 0, 0, 0, 0};
   CHECK(run(&sc, spin, 1.0, &s, &st) < 0 && st.outcome == DV_OUTCOME_DIVERGED, "blow-up: %s: %s",
@@ -164,7 +162,7 @@ static void check_faults(void) {
   E->free(e);
   /* falling: lying down ends the run at an event, before the sample time */
   sc = base();
-  sc.reduced.theta_limit = 0.05;
+  dv_scenario_set_number(&sc, "reduced", "theta_limit", 0.05, NULL);
   const double fall[RED_NSTATE] = {M_PI / 2 - 0.1, 0, 0, 0, 0, 0, 0, 0};
   CHECK(run(&sc, fall, 3.0, &s, &st) == DV_EVENT && st.outcome == DV_OUTCOME_EVENT, "fall: %s: %s",
         dv_outcome_name(st.outcome), st.detail);

@@ -13,11 +13,10 @@
 
 /* a uniform disk (r 0.1 m, m 1 kg) with every setting at its default */
 static void scenario(dv_scenario *sc) {
-  memset(sc, 0, sizeof *sc);
+  dv_engine_init_scenario(sc);
   sc->disk = red_disk_uniform(0.1, 1.0, 9.81);
   sc->duration = 1.0;
   sc->output_dt = 0.01;
-  dv_scenario_defaults(sc);
 }
 
 /* (a) the mapping round trip through ODE's body state */
@@ -29,7 +28,7 @@ static void test_round_trip(void) {
   };
   dv_scenario sc;
   scenario(&sc);
-  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc.disk.r, sc.ode.half_thickness};
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc.disk.r, dv_scenario_get(&sc, "ode", "half_thickness")};
   dv_error err = {{0}};
   void *e = dv_engine_ode.alloc(&sc, &err);
   CHECK(e != NULL, "alloc: %s", err.msg);
@@ -57,7 +56,7 @@ static void test_round_trip(void) {
         s.contacts);
   dv_engine_stats st;
   dv_engine_ode.stats(e, &st);
-  CHECK(st.steps == lround(0.05 / sc.ode.timestep), "steps %ld", st.steps);
+  CHECK(st.steps == lround(0.05 / dv_scenario_get(&sc, "ode", "timestep")), "steps %ld", st.steps);
   dv_engine_ode.free(e);
 }
 
@@ -65,7 +64,7 @@ static void test_round_trip(void) {
 static void test_absurd(void) {
   dv_scenario sc;
   scenario(&sc);
-  sc.ode.timestep = 0.05;
+  dv_scenario_set_number(&sc, "ode", "timestep", 0.05, NULL);
   const double y[RED_NSTATE] = {1.0, 5.0, 300.0, -3000.0, 0, 0, 0, 0};
   dv_error err = {{0}};
   void *e = dv_engine_ode.alloc(&sc, &err);

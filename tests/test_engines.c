@@ -46,27 +46,26 @@ static int run(const dv_engine_type *e, const dv_scenario *sc, traj *tr) {
 
 static dv_scenario base(const char *name, double duration) {
   dv_scenario sc;
-  memset(&sc, 0, sizeof sc);
+  dv_engine_init_scenario(&sc);
   snprintf(sc.name, sizeof sc.name, "%s", name);
   sc.duration = duration;
   sc.output_dt = 0.01;
   sc.disk = red_disk_uniform(0.1, 1.0, 9.81);
-  dv_scenario_defaults(&sc);
   return sc;
 }
 
 static dv_geometry engine_geometry(const dv_engine_type *e, const dv_scenario *sc) {
   if (!strcmp(e->name, "ode"))
-    return (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, sc->ode.half_thickness};
-  return (dv_geometry){sc->mujoco.geom == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
-                       sc->mujoco.half_thickness};
+    return (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, dv_scenario_get(sc, "ode", "half_thickness")};
+  return (dv_geometry){dv_scenario_get(sc, "mujoco", "geom") == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
+                       dv_scenario_get(sc, "mujoco", "half_thickness")};
 }
 
 /* the half-thickness of the matched reference: the engine's cylinder, or the
  * thin disk for MuJoCo's ellipsoid (no rim corners, O(e^2/r) height error) */
 static double engine_h(const dv_engine_type *e, const dv_scenario *sc) {
-  if (!strcmp(e->name, "ode")) return sc->ode.half_thickness;
-  return sc->mujoco.geom == 1 ? 0.0 : sc->mujoco.half_thickness;
+  if (!strcmp(e->name, "ode")) return dv_scenario_get(sc, "ode", "half_thickness");
+  return dv_scenario_get(sc, "mujoco", "geom") == 1 ? 0.0 : dv_scenario_get(sc, "mujoco", "half_thickness");
 }
 
 static void check_round_trip(const dv_engine_type *e) {
@@ -78,7 +77,7 @@ static void check_round_trip(const dv_engine_type *e) {
     dv_scenario sc = base("round trip", 0.0);
     sc.duration = sc.output_dt = 0.01;
     memcpy(sc.initial, states[k], sizeof sc.initial);
-    sc.matched.half_thickness = engine_h(e, &sc);
+    dv_scenario_set_number(&sc, "matched", "half_thickness", engine_h(e, &sc), NULL);
     run(e, &sc, &a);
     run(&dv_engine_matched, &sc, &b);
     CHECK(a.n >= 1 && b.n >= 1, "%s: state %d: no sample", e->name, k);
@@ -143,7 +142,7 @@ static void check_accuracy(const dv_engine_type *e) {
   for (size_t c = 0; c < 3; c++) {
     dv_scenario sc = base(cases[c].name, cases[c].duration);
     memcpy(sc.initial, cases[c].y, sizeof sc.initial);
-    sc.matched.half_thickness = cases[c].thin ? 0.0 : engine_h(e, &sc);
+    dv_scenario_set_number(&sc, "matched", "half_thickness", cases[c].thin ? 0.0 : engine_h(e, &sc), NULL);
     run(e, &sc, &a);
     run(&dv_engine_matched, &sc, &b);
     double th, path;

@@ -45,16 +45,22 @@ static void fake_free(void *p) {
 static const char *fake_version(void) {
   return "test";
 }
-static const dv_engine_type fake_engine = {
-    "fake",     "emits NaN at step 7", fake_version, fake_alloc,
-    fake_reset, fake_advance,          fake_stats,   fake_free};
+static const dv_engine_type fake_engine = {.name = "fake",
+                                           .description = "emits NaN at step 7",
+                                           .role = DV_ENGINE_CONTACT,
+                                           .version = fake_version,
+                                           .alloc = fake_alloc,
+                                           .reset = fake_reset,
+                                           .advance = fake_advance,
+                                           .stats = fake_stats,
+                                           .free = fake_free};
 
 int main(int argc, char **argv) {
   gsl_set_error_handler_off();
   if (argc < 2) return fprintf(stderr, "usage: test_faults SCENARIO\n"), 2;
   static dv_scenario sc;
   dv_error err = {{0}};
-  CHECK(dv_scenario_load(argv[1], NULL, 0, &sc, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_engine_load_scenario(argv[1], NULL, 0, &sc, &err) == DV_OK, "%s", err.msg);
   dv_engine_stats st;
   FILE *sink = fopen("/dev/null", "w");
   int status = dv_run_write_csv(&fake_engine, &sc, sink, NULL, &st, &err);

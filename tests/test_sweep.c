@@ -29,8 +29,8 @@ static double sweep_order(const char *engine, const char *spec, const char *cons
   for (size_t k = 0; k < s.n; k++) {
     h[k] = atof(s.p[k].values[0]);
     e[k] = s.p[k].metric[DV_THETA_MAX_ERR];
-    printf("%s %s: theta error %.3e (%s)\n", engine, s.p[k].values[0], e[k], s.p[k].outcome);
-    CHECK(s.p[k].ok, "%s: point %zu: %s %s", engine, k, s.p[k].outcome, s.p[k].detail);
+    printf("%s %s: theta error %.3e (%s)\n", engine, s.p[k].values[0], e[k], dv_run_verdict_name(s.p[k].verdict));
+    CHECK(s.p[k].ok, "%s: point %zu: %s %s", engine, k, dv_run_verdict_name(s.p[k].verdict), s.p[k].detail);
     if (k) CHECK(e[k] < e[k - 1], "%s: error does not fall from %g to %g", engine, h[k - 1], h[k]);
   }
   const double p = dv_search_fit_order(h, e, s.n);

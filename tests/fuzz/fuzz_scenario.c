@@ -38,7 +38,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     set[n] = '\0';
   }
   dv_error err = {{0}};
-  const int status = dv_scenario_load(path, sets, set[0] ? 1 : 0, &sc, &err);
+  const int status = dv_engine_load_scenario(path, sets, set[0] ? 1 : 0, &sc, &err);
   CHECK_OR_ABORT(status == DV_OK || status == DV_EINPUT);
   CHECK_OR_ABORT(status == DV_OK || err.msg[0]); /* every refusal explains itself */
   return 0;

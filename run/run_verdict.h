@@ -1,0 +1,30 @@
+/* run_verdict: how an engine's run compares with its reference, as one
+ * word CI and people read; the same names in every output. */
+#ifndef DV_RUN_VERDICT_H
+#define DV_RUN_VERDICT_H
+
+#include "dv_engine.h"
+
+typedef enum dv_verdict {
+  DV_VERDICT_AGREES = 0,     /* every metric within its limit */
+  DV_VERDICT_EXCEEDS,        /* "exceeds tolerance": a metric above its limit */
+  DV_VERDICT_DIVERGED,       /* the run failed: NaN, a blow-up, a reset state */
+  DV_VERDICT_LOST_CONTACT,   /* the disk left the ground */
+  DV_VERDICT_ERROR,          /* a library or set-up error */
+  DV_VERDICT_ENDED_BY_EVENT, /* the engine's run ended at an event before the reference's */
+  DV_VERDICT_INVALID,        /* settings refused before the run (sweeps) */
+  DV_VERDICT_MISSING,        /* never reported (a lost MPI rank) */
+  DV_NVERDICTS
+} dv_verdict;
+
+/* "agrees", "exceeds tolerance", "diverged", "lost contact", "error",
+ * "ended by event", "invalid", "missing" */
+const char *dv_run_verdict_name(dv_verdict verdict);
+
+/* the verdict of a run that failed with outcome */
+dv_verdict dv_run_verdict_of_outcome(dv_outcome outcome);
+
+/* a verdict that says the run itself failed (diverged, lost contact, error, invalid, missing) */
+int dv_run_verdict_failed(dv_verdict verdict);
+
+#endif

@@ -1,0 +1,165 @@
+/* scenario_core: the sections every scenario has ([scenario], [disk],
+ * [initial]), their checks, and the metric names a tolerance may limit. */
+#include "scenario_core.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "red_steady.h"
+
+const char *const dv_metric_names[DV_NMETRICS] = {"theta_max_err", "theta_rms_err",  "path_max_err",
+                                                  "path_rms_err",  "path_hausdorff", "energy_drift",
+                                                  "slip_max"};
+
+#define AT(field) offsetof(dv_scenario, field)
+#define STATE(k) (offsetof(dv_scenario, initial) + (k) * sizeof(double))
+#define OPEN (DV_SETTING_OPEN_LO | DV_SETTING_OPEN_HI)
+#define REQ DV_SETTING_REQUIRED
+
+int dv_scenario_check_name(const char *name, char *what, size_t size) {
+  const size_t n = strlen(name);
+  if (n == 0) return snprintf(what, size, "empty"), -1;
+  if (strspn(name, DV_SCENARIO_NAME_CHARS) != n || !strcmp(name, ".") || !strcmp(name, ".."))
+    return snprintf(what, size,
+                    "'%.80s' is not a file name: use letters, digits, '.', '-', '_', '+' "
+                    "(not '.' or '..')",
+                    name),
+           -1;
+  return 0;
+}
+
+static int issue(dv_setting_issue *is, const char *section, const char *key, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+static int issue(dv_setting_issue *is, const char *section, const char *key, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(is->what, sizeof is->what, fmt, ap);
+  va_end(ap);
+  is->section = section;
+  is->key = key;
+  return -1;
+}
+
+static int find_engine(const dv_scenario *sc, const char *name) {
+  for (size_t i = 0; i < sc->nsections; i++)
+    if (!strcmp(sc->sections[i]->name, name)) return (int)i;
+  return -1;
+}
+
+/* [scenario]: a name that is one path component, known engines, sample count */
+static int check_scenario(dv_scenario *sc, void *block, dv_setting_issue *is) {
+  char list[64], names[128] = "", what[200];
+  if (dv_scenario_check_name(sc->name, what, sizeof what))
+    return issue(is, "scenario", "name", "%s", what);
+  snprintf(list, sizeof list, "%s", sc->engines);
+  for (size_t i = 0; i < sc->nsections; i++)
+    snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
+             sc->sections[i]->name);
+  size_t count = 0;
+  for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok;
+       tok = strtok_r(NULL, ", ", &save), count++)
+    if (find_engine(sc, tok) < 0 || count == sc->nsections)
+      return issue(is, "scenario", "engines", "'%s': at most %zu of %s", tok, sc->nsections, names);
+  if (sc->output_dt > sc->duration)
+    return issue(is, "scenario", "output_dt", "%g s is longer than the duration %g s",
+                 sc->output_dt, sc->duration);
+  if (sc->duration / sc->output_dt > 1e7)
+    return issue(is, "scenario", "output_dt", "more than 1e7 samples (duration / output_dt)");
+  return 0;
+}
+
+/* [disk]: A and C of a uniform disk unless given; no rigid body has C > 2A */
+static int check_disk(dv_scenario *sc, void *block, dv_setting_issue *is) {
+  red_disk *d = &sc->disk;
+  const double mr2 = d->m * d->r * d->r;
+  const int given_c = !isnan(d->C);
+  if (isnan(d->A)) d->A = 0.25 * mr2;
+  if (!given_c) d->C = 0.5 * mr2;
+  if (d->C > 2.0 * d->A * (1.0 + 1e-15))
+    return issue(is, "disk", given_c ? "C" : "A",
+                 "C = %g exceeds 2A = %g: no rigid body has these moments", d->C, 2.0 * d->A);
+  return 0;
+}
+
+/* [initial]: the rates given, or those of the steady motion asked for */
+static int check_initial(dv_scenario *sc, void *block, dv_setting_issue *is) {
+  double *y = sc->initial;
+  const int has_radius = !isnan(sc->steady_circle_radius);
+  const int has_rate = !isnan(sc->steady_phi_dot);
+  sc->init_mode = has_radius ? DV_INIT_STEADY_RADIUS
+                  : has_rate ? DV_INIT_STEADY_PHI_DOT
+                             : DV_INIT_STATE;
+  if (sc->init_mode == DV_INIT_STATE) {
+    for (int k = RED_VTH; k <= RED_VPS; k++)
+      if (isnan(y[k])) y[k] = 0.0;
+    return 0;
+  }
+  const char *steady_key = has_radius ? "steady_circle_radius" : "steady_phi_dot";
+  const char *rates[] = {"theta_dot", "phi_dot", "psi_dot", "steady_phi_dot"};
+  const double given[] = {y[RED_VTH], y[RED_VPH], y[RED_VPS],
+                          has_radius ? sc->steady_phi_dot : NAN};
+  for (size_t i = 0; i < 4; i++)
+    if (!isnan(given[i]))
+      return issue(is, "initial", rates[i],
+                   "cannot be combined with %s (the steady motion fixes the rates)", steady_key);
+  dv_error e;
+  y[RED_VTH] = 0.0;
+  const int status =
+      has_radius
+          ? red_steady_from_radius(&sc->disk, y[RED_TH], sc->steady_circle_radius, &y[RED_VPH],
+                                   &y[RED_VPS], &e)
+          : red_steady_from_phi_dot(&sc->disk, y[RED_TH], sc->steady_phi_dot, &y[RED_VPS], &e);
+  if (has_rate) y[RED_VPH] = sc->steady_phi_dot;
+  return status ? issue(is, "initial", steady_key, "%s", e.msg) : 0;
+}
+
+static const dv_setting_spec SCENARIO_KEYS[] = {
+    {"name", DV_SETTING_TEXT, AT(name), sizeof(((dv_scenario *)0)->name), REQ, 0, 0, 0, NULL, NULL,
+     "", "names the report's directory"},
+    {"description", DV_SETTING_TEXT, AT(description), sizeof(((dv_scenario *)0)->description), 0, 0,
+     0, 0, NULL, NULL, "", "one line"},
+    {"engines", DV_SETTING_TEXT, AT(engines), sizeof(((dv_scenario *)0)->engines), 0, 0, 0, 0, NULL,
+     NULL, "", "engines a comparison runs (default: the contact engines)"},
+    {"duration", DV_SETTING_REAL, AT(duration), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
+    {"output_dt", DV_SETTING_REAL, AT(output_dt), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
+};
+
+static const dv_setting_spec DISK_KEYS[] = {
+    {"radius", DV_SETTING_REAL, AT(disk.r), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "m", ""},
+    {"mass", DV_SETTING_REAL, AT(disk.m), 0, REQ | OPEN, 0, 0.0, 1e12, NULL, NULL, "kg", ""},
+    {"A", DV_SETTING_REAL, AT(disk.A), 0, OPEN, NAN, 0.0, INFINITY, NULL, NULL, "kg m^2",
+     "about a diameter (default m r^2 / 4)"},
+    {"C", DV_SETTING_REAL, AT(disk.C), 0, DV_SETTING_OPEN_HI, NAN, 0.0, INFINITY, NULL, NULL,
+     "kg m^2", "about the axis (default m r^2 / 2)"},
+    {"gravity", DV_SETTING_REAL, AT(disk.g), 0, DV_SETTING_OPEN_HI, 9.81, 0.0, 1e6, NULL, NULL,
+     "m/s^2", ""},
+};
+
+static const dv_setting_spec INITIAL_KEYS[] = {
+    {"theta", DV_SETTING_REAL, STATE(RED_TH), 0, REQ | OPEN, 0, 0.0, M_PI, NULL, NULL, "rad",
+     "tilt: pi/2 upright"},
+    {"phi", DV_SETTING_REAL, STATE(RED_PH), 0, OPEN, 0, -1e6, 1e6, NULL, NULL, "rad", ""},
+    {"psi", DV_SETTING_REAL, STATE(RED_PS), 0, OPEN, 0, -1e6, 1e6, NULL, NULL, "rad", ""},
+    {"x", DV_SETTING_REAL, STATE(RED_X), 0, OPEN, 0, -1e12, 1e12, NULL, NULL, "m", ""},
+    {"y", DV_SETTING_REAL, STATE(RED_Y), 0, OPEN, 0, -1e12, 1e12, NULL, NULL, "m", ""},
+    {"theta_dot", DV_SETTING_REAL, STATE(RED_VTH), 0, OPEN, NAN, -1e6, 1e6, NULL, NULL, "rad/s",
+     ""},
+    {"phi_dot", DV_SETTING_REAL, STATE(RED_VPH), 0, OPEN, NAN, -1e6, 1e6, NULL, NULL, "rad/s", ""},
+    {"psi_dot", DV_SETTING_REAL, STATE(RED_VPS), 0, OPEN, NAN, -1e6, 1e6, NULL, NULL, "rad/s", ""},
+    {"steady_circle_radius", DV_SETTING_REAL, AT(steady_circle_radius), 0, OPEN, NAN, -INFINITY,
+     INFINITY, NULL, NULL, "m", "start on this steady circle"},
+    {"steady_phi_dot", DV_SETTING_REAL, AT(steady_phi_dot), 0, OPEN, NAN, -1e6, 1e6, NULL, NULL,
+     "rad/s", "start in the steady motion of this turning rate"},
+};
+
+#define SECTION(name, keys, check) \
+  { name, keys, sizeof keys / sizeof keys[0], 0, check }
+
+const dv_settings_section dv_scenario_core[DV_NCORE_SECTIONS] = {
+    SECTION("scenario", SCENARIO_KEYS, check_scenario),
+    SECTION("disk", DISK_KEYS, check_disk),
+    SECTION("initial", INITIAL_KEYS, check_initial),
+};
