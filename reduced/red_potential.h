@@ -11,7 +11,7 @@
 #ifndef RED_POTENTIAL_H
 #define RED_POTENTIAL_H
 
-#include "../common/dv_error.h"
+#include "dv_error.h"
 #include "red_disk.h"
 
 /* U(theta) for the integrals f1, f2 (J) */

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "../common/dv_error.h"
+#include "dv_error.h"
 
 #define RED_MAX_DIM 16
 #define RED_MAX_EVENTS 6

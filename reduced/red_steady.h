@@ -11,7 +11,7 @@
 #ifndef RED_STEADY_H
 #define RED_STEADY_H
 
-#include "../common/dv_error.h"
+#include "dv_error.h"
 #include "red_disk.h"
 
 /* v_psi of the steady motion with tilt theta and heading rate v_phi != 0 */

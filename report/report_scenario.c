@@ -130,7 +130,8 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
     char ref[48];
     if (r->half_thickness > 0.0)
-      snprintf(ref, sizeof ref, "matched, h = %g m", r->half_thickness);
+      snprintf(ref, sizeof ref, "%s, h = %g m", dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name,
+               r->half_thickness);
     else
       snprintf(ref, sizeof ref, "thin disk");
     fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
