@@ -10,12 +10,8 @@
 
 #include "dv_engine.h"
 #include "run_trajectory.h"
+#include "dv_clock.h"
 
-static double now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 static dv_scenario circle(void) {
   dv_scenario sc;
@@ -36,7 +32,7 @@ static double time_run(const dv_engine_type *e, const dv_scenario *sc, int mode,
   for (int r = 0; r < 5; r++) {
     dv_error err;
     dv_engine_stats st;
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     if (mode) {
       FILE *sink = mode == 2 ? fopen("/dev/null", "w") : NULL;
       dv_run_write_csv(e, sc, sink, NULL, &st, &err);
@@ -49,7 +45,7 @@ static double time_run(const dv_engine_type *e, const dv_scenario *sc, int mode,
       e->stats(eng, &st);
       e->free(eng);
     }
-    best = fmin(best, now() - t0);
+    best = fmin(best, dv_clock_now() - t0);
     *steps = st.steps;
   }
   return best;

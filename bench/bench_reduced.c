@@ -16,6 +16,7 @@
 #include <time.h>
 
 #include "red_reference.h"
+#include "dv_clock.h"
 
 #define TARGET 1e-10
 #define REPEAT 3
@@ -31,11 +32,6 @@ static int keep(double t, const double *y, void *ctx) {
   return 0;
 }
 
-static double now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 /* best-of-REPEAT wall time of one reference run; theta samples left in out */
 static double time_run(red_reference *ref, const red_stepper_type *T, double rtol, const double *y0,
@@ -47,9 +43,9 @@ static double time_run(red_reference *ref, const red_stepper_type *T, double rto
     out->n = 0;
     red_run run = {T, rtol, rtol * 1e-2, 0.0, duration, dt, keep, out};
     red_result res;
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     red_solve(&ref->sys, &run, y, &res, NULL);
-    best = fmin(best, now() - t0);
+    best = fmin(best, dv_clock_now() - t0);
   }
   return best;
 }
@@ -69,14 +65,14 @@ static double time_baseline(red_disk *dk, const double *y0, double duration, dou
     double y[RED_NSTATE], t = 0.0;
     memcpy(y, y0, sizeof y);
     out->n = 0;
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     keep(0.0, y, out);
     const long n = lround(duration / dt);
     for (long k = 1; k <= n; k++) {
       if (gsl_odeiv2_driver_apply(d, &t, k * dt, y) != GSL_SUCCESS) break;
       keep(t, y, out);
     }
-    best = fmin(best, now() - t0);
+    best = fmin(best, dv_clock_now() - t0);
     gsl_odeiv2_driver_free(d);
   }
   return best;

@@ -15,12 +15,8 @@
 #include "search_best.h"
 #include "search_sweep.h"
 #include "run_trajectory.h"
+#include "dv_clock.h"
 
-static double now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 static int discard(void *ctx, const dv_sample *s) {
   return 0;
@@ -40,9 +36,9 @@ int main(int argc, char **argv) {
 
   double t[2];
   for (int jobs = 1; jobs <= 2; jobs++) {
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     dv_search_sweep_run(shortc, NULL, 0, "mujoco", &v, 1, jobs, &s, &err);
-    t[jobs - 1] = now() - t0;
+    t[jobs - 1] = dv_clock_now() - t0;
     if (jobs == 2) break;
     dv_search_sweep_free(&s);
   }
@@ -61,9 +57,9 @@ int main(int argc, char **argv) {
     snprintf(o, sizeof o, "engines.mujoco.timestep=%s", s.p[k].values[0]);
     dv_engine_load_scenario(shortc, over, 1, &sc, &err);
     dv_engine_stats st;
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     dv_run_collect(&dv_engine_mujoco, &sc, discard, NULL, &st, &err);
-    engine += (now() - t0) * s.p[k].timed_runs; /* the compared run is the first timed one */
+    engine += (dv_clock_now() - t0) * s.p[k].timed_runs; /* the compared run is the first timed one */
     runs += s.p[k].timed_runs;
   }
   const double overhead = (t[0] - engine) / (double)s.n;

@@ -9,12 +9,7 @@
 
 #include "dv_reference.h"
 #include "run_trajectory.h"
-
-static double now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
+#include "dv_clock.h"
 
 /* sink: keep every sample */
 static int keep(void *ctx, const dv_sample *s) {
@@ -63,9 +58,9 @@ static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_
 /* run type over sc into tr; wall time and stats */
 static int run_into(const dv_engine_type *type, const dv_scenario *sc, dv_traj *tr,
                     dv_engine_stats *st, double *wall, dv_error *err) {
-  const double t0 = now();
+  const double t0 = dv_clock_now();
   const int status = dv_run_collect(type, sc, keep, tr, st, err);
-  if (wall) *wall = now() - t0;
+  if (wall) *wall = dv_clock_now() - t0;
   return status;
 }
 

@@ -30,38 +30,26 @@ double dv_scenario_get(const dv_scenario *sc, const char *engine, const char *ke
   return sp ? dv_setting_value(sp, &sc->settings[i]) : NAN;
 }
 
-/* the spec of [engines.ENGINE] key and its block, or an error */
-static const dv_setting_spec *lookup(dv_scenario *sc, const char *engine, const char *key,
-                                     void **block, dv_error *err) {
+/* set [engines.ENGINE] key from text, or (text NULL) to v */
+static int set(dv_scenario *sc, const char *engine, const char *key, const char *text, double v,
+               dv_error *err) {
   const int i = find(sc, engine);
   const dv_setting_spec *sp = i < 0 ? NULL : dv_settings_find(sc->sections[i], key);
-  if (!sp)
-    dv_fail(err, DV_EINPUT, "engines.%s.%s: no such setting", engine, key);
-  else
-    *block = &sc->settings[i];
-  return sp;
+  char what[320];
+  if (!sp) return dv_fail(err, DV_EINPUT, "engines.%s.%s: no such setting", engine, key);
+  const int bad = text ? dv_setting_parse(sp, text, &sc->settings[i], what, sizeof what)
+                       : dv_setting_store(sp, v, &sc->settings[i], what, sizeof what);
+  return bad ? dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what) : DV_OK;
 }
 
 int dv_scenario_set(dv_scenario *sc, const char *engine, const char *key, const char *text,
                     dv_error *err) {
-  void *block;
-  char what[320];
-  const dv_setting_spec *sp = lookup(sc, engine, key, &block, err);
-  if (!sp) return DV_EINPUT;
-  if (dv_setting_parse(sp, text, block, what, sizeof what))
-    return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what);
-  return DV_OK;
+  return set(sc, engine, key, text, 0.0, err);
 }
 
 int dv_scenario_set_number(dv_scenario *sc, const char *engine, const char *key, double v,
                            dv_error *err) {
-  void *block;
-  char what[320];
-  const dv_setting_spec *sp = lookup(sc, engine, key, &block, err);
-  if (!sp) return DV_EINPUT;
-  if (dv_setting_store(sp, v, block, what, sizeof what))
-    return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what);
-  return DV_OK;
+  return set(sc, engine, key, NULL, v, err);
 }
 
 double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric) {

@@ -116,12 +116,17 @@ static int setup(const char *path, const char *const *sets, size_t nsets, const 
   return DV_OK;
 }
 
-int dv_search_best(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                   double tol, dv_search *out, dv_error *err) {
+/* probe every choice (best), or only the scenario's (stability) */
+static int search(const char *path, const char *const *sets, size_t nsets, const char *engine,
+                  double tol, int every_choice, dv_search *out, dv_error *err) {
   ctx c;
-  double start;
-  int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);
+  double start = NAN;
+  const int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);
   if (status) return status;
+  if (!every_choice) {
+    out->limit = largest(&c, NULL, start, &out->first_failure, err);
+    return DV_OK;
+  }
   const char *choice;
   for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++) {
     int fail;
@@ -136,14 +141,14 @@ int dv_search_best(const char *path, const char *const *sets, size_t nsets, cons
   return DV_OK;
 }
 
+int dv_search_best(const char *path, const char *const *sets, size_t nsets, const char *engine,
+                   double tol, dv_search *out, dv_error *err) {
+  return search(path, sets, nsets, engine, tol, 1, out, err);
+}
+
 int dv_search_stability(const char *path, const char *const *sets, size_t nsets, const char *engine,
                         double tol, dv_search *out, dv_error *err) {
-  ctx c;
-  double start;
-  int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);
-  if (status) return status;
-  out->limit = largest(&c, NULL, start, &out->first_failure, err);
-  return DV_OK;
+  return search(path, sets, nsets, engine, tol, 0, out, err);
 }
 
 const char *dv_search_failure_mode(const dv_probe *p) {

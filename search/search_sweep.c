@@ -12,6 +12,7 @@
 #include "run_scenario.h"
 #include "scenario.h"
 #include "run_trajectory.h"
+#include "dv_clock.h"
 
 int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err) {
   const char *eq = strchr(spec, '=');
@@ -48,12 +49,6 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
   return out->n ? DV_OK : dv_fail(err, DV_EINPUT, "--vary %s: no values", spec);
 }
 
-static double now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
 static int discard(void *ctx, const dv_sample *s) {
   return 0;
 }
@@ -68,9 +63,9 @@ static double median_wall(const dv_engine_type *e, const dv_scenario *sc, double
   double w[5] = {first};
   for (int i = 1; i < 5; i++) {
     dv_engine_stats st;
-    const double t0 = now();
+    const double t0 = dv_clock_now();
     dv_run_collect(e, sc, discard, NULL, &st, NULL);
-    w[i] = now() - t0;
+    w[i] = dv_clock_now() - t0;
   }
   qsort(w, 5, sizeof w[0], cmp_double);
   return w[2];
@@ -212,9 +207,12 @@ int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets,
   for (size_t v = 0; v < nvary; v++) n *= vary[v].n;
   if (n > DV_SWEEP_MAX_POINTS)
     return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
-  static dv_scenario sc;
-  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
-  snprintf(out->scenario, sizeof out->scenario, "%s", sc.name);
+  dv_scenario *sc = malloc(sizeof *sc);
+  if (!sc) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  const int loaded = dv_engine_load_scenario(path, sets, nsets, sc, err);
+  snprintf(out->scenario, sizeof out->scenario, "%s", sc->name);
+  free(sc);
+  if (loaded) return DV_EINPUT;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   out->nvary = nvary;
   memcpy(out->vary, vary, nvary * sizeof *vary);

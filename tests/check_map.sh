@@ -13,9 +13,8 @@ bad=$(awk -F, 'NR > 1 && (($4 >= 1.5 && $5 != "stays up") || ($4 <= 0.5 && $5 ==
 [ -z "$bad" ] || { echo "FAIL: cells against the theory:"; echo "$bad"; exit 1; }
 [ -s "$work/serial/map_reduced.svg" ] || { echo "FAIL: no map_reduced.svg"; exit 1; }
 if command -v mpirun >/dev/null && [ -z "${DV_TEST_NO_MPI:-}" ]; then
-  root=()
-  [ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
-  mpirun "${root[@]}" --oversubscribe -np 3 "$1" "${args[@]}" --out "$work/mpi" >/dev/null
+  . "$(dirname "$0")/mpi_run.sh"
+  mpi_run 3 "$1" "${args[@]}" --out "$work/mpi" >/dev/null
   cmp -s "$work/serial/map.csv" "$work/mpi/map.csv" || { echo "FAIL: mpirun map differs"; exit 1; }
 fi
 echo "map: agrees with the linear theory"

@@ -5,11 +5,9 @@
 set -u
 command -v mpirun >/dev/null || { echo "SKIP: mpirun not installed"; exit 77; }
 diskval=$1 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-root=()
-[ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
-mpi() { mpirun "${root[@]}" --oversubscribe -np 3 "$diskval" "$@"; }
+. "$src/tests/mpi_run.sh"
+mpi_scratch
+mpi() { mpi_run 3 "$diskval" "$@"; }
 fail=0
 sweep=(sweep "$src/tests/data/short_circle.ini" --engine ode --vary timestep=8e-5..1e-5:5)
 mpi "${sweep[@]}" --out "$work/mpi" >/dev/null || { echo "FAIL: mpirun sweep"; fail=1; }
