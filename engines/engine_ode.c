@@ -1,10 +1,14 @@
-/* engine_ode: the disk as one rigid cylinder on a plane in ODE 0.16 (double
- * precision, DESIGN section 4).
+/* engine_ode: the disk as one rigid body on a plane in ODE 0.16 (double
+ * precision, DESIGN section 4). Its geom (the geom key) is the thin disk by
+ * default: a user geom class with one contact at the lowest point of the rim
+ * circle (engine_ode_thin.h), compared with the thin reference; or a cylinder
+ * of half_thickness, ODE's own collider (at most 4 points), compared with the
+ * reference of that thickness.
  *
- * Each step collides the cylinder with the plane directly (dCollide, at most
- * 4 points), makes contact joints (Coulomb friction; no rolling or pivot
- * friction), steps (dWorldStep or dWorldQuickStep; ODE's implicit gyroscopic
- * term stays on) and empties the joint group. The world's ERP/CFM are set
+ * Each step collides the geom with the plane directly (dCollide), makes
+ * contact joints (Coulomb friction; no rolling or pivot friction), steps
+ * (dWorldStep or dWorldQuickStep; ODE's implicit gyroscopic term stays on)
+ * and empties the joint group. The world's ERP/CFM are set
  * but only matter to non-contact joints: the contacts use soft_erp/soft_cfm.
  *
  * Faults end the run, never the process. ODE's error and debug handlers must
@@ -29,6 +33,7 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "engine_ode_thin.h"
 
 #define ODE_MAX_CONTACTS 4
 #define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
@@ -44,11 +49,13 @@ typedef struct ode_settings {
   int friction_model;        /* 0 coefficient (dContactApprox1), 1 force limit (N) */
   double friction;           /* coefficient, or force limit in N */
   double soft_erp, soft_cfm; /* contact softness */
+  int geom;                  /* 0 thin disk (user geom), 1 cylinder */
   double half_thickness;     /* m, cylinder half-length */
 } ode_settings;
 
 static const char *const STEPPERS[] = {"step", "quickstep", NULL};
 static const char *const FRICTION_MODELS[] = {"coefficient", "force_limit", NULL};
+static const char *const GEOMS[] = {"thin", "cylinder", NULL};
 
 #define AT(field) offsetof(ode_settings, field)
 #define NUM DV_SETTING_REAL, AT
@@ -68,8 +75,10 @@ static const dv_setting_spec KEYS[] = {
     {"friction", NUM(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "", "coefficient, or N"},
     {"soft_erp", NUM(soft_erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "", "contact"},
     {"soft_cfm", NUM(soft_cfm), 0, 0, 1e-8, 0.0, 1.0, NULL, NULL, "", "contact"},
+    {"geom", PICK(geom), 0, 0, 0, 0, 1, GEOMS, NULL, "",
+     "thin: the exact disk, one contact; cylinder: a stand-in"},
     {"half_thickness", NUM(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL, "m",
-     "cylinder half-length"},
+     "cylinder half-length (geom = cylinder)"},
 };
 
 static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
@@ -79,8 +88,10 @@ static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
 static const dv_settings_section SETTINGS = {"ode", KEYS, sizeof KEYS / sizeof KEYS[0],
                                              sizeof(ode_settings), ode_check};
 
+/* the thin disk is compared with the thin reference; the cylinder with its match */
 static double ode_half_thickness(const dv_scenario *sc) {
-  return ((const ode_settings *)dv_scenario_settings(sc, SETTINGS.name))->half_thickness;
+  const ode_settings *s = dv_scenario_settings(sc, SETTINGS.name);
+  return s->geom == 1 ? s->half_thickness : 0.0;
 }
 
 static const dv_engine_search SEARCH = {"ode", "stepper", "timestep", 1e-7, 0.02};
@@ -91,7 +102,7 @@ typedef struct ode_engine {
   dv_geometry geom;
   dWorldID world;
   dBodyID body;
-  dGeomID cylinder, plane;
+  dGeomID shape, plane; /* the thin disk or the cylinder; the ground */
   dJointGroupID group;
   long k;                    /* steps since reset: time = k timestep */
   double prev_y[RED_NSTATE]; /* last canonical state, for unwrapping */
@@ -215,10 +226,10 @@ static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
 /* destroy the ODE objects (NULL-safe) */
 static int ode_destroy(ode_engine *e, void *arg, dv_error *err) {
   if (e->group) dJointGroupDestroy(e->group);
-  if (e->cylinder) dGeomDestroy(e->cylinder);
+  if (e->shape) dGeomDestroy(e->shape);
   if (e->plane) dGeomDestroy(e->plane);
   if (e->world) dWorldDestroy(e->world); /* destroys the body too */
-  e->group = NULL, e->cylinder = e->plane = NULL, e->world = NULL, e->body = NULL;
+  e->group = NULL, e->shape = e->plane = NULL, e->world = NULL, e->body = NULL;
   return DV_OK;
 }
 
@@ -230,7 +241,7 @@ static void ode_free(void *p) {
   free(e);
 }
 
-/* world, body, cylinder and plane */
+/* world, body, disk geom and plane */
 static int ode_build(ode_engine *e, void *arg, dv_error *err) {
   e->world = dWorldCreate();
   dWorldSetGravity(e->world, 0.0, 0.0, -e->disk.g);
@@ -242,9 +253,12 @@ static int ode_build(ode_engine *e, void *arg, dv_error *err) {
   dMassSetParameters(&mass, e->disk.m, 0.0, 0.0, 0.0, e->disk.A, e->disk.A, e->disk.C, 0.0, 0.0,
                      0.0);
   dBodySetMass(e->body, &mass);
-  /* ODE's cylinder: axis along local z, length the full thickness */
-  e->cylinder = dCreateCylinder(NULL, e->geom.radius, 2.0 * e->geom.half_thickness);
-  dGeomSetBody(e->cylinder, e->body);
+  /* both about the body's z axis; ODE's cylinder length is the full thickness */
+  if (e->set.geom == 1)
+    e->shape = dCreateCylinder(NULL, e->geom.radius, 2.0 * e->geom.half_thickness);
+  else
+    e->shape = dv_ode_thin_create(e->geom.radius);
+  dGeomSetBody(e->shape, e->body);
   e->plane = dCreatePlane(NULL, 0.0, 0.0, 1.0, 0.0);
   e->group = dJointGroupCreate(0);
   return DV_OK;
@@ -261,16 +275,18 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
   ode_init_once();
   e->set = *(const ode_settings *)dv_scenario_settings(sc, SETTINGS.name);
   e->disk = sc->disk;
-  e->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, e->set.half_thickness};
+  /* a cylinder with h = 0 is the thin disk: rho = r d */
+  e->geom =
+      (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, e->set.geom == 1 ? e->set.half_thickness : 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
   if (ode_guarded(e, ode_build, NULL, err) < 0) return ode_free(e), NULL;
   return e;
 }
 
-/* collide the cylinder with the plane; with joints, add contact joints */
+/* collide the disk geom with the plane; with joints, add contact joints */
 static int ode_collide(ode_engine *e, int joints) {
   dContactGeom cg[ODE_MAX_CONTACTS];
-  const int n = dCollide(e->cylinder, e->plane, ODE_MAX_CONTACTS, cg, sizeof cg[0]);
+  const int n = dCollide(e->shape, e->plane, ODE_MAX_CONTACTS, cg, sizeof cg[0]);
   for (int i = 0; joints && i < n; i++) {
     dContact c;
     memset(&c, 0, sizeof c);
@@ -407,7 +423,7 @@ static void ode_stats(const void *p, dv_engine_stats *out) {
 
 const dv_engine_type dv_engine_ode = {
     .name = "ode",
-    .description = "ODE 0.16 contact simulation: a thin cylinder on a plane",
+    .description = "ODE 0.16 contact simulation: a thin disk (or a cylinder) on a plane",
     .role = DV_ENGINE_CONTACT,
     .settings = &SETTINGS,
     .search = &SEARCH,

@@ -28,7 +28,9 @@ static void test_round_trip(void) {
   };
   dv_scenario sc;
   scenario(&sc);
-  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc.disk.r, dv_scenario_get(&sc, "ode", "half_thickness")};
+  /* the body's geometry: the thin disk by default, a cylinder with h = 0 */
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc.disk.r,
+                            dv_engine_half_thickness(&dv_engine_ode, &sc)};
   dv_error err = {{0}};
   void *e = dv_engine_ode.alloc(&sc, &err);
   CHECK(e != NULL, "alloc: %s", err.msg);
