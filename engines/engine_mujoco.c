@@ -1,17 +1,21 @@
 /* engine_mujoco: the disk as a free body on a plane in MuJoCo 2.2 (DESIGN section 4).
  *
- * The model (one plane, one body with a free joint, one cylinder or flat
- * ellipsoid geom, sliding friction only) is written as MJCF in memory and
- * loaded through a VFS. The free joint's qpos is (centre, quaternion w x y z);
- * its qvel is (centre velocity in the world frame, angular velocity in the
- * body frame). MuJoCo's error handler must not return: every MuJoCo call runs
- * inside trapped(), which turns mju_error into a longjmp and a failed run.
- * MuJoCo silently resets the state on a bad qpos/qvel/qacc and only counts a
- * warning: the counters are checked after every step, so a reset ends the run
- * as diverged. Like the reference, a run ends at an event where theta leaves
+ * The model (one plane, one body with a free joint, one disk geom, sliding
+ * friction only) is written as MJCF in memory and loaded through a VFS. The
+ * disk geom is the thin disk by default: a cylinder geom whose contact is the
+ * one rim point of engine_mujoco_thin.c, installed in MuJoCo's collision
+ * table from alloc to free; a cylinder of half-thickness h (MuJoCo's own
+ * collider, up to four contacts) and a flat ellipsoid are stand-ins. The
+ * free joint's qpos is (centre, quaternion w x y z); its qvel is (centre
+ * velocity in the world frame, angular velocity in the body frame). MuJoCo's
+ * error handler must not return: every MuJoCo call runs inside trapped(),
+ * which turns mju_error into a longjmp and a failed run. MuJoCo silently
+ * resets the state on a bad qpos/qvel/qacc and only counts a warning: the
+ * counters are checked after every step, so a reset ends the run as
+ * diverged. Like the reference, a run ends at an event where theta leaves
  * (theta_limit, pi - theta_limit) ([engines.reduced] theta_limit): the
  * canonical state is singular at a disk lying flat. Not thread-safe: MuJoCo's
- * handler pointers are process-global.
+ * handler pointers and collision table are process-global.
  */
 #include <math.h>
 #include <mujoco/mujoco.h>
@@ -24,6 +28,7 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "engine_mujoco_thin.h"
 
 /* [engines.mujoco]: the defaults are the most accurate affordable settings
  * measured (README, "Engine settings"), not MuJoCo's own */
@@ -40,14 +45,15 @@ typedef struct mujoco_settings {
   double solref_dampratio;                       /* 1: critical damping */
   double solimp_dmin, solimp_dmax, solimp_width; /* impedance, width in m */
   double friction;                               /* sliding friction coefficient */
-  int geom;                                      /* 0 cylinder, 1 ellipsoid */
-  double half_thickness; /* m: cylinder half-length or ellipsoid semi-axis */
+  int geom;                                      /* GEOM_THIN, GEOM_CYLINDER, GEOM_ELLIPSOID */
+  double half_thickness; /* m: cylinder half-length or ellipsoid semi-axis (not the thin disk's) */
 } mujoco_settings;
 
 static const char *const INTEGRATORS[] = {"euler", "rk4", "implicit", NULL};
 static const char *const CONES[] = {"pyramidal", "elliptic", NULL};
 static const char *const SOLVERS[] = {"pgs", "cg", "newton", NULL};
-static const char *const GEOMS[] = {"cylinder", "ellipsoid", NULL};
+static const char *const GEOMS[] = {"thin", "cylinder", "ellipsoid", NULL};
+enum { GEOM_THIN, GEOM_CYLINDER, GEOM_ELLIPSOID }; /* GEOMS' indices */
 
 #define AT(field) offsetof(mujoco_settings, field)
 #define NUM DV_SETTING_REAL, AT
@@ -70,7 +76,8 @@ static const dv_setting_spec KEYS[] = {
     {"solimp_dmax", NUM(solimp_dmax), 0, 0, 0.95, 0.0001, 0.9999, NULL, NULL, "", ""},
     {"solimp_width", NUM(solimp_width), 0, 0, 0.001, 0.0, 1.0, NULL, NULL, "m", ""},
     {"friction", NUM(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "", "sliding coefficient"},
-    {"geom", PICK(geom), 0, 0, 1, 0, 1, GEOMS, NULL, "", "stand-in for the thin disk"},
+    {"geom", PICK(geom), 0, 0, GEOM_THIN, 0, 2, GEOMS, NULL, "",
+     "the thin disk's rim contact, or a stand-in"},
     {"half_thickness", NUM(half_thickness), 0, 0, 5e-4, 1e-6, 1.0, NULL, NULL, "m",
      "cylinder half-length or ellipsoid semi-axis"},
 };
@@ -86,10 +93,11 @@ static const mujoco_settings *settings_of(const dv_scenario *sc) {
   return dv_scenario_settings(sc, SETTINGS.name);
 }
 
-/* the ellipsoid is smooth and compared with the thin disk; the cylinder with its match */
+/* the thin disk and the smooth ellipsoid are compared with the thin disk; the cylinder with
+ * its match */
 static double mujoco_half_thickness(const dv_scenario *sc) {
   const mujoco_settings *s = settings_of(sc);
-  return s->geom == 0 ? s->half_thickness : 0.0;
+  return s->geom == GEOM_CYLINDER ? s->half_thickness : 0.0;
 }
 
 static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02};
@@ -101,6 +109,7 @@ typedef struct mujoco_engine {
   dv_geometry geom;
   mjModel *m;
   mjData *d;
+  int thin;                /* the thin collider is installed for this run */
   double prev[RED_NSTATE]; /* last canonical state, for angle unwrapping */
   double e0;               /* energy at reset, J */
   double e_max;            /* energy above which the run has diverged, J */
@@ -172,23 +181,26 @@ static const char *mujoco_version(void) {
   return text;
 }
 
-/* the MJCF model of the scene; returns its length, or -1 if it did not fit */
+/* the MJCF model of the scene; returns its length, or -1 if it did not fit. The disk geom's
+ * user value marks the thin disk for engine_mujoco_thin.c */
 static int write_model(const dv_scenario *sc, char *xml, size_t size) {
   static const char *const MJ_INTEGRATORS[] = {"Euler", "RK4", "implicit"};
   static const char *const MJ_SOLVERS[] = {"PGS", "CG", "Newton"};
   const mujoco_settings *s = settings_of(sc);
   const red_disk *k = &sc->disk;
   char size_attr[96];
-  if (s->geom == 1)
+  if (s->geom == GEOM_ELLIPSOID)
     snprintf(size_attr, sizeof size_attr, "%.17g %.17g %.17g", k->r, k->r, s->half_thickness);
   else
-    snprintf(size_attr, sizeof size_attr, "%.17g %.17g", k->r, s->half_thickness);
+    snprintf(size_attr, sizeof size_attr, "%.17g %.17g", k->r,
+             s->geom == GEOM_THIN ? dv_mujoco_thin_half_length(k->r) : s->half_thickness);
   const int n = snprintf(
       xml, size,
       "<mujoco model=\"diskval\">\n"
       "  <option timestep=\"%.17g\" gravity=\"0 0 %.17g\" integrator=\"%s\" cone=\"%s\"\n"
       "          impratio=\"%.17g\" solver=\"%s\" tolerance=\"%.17g\" iterations=\"%d\"\n"
       "          noslip_iterations=\"%d\"/>\n"
+      "  <size nuser_geom=\"1\"/>\n"
       "  <default>\n"
       "    <geom condim=\"3\" friction=\"%.17g 0 0\" solref=\"%.17g %.17g\"\n"
       "          solimp=\"%.17g %.17g %.17g 0.5 2\"/>\n"
@@ -198,14 +210,16 @@ static int write_model(const dv_scenario *sc, char *xml, size_t size) {
       "    <body name=\"disk\">\n"
       "      <freejoint/>\n"
       "      <inertial pos=\"0 0 0\" mass=\"%.17g\" diaginertia=\"%.17g %.17g %.17g\"/>\n"
-      "      <geom name=\"disk\" type=\"%s\" size=\"%s\" contype=\"1\" conaffinity=\"0\"/>\n"
+      "      <geom name=\"disk\" type=\"%s\" size=\"%s\" user=\"%g\" contype=\"1\"\n"
+      "            conaffinity=\"0\"/>\n"
       "    </body>\n"
       "  </worldbody>\n"
       "</mujoco>\n",
       s->timestep, -k->g, MJ_INTEGRATORS[s->integrator], CONES[s->cone], s->impratio,
       MJ_SOLVERS[s->solver], s->tolerance, s->iterations, s->noslip_iterations, s->friction,
       s->solref_timeconst, s->solref_dampratio, s->solimp_dmin, s->solimp_dmax, s->solimp_width,
-      k->m, k->A, k->A, k->C, s->geom == 1 ? "ellipsoid" : "cylinder", size_attr);
+      k->m, k->A, k->A, k->C, s->geom == GEOM_ELLIPSOID ? "ellipsoid" : "cylinder", size_attr,
+      s->geom == GEOM_THIN ? DV_MUJOCO_THIN_MARK : 0.0);
   return n > 0 && (size_t)n < size ? n : -1;
 }
 
@@ -228,6 +242,7 @@ static void mujoco_free(void *p) {
   if (!e) return;
   if (e->d) mj_deleteData(e->d);
   if (e->m) mj_deleteModel(e->m);
+  if (e->thin) dv_mujoco_thin_restore();
   free(e);
 }
 
@@ -264,8 +279,13 @@ static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
   }
   e->disk = sc->disk;
   const mujoco_settings *s = settings_of(sc);
-  e->geom = (dv_geometry){s->geom == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
-                          s->half_thickness};
+  /* a cylinder with h = 0 has rho = r d: the thin disk */
+  e->geom = (dv_geometry){s->geom == GEOM_ELLIPSOID ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER,
+                          sc->disk.r, s->geom == GEOM_THIN ? 0.0 : s->half_thickness};
+  if (s->geom == GEOM_THIN) {
+    dv_mujoco_thin_install();
+    e->thin = 1;
+  }
   e->gap = fmax(0.01 * sc->disk.r, 5.0 * s->solimp_width);
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
   end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_SETUP, "advance before reset");

@@ -2,8 +2,8 @@
  *
  * 1. Mapping: reset to a state (theta on both sides of pi/2, angles beyond
  *    pi), advance(0) without a step: the same state (1e-12), the energy of its
- *    pose (1e-12), a rim point at rest; a flat ellipsoid has the thin disk's
- *    energy.
+ *    pose (1e-12), a rim point at rest, for each geom (thin, cylinder,
+ *    ellipsoid); a flat ellipsoid has the thin disk's energy.
  * 2. Samples land on the step grid.
  * 3. Physics: a steady circle drifts less with a smaller step and stiffer contact.
  * 4. Faults end the run, not the process: NaN state, blow-up, lost contact,
@@ -18,6 +18,7 @@
 #include "dv_test.h"
 
 static const dv_engine_type *const E = &dv_engine_mujoco;
+static const char *const GEOMS[] = {"thin", "cylinder", "ellipsoid"};
 
 /* a uniform disk (r 0.1 m, m 1 kg) with every engine setting at its default */
 static dv_scenario base(void) {
@@ -49,10 +50,10 @@ static void check_round_trip(void) {
                                        {M_PI / 2 + 0.3, -0.5, -3.0, 12.0, -2.0, 3.0, 0.2, -0.1},
                                        {2.8, 1.0, 4.0, -2.0, 7.0, -9.0, -1.0, 2.0},
                                        {0.4, -2.0, 1.0, 5.0, 3.1, -3.1, 0.0, 0.0}};
-  for (int geom = 0; geom < 2; geom++)
+  for (int geom = 0; geom < 3; geom++)
     for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
       dv_scenario sc = base();
-      dv_scenario_set_number(&sc, "mujoco", "geom", geom, NULL);
+      CHECK(!dv_scenario_set(&sc, "mujoco", "geom", GEOMS[geom], NULL), "geom %s", GEOMS[geom]);
       dv_error err = {{0}};
       dv_sample s;
       dv_engine_stats st;
@@ -62,23 +63,24 @@ static void check_round_trip(void) {
       CHECK(E->reset(e, states[k], &err) == DV_OK, "reset: %s", err.msg);
       CHECK(E->advance(e, 0.0, &s, &err) == DV_OK, "advance(0): %s", err.msg);
       E->stats(e, &st);
-      CHECK(st.steps == 0 && s.t == 0.0, "geom %d state %zu: %ld steps before t = 0", geom, k,
-            st.steps);
+      CHECK(st.steps == 0 && s.t == 0.0, "geom %s state %zu: %ld steps before t = 0", GEOMS[geom],
+            k, st.steps);
       for (int i = 0; i < RED_NSTATE; i++)
         CHECK_NEAR(s.y[i], states[k][i], 1e-12 * (1 + fabs(states[k][i])), "state component");
-      const dv_geometry g = {geom ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc.disk.r,
-                             dv_scenario_get(&sc, "mujoco", "half_thickness")};
+      /* the thin disk is a cylinder of half-thickness 0 */
+      const dv_geometry g = {geom == 2 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc.disk.r,
+                             geom ? dv_scenario_get(&sc, "mujoco", "half_thickness") : 0.0};
       dv_pose pose;
       dv_pose_from_state(&g, states[k], &pose);
       const double energy = dv_pose_energy(&sc.disk, &pose);
       CHECK_NEAR(s.energy, energy, 1e-12 * fabs(energy), "energy of the pose");
-      CHECK(s.slip < 1e-12 && s.penetration < 1e-15, "geom %d state %zu: slip %g, depth %g", geom,
-            k, s.slip, s.penetration);
+      CHECK(s.slip < 1e-12 && s.penetration < 1e-15, "geom %s state %zu: slip %g, depth %g",
+            GEOMS[geom], k, s.slip, s.penetration);
       E->free(e);
     }
   /* a flat ellipsoid (e = 1e-6 m) is the thin disk to O(e^2 / r^2) */
   dv_scenario sc = base();
-  dv_scenario_set_number(&sc, "mujoco", "geom", 1, NULL);
+  dv_scenario_set(&sc, "mujoco", "geom", "ellipsoid", NULL);
   dv_scenario_set_number(&sc, "mujoco", "half_thickness", 1e-6, NULL);
   dv_sample s;
   dv_engine_stats st;
@@ -103,7 +105,7 @@ static void check_grid(void) {
 /* largest |theta - 1| over 1 s of a steady circle at theta = 1 (thin ellipsoid) */
 static double circle_drift(double dt, double timeconst) {
   dv_scenario sc = base();
-  dv_scenario_set_number(&sc, "mujoco", "geom", 1, NULL);
+  dv_scenario_set(&sc, "mujoco", "geom", "ellipsoid", NULL);
   dv_scenario_set_number(&sc, "mujoco", "timestep", dt, NULL);
   dv_scenario_set_number(&sc, "mujoco", "solref_timeconst", timeconst, NULL);
   const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};

@@ -57,15 +57,17 @@ static dv_scenario base(const char *name, double duration) {
 static dv_geometry engine_geometry(const dv_engine_type *e, const dv_scenario *sc) {
   if (!strcmp(e->name, "ode"))
     return (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, dv_engine_half_thickness(e, sc)};
-  return (dv_geometry){dv_scenario_get(sc, "mujoco", "geom") == 1 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
-                       dv_scenario_get(sc, "mujoco", "half_thickness")};
+  /* MuJoCo's geoms: thin (a cylinder of half-thickness 0), cylinder, ellipsoid */
+  const double geom = dv_scenario_get(sc, "mujoco", "geom");
+  return (dv_geometry){geom == 2 ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER, sc->disk.r,
+                       geom ? dv_scenario_get(sc, "mujoco", "half_thickness") : 0.0};
 }
 
 /* the half-thickness of the matched reference: the engine's cylinder, or the
- * thin disk for MuJoCo's ellipsoid (no rim corners, O(e^2/r) height error) */
+ * thin disk for MuJoCo's thin disk and ellipsoid (no rim corners, O(e^2/r)
+ * height error) */
 static double engine_h(const dv_engine_type *e, const dv_scenario *sc) {
-  if (!strcmp(e->name, "ode")) return dv_engine_half_thickness(e, sc);
-  return dv_scenario_get(sc, "mujoco", "geom") == 1 ? 0.0 : dv_scenario_get(sc, "mujoco", "half_thickness");
+  return dv_engine_half_thickness(e, sc);
 }
 
 static void check_round_trip(const dv_engine_type *e) {
@@ -114,8 +116,8 @@ typedef struct limit {
 } limit;
 
 /* Measured with this test's output at the defaults (theta rad, contact m;
- * upright against the thin disk; MuJoCo's ellipsoid always against the thin disk):
- *   mujoco: upright 5.4e-7 / 1.3e-6, circle 1.8e-4 / 5.3e-3, fall 4.5e-5 / 5.6e-6
+ * upright against the thin disk; MuJoCo's thin disk always against the thin disk):
+ *   mujoco: upright 2.1e-7 / 1.3e-6, circle 1.8e-4 / 5.6e-3, fall 3.3e-5 / 4.3e-6
  *   ode:    upright 7.9e-6 / 2.0e-5, circle 2.4e-3 / 1.8e-2, fall 1.8e-5 / 1.6e-7 (thin disk;
  *           its 2 mm cylinder: upright 1.0e-3 / 9.6e-3 against the thin disk)
  * limits: about 3x the measurement. */
