@@ -46,16 +46,18 @@ int dv_exec_mpi_size(void) {
 
 static volatile sig_atomic_t stop_requested;
 
+/* SIGINT or SIGTERM on rank 0: hand out no more tasks */
 static void on_stop(int sig) {
   stop_requested = sig;
 }
 
+/* without other ranks: every task here, in order */
 static int run_locally(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
-                       unsigned char *done, void (*on_result)(size_t, void *)) {
+                       unsigned char *done, dv_exec_result_fn on_result) {
   for (size_t k = 0; k < n; k++) {
     work(k, (char *)results + k * size, ctx);
     done[k] = 1;
-    if (on_result) on_result(k, ctx);
+    if (on_result) on_result(k, 1, ctx);
   }
   return 0;
 }
@@ -66,7 +68,7 @@ enum { TAG_TASK = 1, TAG_RESULT = 2 };
 
 /* rank 0: hand out indices, collect results; polls so that a signal is seen */
 static int master(size_t n, size_t size, void *results, unsigned char *done,
-                  void (*on_result)(size_t, void *), void *ctx) {
+                  dv_exec_result_fn on_result, void *ctx) {
   const size_t msg = sizeof(unsigned long long) + size;
   char *buf = malloc(msg);
   if (!buf) MPI_Abort(MPI_COMM_WORLD, 2);
@@ -96,7 +98,7 @@ static int master(size_t n, size_t size, void *results, unsigned char *done,
     memcpy((char *)results + k * size, buf + sizeof k, size);
     done[k] = 1;
     pending--;
-    if (on_result) on_result((size_t)k, ctx);
+    if (on_result) on_result((size_t)k, 1, ctx);
     unsigned long long task = next < n ? next++ : STOP;
     MPI_Send(&task, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, TAG_TASK, MPI_COMM_WORLD);
     if (task != STOP) pending++;
@@ -126,7 +128,7 @@ static void worker(size_t size, dv_exec_task_fn work, void *ctx) {
 #endif
 
 int dv_exec_mpi_farm(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
-                unsigned char *done, void (*on_result)(size_t k, void *ctx)) {
+                     unsigned char *done, dv_exec_result_fn on_result) {
   if (world_size < 2) return run_locally(n, size, work, ctx, results, done, on_result);
 #ifdef DV_HAVE_MPI
   if (world_rank == 0) return master(n, size, results, done, on_result, ctx);

@@ -21,12 +21,16 @@ int dv_exec_mpi_size(void);
 /* compute one task into result (size bytes) */
 typedef void (*dv_exec_task_fn)(size_t k, void *result, void *ctx);
 
+/* task k has ended; ran: its result arrived (0: its process died or could
+ * not be made, and its result is as it was) */
+typedef void (*dv_exec_result_fn)(size_t k, int ran, void *ctx);
+
 /* run tasks 0..n-1 over the ranks. On rank 0 the results land in
  * results[k * size] and done[k] is set as each arrives; on_result (may be
  * NULL) is called on rank 0 after each. Other ranks compute until told to
  * stop and return 1. On rank 0: 0 when all are done, 2 when SIGTERM or
  * SIGINT stopped it (done[] says which are missing). */
 int dv_exec_mpi_farm(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
-                unsigned char *done, void (*on_result)(size_t k, void *ctx));
+                     unsigned char *done, dv_exec_result_fn on_result);
 
 #endif

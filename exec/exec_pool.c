@@ -1,47 +1,149 @@
-/* dv_pool: a process pool over shared memory, or an MPI farm. */
+/* dv_pool: a process per task over shared memory, or an MPI farm. */
 #define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "exec_pool.h"
 
-#include <stdatomic.h>
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
-int dv_exec_pool_run(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results, int jobs,
-                void (*on_result)(size_t k, void *ctx)) {
+/* one run of the pool: the tasks, their shared result slots, their processes */
+typedef struct pool {
+  size_t n, size;
+  dv_exec_task_fn work;
+  void *ctx;
+  char *results; /* the caller's */
+  char *slots;   /* shared with the tasks' processes, n * size bytes */
+  pid_t *pids;   /* task k's process while it runs, else 0 */
+  const dv_exec_options *opt;
+  sigset_t caller_mask; /* restored in every task's process and at the end */
+  int running;
+} pool;
+
+/* never called: SIGINT and SIGTERM stay blocked and are taken with
+ * sigwaitinfo, but an ignored signal (a background job's SIGINT) would be
+ * discarded, so the pool puts a handler of its own in place */
+static void on_stop(int sig) {
+  (void)sig;
+}
+
+/* in task k's new process: default signals, the task, its result in its slot */
+static void run_child(const pool *p, size_t k) {
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  sigprocmask(SIG_SETMASK, &p->caller_mask, NULL); /* a pending stop ends it here */
+  p->work(k, p->slots + k * p->size, p->ctx);
+  fflush(NULL);
+  _exit(0);
+}
+
+/* task k has ended: take its result if it arrived */
+static void finish(pool *p, size_t k, int ran) {
+  if (ran) memcpy(p->results + k * p->size, p->slots + k * p->size, p->size);
+  if (p->opt->done) p->opt->done[k] = (unsigned char)ran;
+  if (p->opt->on_result) p->opt->on_result(k, ran, p->ctx);
+}
+
+/* reap every task process that has ended, without blocking; a task's result
+ * arrived when its process exited with 0 */
+static void reap(pool *p) {
+  for (size_t k = 0; k < p->n && p->running > 0; k++) {
+    int ws = 0;
+    if (p->pids[k] <= 0) continue;
+    const pid_t r = waitpid(p->pids[k], &ws, WNOHANG);
+    if (r == 0 || (r < 0 && errno != ECHILD)) continue; /* ECHILD: reaped by someone else */
+    p->pids[k] = 0;
+    p->running--;
+    finish(p, k, r > 0 && WIFEXITED(ws) && WEXITSTATUS(ws) == 0);
+  }
+}
+
+/* pass signal sig on to every running task */
+static void forward(const pool *p, int sig) {
+  for (size_t k = 0; k < p->n; k++)
+    if (p->pids[k] > 0) kill(p->pids[k], sig);
+}
+
+/* fork a process per task, up to jobs at a time, until all ended or a stop */
+static int run_forked(pool *p) {
+  const int jobs = p->opt->jobs > 0 ? p->opt->jobs : 1;
+  sigset_t wanted;
+  sigemptyset(&wanted);
+  sigaddset(&wanted, SIGINT);
+  sigaddset(&wanted, SIGTERM);
+  sigaddset(&wanted, SIGCHLD); /* blocked, so that a task's end is never missed */
+  struct sigaction sa, old_int, old_term;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop;
+  sigemptyset(&sa.sa_mask);
+  sigprocmask(SIG_BLOCK, &wanted, &p->caller_mask);
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+  int stop = 0;
+  size_t next = 0;
+  for (;;) {
+    reap(p);
+    while (!stop && p->running < jobs && next < p->n) {
+      fflush(NULL); /* nothing buffered (by on_result too) is written twice */
+      const pid_t pid = fork();
+      if (pid == 0) run_child(p, next);
+      if (pid < 0 && p->running > 0) break; /* again once one has ended */
+      if (pid < 0) {
+        finish(p, next, 0); /* no process at all: the task is not run */
+      } else {
+        p->pids[next] = pid;
+        p->running++;
+      }
+      next++;
+    }
+    if (p->running == 0) break;                 /* all ended, or stopped */
+    const int sig = sigwaitinfo(&wanted, NULL); /* a task's end, or a stop */
+    if (sig == SIGINT || sig == SIGTERM) {
+      stop = sig;
+      forward(p, sig);
+    }
+  }
+  /* a stop that came after the last task ended still counts */
+  const struct timespec now = {0, 0};
+  sigdelset(&wanted, SIGCHLD);
+  for (int sig; (sig = sigtimedwait(&wanted, NULL, &now)) > 0;) stop = sig;
+  sigaction(SIGINT, &old_int, NULL);
+  sigaction(SIGTERM, &old_term, NULL);
+  sigprocmask(SIG_SETMASK, &p->caller_mask, NULL);
+  return stop ? DV_EXEC_INTERRUPTED : DV_EXEC_DONE;
+}
+
+int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
+                 const dv_exec_options *opt) {
   if (dv_exec_mpi_size() > 1) {
-    unsigned char *done = calloc(n ? n : 1, 1);
-    if (!done) return -1;
-    const int status = dv_exec_mpi_farm(n, size, work, ctx, results, done, on_result);
-    free(done);
+    unsigned char *done = opt->done ? opt->done : calloc(n ? n : 1, 1);
+    if (!done) return DV_EXEC_NOMEM;
+    const int status = dv_exec_mpi_farm(n, size, work, ctx, results, done, opt->on_result);
+    if (done != opt->done) free(done);
     return status;
   }
-  const size_t bytes = sizeof(atomic_size_t) + n * size;
-  void *shared = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-  if (shared == MAP_FAILED) return -1;
-  atomic_size_t *next = shared;
-  char *slots = (char *)shared + sizeof(atomic_size_t);
-  atomic_init(next, 0);
-  memcpy(slots, results, n * size);
-  fflush(NULL);
-  int workers = 0;
-  for (int w = 0; w < jobs && (size_t)w < n; w++) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      for (size_t k; (k = atomic_fetch_add(next, 1)) < n;) work(k, slots + k * size, ctx);
-      fflush(NULL);
-      _exit(0);
-    }
-    if (pid > 0) workers++;
+  const size_t bytes = n * size > 0 ? n * size : 1;
+  pool p = {.n = n, .size = size, .work = work, .ctx = ctx, .results = results, .opt = opt};
+  p.slots = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  p.pids = calloc(n ? n : 1, sizeof *p.pids);
+  int status = DV_EXEC_NOMEM;
+  if (p.slots != MAP_FAILED && p.pids) {
+    if (opt->done) memset(opt->done, 0, n);
+    memcpy(p.slots, results, n * size); /* a task starts from the caller's "not run" */
+    status = run_forked(&p);
   }
-  if (!workers) /* no process could be made: run them here */
-    for (size_t k; (k = atomic_fetch_add(next, 1)) < n;) work(k, slots + k * size, ctx);
-  while (workers > 0 && wait(NULL) > 0) workers--;
-  memcpy(results, slots, n * size);
-  munmap(shared, bytes);
-  for (size_t k = 0; on_result && k < n; k++) on_result(k, ctx);
-  return 0;
+  if (p.slots != MAP_FAILED) munmap(p.slots, bytes);
+  free(p.pids);
+  return status;
+}
+
+int dv_exec_pool_run(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
+                     int jobs, dv_exec_result_fn on_result) {
+  const dv_exec_options opt = {.jobs = jobs, .on_result = on_result};
+  return dv_exec_pool(n, size, work, ctx, results, &opt);
 }

@@ -1,9 +1,16 @@
 /* dv_pool: independent tasks run in parallel, on one machine or over MPI.
  *
- * Under mpirun the ranks share the tasks (dv_mpi.h). Otherwise up to jobs
- * forked processes each take the next task from a counter in shared memory
- * and write its result there; a task that crashes its process leaves its
- * result as it was (the caller initialises results to say "not run").
+ * Under mpirun the ranks share the tasks (dv_mpi.h). Otherwise every task
+ * runs in a process of its own, forked for it, up to jobs at a time, and
+ * writes its result into shared memory: a task that crashes its process (or
+ * whose process cannot be made) leaves its result as it was, so the caller
+ * initialises results to say "not run". Engines' error handlers and other
+ * process-wide state never outlive a task.
+ *
+ * SIGINT or SIGTERM received by the pool's process while it runs stop it:
+ * no task is started after that, the signal is passed on to the running
+ * tasks' processes (a kill may reach only the parent), and the pool returns
+ * DV_EXEC_INTERRUPTED once they have ended; done[] says which finished.
  */
 #ifndef DV_POOL_H
 #define DV_POOL_H
@@ -12,10 +19,26 @@
 
 #include "exec_mpi.h"
 
-/* run tasks 0..n-1; results[k * size] receives task k's result.
- * Returns 0, 1 on an MPI worker rank (rank 0 has the results), 2 when an
- * MPI run was stopped early (missing results untouched), -1 without memory. */
-int dv_exec_pool_run(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results, int jobs,
-                void (*on_result)(size_t k, void *ctx));
+/* how a pool run ended */
+typedef enum dv_exec_status {
+  DV_EXEC_NOMEM = -1,      /* no memory for the pool: nothing ran */
+  DV_EXEC_DONE = 0,        /* every task ended (some may have died: see ran and done) */
+  DV_EXEC_WORKER = 1,      /* an MPI worker rank: rank 0 has the results */
+  DV_EXEC_INTERRUPTED = 2, /* stopped by SIGINT or SIGTERM; results not arrived untouched */
+} dv_exec_status;
+
+typedef struct dv_exec_options {
+  int jobs;                    /* processes at a time (below 1: one) */
+  dv_exec_result_fn on_result; /* may be NULL: called as each task ends */
+  unsigned char *done;         /* may be NULL: n flags, done[k] = 1 once task k's result arrived */
+} dv_exec_options;
+
+/* run tasks 0..n-1; results[k * size] receives task k's result. A dv_exec_status. */
+int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
+                 const dv_exec_options *opt);
+
+/* dv_exec_pool with jobs and on_result only */
+int dv_exec_pool_run(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
+                     int jobs, dv_exec_result_fn on_result);
 
 #endif

@@ -1,11 +1,22 @@
-/* dv_io_file: write to a temporary file, rename on success. */
+/* dv_io_file: write to a temporary file, rename on success; paths. */
 #include "io_file.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* vsnprintf that refuses to cut a path short */
+int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  const int len = vsnprintf(buf, size, fmt, ap);
+  va_end(ap);
+  if (len >= 0 && (size_t)len < size) return DV_OK;
+  return dv_fail(err, DV_EINPUT, "path too long: %.200s...", buf);
+}
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   memset(out, 0, sizeof *out);
@@ -13,6 +24,8 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
     out->fp = stdout;
     return DV_OK;
   }
+  if (strlen(path) >= sizeof out->path)
+    return dv_fail(err, DV_EINPUT, "path too long: %.200s...", path);
   struct stat st;
   if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
     /* a device or a pipe (/dev/null, a FIFO): written directly, never replaced */
@@ -36,6 +49,14 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
     return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
   }
   return DV_OK;
+}
+
+/* dir/name, refused when too long for a dv_io_file */
+int dv_io_open_in(dv_io_file *out, const char *dir, const char *name, dv_error *err) {
+  char path[sizeof out->path];
+  memset(out, 0, sizeof *out);
+  const int status = dv_io_path(path, sizeof path, err, "%s/%s", dir, name);
+  return status ? status : dv_io_open(out, path, err);
 }
 
 int dv_io_commit(dv_io_file *out, dv_error *err) {
@@ -67,4 +88,21 @@ void dv_io_abort(dv_io_file *out) {
     if (!out->direct) unlink(out->tmp_path);
   }
   out->fp = NULL;
+}
+
+/* every missing directory of path, from the top */
+int dv_io_make_dirs(const char *path, dv_error *err) {
+  char buf[4096];
+  const int status = dv_io_path(buf, sizeof buf, err, "%s", path);
+  if (status) return status;
+  for (char *p = buf + (buf[0] != '\0');; p++) { /* "/a/b": not "" first */
+    const char c = *p;
+    if (c != '/' && c != '\0') continue;
+    *p = '\0';
+    if (mkdir(buf, 0777) && errno != EEXIST)
+      return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", buf, strerror(errno));
+    *p = c;
+    if (!c) break;
+  }
+  return DV_OK;
 }

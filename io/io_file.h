@@ -1,12 +1,14 @@
-/* dv_io_file: files that appear whole or not at all.
+/* dv_io_file: files that appear whole or not at all, and the paths to them.
  *
  * Output goes to a temporary file beside the target and is renamed over it
  * on commit; abort (or a failed write) removes it. "-" means stdout; an
  * existing device or pipe (/dev/null) is written in place, never replaced.
+ * A path that does not fit its buffer is an error, never cut short.
  */
 #ifndef DV_OUTPUT_H
 #define DV_OUTPUT_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "dv_error.h"
@@ -21,5 +23,15 @@ typedef struct dv_io_file {
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err);
 int dv_io_commit(dv_io_file *out, dv_error *err); /* flush, close, rename */
 void dv_io_abort(dv_io_file *out);                /* NULL-safe, idempotent */
+
+/* dv_io_open of the file name in the directory dir */
+int dv_io_open_in(dv_io_file *out, const char *dir, const char *name, dv_error *err);
+
+/* format a path into buf (size bytes); DV_EINPUT when it does not fit */
+int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+/* mkdir -p */
+int dv_io_make_dirs(const char *path, dv_error *err);
 
 #endif

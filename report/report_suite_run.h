@@ -2,9 +2,10 @@
  *
  * A scenario's directory OUT/<name>/ is built under a temporary name and
  * renamed into place when complete, replacing an older one: an interrupted or
- * failed run never leaves a half-written report. Each scenario runs in its
- * own process (MuJoCo's and ODE's error handlers are process-wide), at most
- * jobs at a time.
+ * failed run never leaves a half-written report. The scenarios are tasks of
+ * the exec pool (exec_pool.h): each runs in its own process (MuJoCo's and
+ * ODE's error handlers are process-wide), at most jobs at a time, and one
+ * that crashes is an error of its own; under mpirun the ranks share them.
  */
 #ifndef DV_SUITE_H
 #define DV_SUITE_H
@@ -12,23 +13,32 @@
 #include <stddef.h>
 
 #include "dv_engine.h"
+#include "io_file.h" /* dv_io_make_dirs for the output directory */
 #include "scenario.h"
 
 /* how one scenario of a suite ended */
-typedef enum dv_suite_result { DV_SUITE_PASS = 0, DV_SUITE_FAIL = 1, DV_SUITE_ERROR = 2 } dv_suite_result;
+typedef enum dv_suite_result {
+  DV_SUITE_PASS = 0,
+  DV_SUITE_FAIL = 1,
+  DV_SUITE_ERROR = 2
+} dv_suite_result;
 
 /* compare sc and write OUT/<name>/; print a line per engine to stdout when
  * verbose. Returns a dv_suite_result. */
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
-                     const char *out_dir, int verbose, dv_error *err);
+                            const char *out_dir, int verbose, dv_error *err);
 
-/* run scenarios[0..n) in up to jobs processes; exit codes into codes[].
- * SIGINT or SIGTERM stops it: running scenarios are ended, their temporary
- * directories removed, finished reports kept; returns DV_EVENT then. */
-int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n, const dv_engine_type *const *engines,
-                     const char *out_dir, int jobs, int *codes, dv_error *err);
+/* dv_report_suite_run_all on an MPI worker rank: rank 0 has the results */
+#define DV_SUITE_RUN_WORKER 2
 
-/* mkdir -p */
-int dv_io_make_dirs(const char *path, dv_error *err);
+/* run scenarios[0..n) in up to jobs processes; each one's dv_suite_result
+ * into codes[] (DV_SUITE_ERROR for one that did not finish), a progress
+ * line on stderr when it is a terminal. SIGINT or SIGTERM stops it: running
+ * scenarios are ended, their temporary directories removed, finished
+ * reports kept; returns DV_EVENT then (err says how many finished), else
+ * DV_OK, or DV_SUITE_RUN_WORKER. */
+int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n,
+                            const dv_engine_type *const *engines, const char *out_dir, int jobs,
+                            int *codes, dv_error *err);
 
 #endif

@@ -165,7 +165,7 @@ static void farm_point(size_t k, void *result, void *ctx) {
 
 /* rank 0, after every result: the tables so far, so a job killed by a dying
  * rank still leaves what finished (points not run say "missing") */
-static void checkpoint(size_t k, void *ctx) {
+static void checkpoint(size_t k, int ran, void *ctx) {
   checkpoint_ctx *ck = ctx;
   ck->out->p = ck->pts;
   ck->out->n = ck->n;
