@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "io_file.h"
+#include "report_escape.h"
 
 #define MAX_REPORT_BYTES (64L << 20) /* a larger report.json is taken as broken */
 #define PATH_CAP 4096
@@ -112,31 +113,6 @@ cleanup:
   free(buf);
 }
 
-/* bytes in the valid UTF-8 sequence at s (XML characters only), 0 if invalid */
-static size_t utf8_len(const unsigned char *s) {
-  static const unsigned long min[] = {0, 0, 0x80, 0x800, 0x10000};
-  if (s[0] < 0x80) return 1;
-  const size_t n = s[0] >= 0xF8 ? 0 : s[0] >= 0xF0 ? 4 : s[0] >= 0xE0 ? 3 : s[0] >= 0xC0 ? 2 : 0;
-  unsigned long cp = s[0] & (0xFFu >> (n + 1));
-  for (size_t i = 1; i < n; i++) {
-    if ((s[i] & 0xC0) != 0x80) return 0; /* also stops at the terminator */
-    cp = cp << 6 | (s[i] & 0x3F);
-  }
-  if (!n || cp < min[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF) || cp == 0xFFFE ||
-      cp == 0xFFFF)
-    return 0;
-  return n;
-}
-
-/* the bytes of invalid UTF-8 in text replaced by '?', in place */
-static void scrub_utf8(char *text) {
-  for (unsigned char *p = (unsigned char *)text; p && *p;) {
-    const size_t n = utf8_len(p);
-    if (!n) *p = '?';
-    p += n ? n : 1;
-  }
-}
-
 /* a copy of string or number o[key] for the summary, null when absent */
 static cJSON *copy_or_null(const cJSON *o, const char *key) {
   const cJSON *v = item(o, key);
@@ -172,37 +148,8 @@ static char *summary_text(const entry *es, size_t n, int pass) {
   }
   char *out = cJSON_Print(root); /* report strings are copied as they are: make it UTF-8 */
   cJSON_Delete(root);
-  scrub_utf8(out);
+  dv_report_utf8_scrub(out);
   return out;
-}
-
-/* entities for the ASCII characters that need one (tab and newline in attributes only) */
-static const char *const entities[128] = {
-    ['&'] = "&amp;",  ['<'] = "&lt;",   ['>'] = "&gt;",   ['"'] = "&quot;",
-    ['\''] = "&#39;", ['\r'] = "&#13;", ['\n'] = "&#10;", ['\t'] = "&#9;"};
-
-/* s escaped for HTML/XML text, or for a double-quoted attribute when attr */
-static void put_esc(FILE *fp, const char *s, int attr) {
-  for (const unsigned char *p = (const unsigned char *)(s ? s : ""); *p;) {
-    const int space = *p == '\n' || *p == '\t';
-    size_t n = 1;
-    if (*p < 0x80 && entities[*p] && (attr || !space)) {
-      fputs(entities[*p], fp);
-    } else if ((*p < 0x20 && !space) || !(n = utf8_len(p))) {
-      fputc('?', fp);
-      n = 1;
-    } else {
-      fwrite(p, 1, n, fp);
-    }
-    p += n;
-  }
-}
-
-/* pre, s escaped (as an attribute value when attr), post */
-static void put(FILE *fp, const char *pre, const char *s, int attr, const char *post) {
-  fputs(pre, fp);
-  put_esc(fp, s, attr);
-  fputs(post, fp);
 }
 
 /* pre, number v with %.3g (an en dash when absent), post */
@@ -241,7 +188,7 @@ static void put_link(FILE *fp, const char *out_dir, const char *dir, const char 
                      int *nlinks) {
   if (!file_exists(out_dir, dir, name)) return;
   put_url(fp, *nlinks ? " &#183; <a href=\"" : "<a href=\"", dir, name, "\">");
-  put(fp, "", name, 0, "</a>");
+  dv_report_escape_put(fp, "", name, 0, "</a>");
   ++*nlinks;
 }
 
@@ -252,9 +199,9 @@ static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   const int ok = engine_pass(eng);
   const cJSON *f;
   fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
-  put(fp, "", e->name, 0, "</a></td>");
-  put(fp, "<td>", eng->string, 0, "</td>");
-  put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
+  dv_report_escape_put(fp, "", e->name, 0, "</a></td>");
+  dv_report_escape_put(fp, "<td>", eng->string, 0, "</td>");
+  dv_report_escape_put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
   fprintf(fp, "<td class=\"%s\">%s</td>", ok ? "pass" : "fail", ok ? "pass" : "FAIL");
   for (size_t k = 0; k < sizeof metrics / sizeof *metrics; k++)
     put_num(fp, "<td class=\"n\">", item(eng, metrics[k]), "</td>");
@@ -262,40 +209,40 @@ static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   put_num(fp, "<td class=\"n\">", item(eng, "wall_per_sim_s"), "</td><td>");
   int nf = 0;
   cJSON_ArrayForEach(f, item(eng, "failures")) if (cJSON_IsString(f))
-      put(fp, nf++ ? "<br />" : "", f->valuestring, 0, "");
+      dv_report_escape_put(fp, nf++ ? "<br />" : "", f->valuestring, 0, "");
   fputs("</td></tr>\n", fp);
 }
 
 /* the section of scenario i: description, reference, engines, plots, files */
 static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i) {
   fprintf(fp, "<section id=\"s%zu\">\n", i);
-  put(fp, "<h2>", e->name, 0, "</h2>\n");
+  dv_report_escape_put(fp, "<h2>", e->name, 0, "</h2>\n");
   if (e->error[0]) {
-    put(fp, "<p class=\"err\">harness error: ", e->error, 0, "</p>\n</section>\n");
+    dv_report_escape_put(fp, "<p class=\"err\">harness error: ", e->error, 0, "</p>\n</section>\n");
     return;
   }
   const cJSON *r = e->report, *ref = item(r, "reference"), *eng, *plot;
-  put(fp, "<p>", text(r, "description"), 0, "</p>\n");
-  put(fp, "<p>Scenario file ", text(r, "file"), 0, ": ");
+  dv_report_escape_put(fp, "<p>", text(r, "description"), 0, "</p>\n");
+  dv_report_escape_put(fp, "<p>Scenario file ", text(r, "file"), 0, ": ");
   put_num(fp, "duration ", item(r, "duration"), " s, ");
   put_num(fp, "output every ", item(r, "output_dt"), " s.</p>\n");
-  put(fp, "<p>Reference ", text(ref, "engine"), 0, " (");
-  put(fp, "", text(ref, "integrator"), 0, ", ");
+  dv_report_escape_put(fp, "<p>Reference ", text(ref, "engine"), 0, " (");
+  dv_report_escape_put(fp, "", text(ref, "integrator"), 0, ", ");
   put_num(fp, "rtol ", item(ref, "rtol"), "): ");
-  put(fp, "<b>", text(ref, "outcome"), 0, "</b>");
+  dv_report_escape_put(fp, "<b>", text(ref, "outcome"), 0, "</b>");
   put_num(fp, " at t = ", item(ref, "t_end"), " s. ");
-  put(fp, "", text(ref, "detail"), 0, "</p>\n<ul>\n");
+  dv_report_escape_put(fp, "", text(ref, "detail"), 0, "</p>\n<ul>\n");
   cJSON_ArrayForEach(eng, e->engines) {
-    put(fp, "<li>", eng->string, 0, ": ");
-    put(fp, "", text(eng, "outcome"), 0, *text(eng, "detail") ? " &#8211; " : "");
-    put(fp, "", text(eng, "detail"), 0, "</li>\n");
+    dv_report_escape_put(fp, "<li>", eng->string, 0, ": ");
+    dv_report_escape_put(fp, "", text(eng, "outcome"), 0, *text(eng, "detail") ? " &#8211; " : "");
+    dv_report_escape_put(fp, "", text(eng, "detail"), 0, "</li>\n");
   }
   fputs("</ul>\n<div>\n", fp);
   cJSON_ArrayForEach(plot, item(r, "plots")) {
     if (!cJSON_IsString(plot) || !file_exists(out_dir, e->dir, plot->valuestring)) continue;
     put_url(fp, "<figure><img src=\"", e->dir, plot->valuestring, "\"");
-    put(fp, " alt=\"", plot->valuestring, 1, "\" />");
-    put(fp, "<figcaption>", plot->valuestring, 0, "</figcaption></figure>\n");
+    dv_report_escape_put(fp, " alt=\"", plot->valuestring, 1, "\" />");
+    dv_report_escape_put(fp, "<figcaption>", plot->valuestring, 0, "</figcaption></figure>\n");
   }
   fputs("</div>\n<p>Files: ", fp);
   int nlinks = 0;
@@ -356,9 +303,9 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
     const cJSON *eng;
     if (es[i].error[0]) {
       fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
-      put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
-      put(fp, "<td class=\"err\">ERROR</td><td colspan=\"6\"></td><td>", es[i].error, 0,
-          "</td></tr>\n");
+      dv_report_escape_put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
+      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"6\"></td><td>",
+                           es[i].error, 0, "</td></tr>\n");
     }
     cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);
   }
@@ -377,17 +324,17 @@ static void put_failure(FILE *fp, const entry *e, const cJSON *eng) {
   const cJSON *list = item(eng, "failures"), *first = NULL, *f;
   cJSON_ArrayForEach(f, list) if (!first && cJSON_IsString(f)) first = f;
   if (first) {
-    put(fp, "      <failure message=\"", first->valuestring, 1, "\">");
+    dv_report_escape_put(fp, "      <failure message=\"", first->valuestring, 1, "\">");
     int nf = 0;
     cJSON_ArrayForEach(f, list) if (cJSON_IsString(f))
-        put(fp, nf++ ? "\n" : "", f->valuestring, 0, "");
+        dv_report_escape_put(fp, nf++ ? "\n" : "", f->valuestring, 0, "");
   } else {
     char why[1024];
     snprintf(why, sizeof why, "%s: %s: %s%s%s", e->name, eng->string,
              *text(eng, "outcome") ? text(eng, "outcome") : "failed",
              *text(eng, "detail") ? ": " : "", text(eng, "detail"));
-    put(fp, "      <failure message=\"", why, 1, "\">");
-    put_esc(fp, why, 0);
+    dv_report_escape_put(fp, "      <failure message=\"", why, 1, "\">");
+    dv_report_escape(fp, why, 0);
   }
   fputs("</failure>\n", fp);
 }
@@ -408,14 +355,14 @@ static void write_junit(FILE *fp, const entry *es, size_t n) {
     const entry *e = &es[i];
     const cJSON *eng;
     if (e->error[0]) {
-      put(fp, "    <testcase classname=\"", e->name, 1, "\"");
-      put(fp, " name=\"", e->dir, 1, "\" time=\"0.000\">\n");
-      put(fp, "      <error message=\"", e->error, 1, "\">");
-      put(fp, "", e->error, 0, "</error>\n    </testcase>\n");
+      dv_report_escape_put(fp, "    <testcase classname=\"", e->name, 1, "\"");
+      dv_report_escape_put(fp, " name=\"", e->dir, 1, "\" time=\"0.000\">\n");
+      dv_report_escape_put(fp, "      <error message=\"", e->error, 1, "\">");
+      dv_report_escape_put(fp, "", e->error, 0, "</error>\n    </testcase>\n");
     }
     cJSON_ArrayForEach(eng, e->engines) {
-      put(fp, "    <testcase classname=\"", e->name, 1, "\"");
-      put(fp, " name=\"", eng->string, 1, "\"");
+      dv_report_escape_put(fp, "    <testcase classname=\"", e->name, 1, "\"");
+      dv_report_escape_put(fp, " name=\"", eng->string, 1, "\"");
       fprintf(fp, " time=\"%.3f\"%s", wall_seconds(e->report, eng),
               engine_pass(eng) ? " />\n" : ">\n");
       if (engine_pass(eng)) continue;

@@ -1,0 +1,24 @@
+/* dv_report_escape: text made safe for HTML and XML pages.
+ *
+ * Every name and message a page shows goes through this escaper:
+ * '&', '<', '>', '"', '\'' and carriage return become entities or character
+ * references; so do tab and newline in a double-quoted attribute value (in
+ * text they stay); any other control character and every byte that is not
+ * part of valid UTF-8 (or encodes a character XML does not allow) becomes '?'.
+ */
+#ifndef DV_REPORT_ESCAPE_H
+#define DV_REPORT_ESCAPE_H
+
+#include <stdio.h>
+
+/* s escaped for HTML/XML text, or for a double-quoted attribute value when
+ * attr; NULL is written as nothing */
+void dv_report_escape(FILE *fp, const char *s, int attr);
+
+/* pre, s escaped (as an attribute value when attr), post */
+void dv_report_escape_put(FILE *fp, const char *pre, const char *s, int attr, const char *post);
+
+/* the bytes of invalid UTF-8 in text replaced by '?', in place (NULL-safe) */
+void dv_report_utf8_scrub(char *text);
+
+#endif
