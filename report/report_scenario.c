@@ -16,11 +16,10 @@
 #include "red_invariants.h"
 #include "red_potential.h"
 
+/* the trajectory tr as dir/name */
 static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_error *err) {
-  char path[1200];
   dv_io_file out;
-  snprintf(path, sizeof path, "%s/%s", dir, name);
-  int status = dv_io_open(&out, path, err);
+  int status = dv_io_open_in(&out, dir, name, err);
   if (status) return status;
   fputs(DV_CSV_HEADER "\n", out.fp);
   for (size_t i = 0; i < tr->n; i++) dv_run_csv_row(out.fp, &tr->s[i]);
@@ -101,25 +100,24 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   for (size_t i = 0; plotted && i < 2; i++) {
     char p[1300];
     const char *name = i ? "phase.svg" : "potential.svg";
-    snprintf(p, sizeof p, "%s/%s", dir, name);
-    if (!access(p, F_OK)) cJSON_AddItemToArray(plots, cJSON_CreateString(name));
+    if (!dv_io_path(p, sizeof p, NULL, "%s/%s", dir, name) && !access(p, F_OK))
+      cJSON_AddItemToArray(plots, cJSON_CreateString(name));
   }
   return dv_io_json_write(dir, "report.json", o, err);
 }
 
+/* report.md: the verdict, the reference, a table row per engine, the failures */
 static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err) {
-  char path[1200];
   dv_io_file out;
-  snprintf(path, sizeof path, "%s/report.md", dir);
-  int status = dv_io_open(&out, path, err);
+  int status = dv_io_open_in(&out, dir, "report.md", err);
   if (status) return status;
   FILE *fp = out.fp;
   const dv_scenario *sc = c->sc;
   fprintf(fp, "# %s: %s\n\n%s\n\n", sc->name, c->pass ? "pass" : "FAIL", sc->description);
   fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
-          integrator_name(sc), dv_reference_settings(sc)->rtol, dv_outcome_name(c->thin_stats.outcome),
-          c->thin_stats.detail[0] ? ": " : "", c->thin_stats.detail,
-          c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+          integrator_name(sc), dv_reference_settings(sc)->rtol,
+          dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",
+          c->thin_stats.detail, c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   fprintf(fp,
           "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
           "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
@@ -130,14 +128,15 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
     char ref[48];
     if (r->half_thickness > 0.0)
-      snprintf(ref, sizeof ref, "%s, h = %g m", dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name,
-               r->half_thickness);
+      snprintf(ref, sizeof ref, "%s, h = %g m",
+               dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name, r->half_thickness);
     else
       snprintf(ref, sizeof ref, "thin disk");
     fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
-            r->engine->name, dv_run_verdict_name(r->verdict), ref, v[DV_THETA_MAX_ERR], v[DV_THETA_RMS_ERR],
-            v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF], v[DV_ENERGY_DRIFT],
-            v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR], sim > 0 ? r->wall_s / sim : 0.0);
+            r->engine->name, dv_run_verdict_name(r->verdict), ref, v[DV_THETA_MAX_ERR],
+            v[DV_THETA_RMS_ERR], v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF],
+            v[DV_ENERGY_DRIFT], v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR],
+            sim > 0 ? r->wall_s / sim : 0.0);
   }
   for (size_t i = 0; i < c->n; i++)
     for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);
@@ -155,10 +154,15 @@ static void phase_coordinates(const red_disk *dk, const dv_traj *tr, double *th,
   }
 }
 
-/* the thesis's Figures 4.1-4.6 for this scenario: the effective potential of
- * theta for its f1, f2 with the energy level, and the phase plane with the
- * level set and every engine's trajectory over it */
-static int write_portraits(const char *dir, const dv_comparison *c, dv_error *err) {
+/* the curves of the portraits: the potential and the level set on a grid of
+ * theta, and (theta, p_theta) of the reference and of every engine */
+typedef struct portrait {
+  double th[PORTRAIT_POINTS], U[PORTRAIT_POINTS], up[PORTRAIT_POINTS], dn[PORTRAIT_POINTS];
+  double *traj[1 + DV_MAX_ENGINES]; /* n thetas, then n momenta */
+} portrait;
+
+/* draw the portraits of c from pt, whose arrays are allocated */
+static int draw_portraits(const char *dir, const dv_comparison *c, portrait *pt, dv_error *err) {
   const red_disk *dk = &c->sc->disk;
   const double *y0 = c->sc->initial;
   double f1, f2, lo = INFINITY, hi = -INFINITY;
@@ -171,43 +175,60 @@ static int write_portraits(const char *dir, const dv_comparison *c, dv_error *er
   const double pad = fmax(0.2 * (hi - lo), 0.05);
   lo = fmax(lo - pad, 0.02);
   hi = fmin(hi + pad, M_PI - 0.02);
-  static double th[PORTRAIT_POINTS], U[PORTRAIT_POINTS], up[PORTRAIT_POINTS], dn[PORTRAIT_POINTS];
   for (int i = 0; i < PORTRAIT_POINTS; i++) {
-    th[i] = lo + (hi - lo) * i / (PORTRAIT_POINTS - 1);
-    if (red_effective_potential(dk, f1, f2, th[i], &U[i])) U[i] = NAN;
-    up[i] = U[i] <= E ? sqrt(2.0 * I * (E - U[i])) : NAN;
-    dn[i] = -up[i];
+    pt->th[i] = lo + (hi - lo) * i / (PORTRAIT_POINTS - 1);
+    if (red_effective_potential(dk, f1, f2, pt->th[i], &pt->U[i])) pt->U[i] = NAN;
+    pt->up[i] = pt->U[i] <= E ? sqrt(2.0 * I * (E - pt->U[i])) : NAN;
+    pt->dn[i] = -pt->up[i];
   }
   const double ex[2] = {lo, hi}, ey[2] = {E, E};
-  dv_plot_curve pot[2] = {{"U(theta)", PORTRAIT_POINTS, th, U, NULL, DV_CURVE_LINE, 0},
-                          {"energy E", 2, ex, ey, NULL, DV_CURVE_LINE, 1}};
+  const dv_plot_curve pot[2] = {
+      {"U(theta)", PORTRAIT_POINTS, pt->th, pt->U, NULL, DV_CURVE_LINE, 0},
+      {"energy E", 2, ex, ey, NULL, DV_CURVE_LINE, 1}};
   char path[1200], title[160];
-  snprintf(path, sizeof path, "%s/potential.svg", dir);
   snprintf(title, sizeof title, "%s: effective potential (f1 %.4g, f2 %.4g)", c->sc->name, f1, f2);
-  int status = dv_report_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
+  int status = dv_io_path(path, sizeof path, err, "%s/potential.svg", dir);
+  if (!status) status = dv_report_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
   /* phase plane: the level set, then the reference and every engine */
   dv_plot_curve ph[2 + 1 + DV_MAX_ENGINES];
-  double *buf[1 + DV_MAX_ENGINES] = {NULL};
   size_t n = 0;
-  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, th, up, NULL, DV_CURVE_LINE, 0};
-  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, th, dn, NULL, DV_CURVE_LINE, 0};
+  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, pt->th, pt->up, NULL, DV_CURVE_LINE, 0};
+  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, pt->th, pt->dn, NULL, DV_CURVE_LINE, 0};
   for (size_t k = 0; k <= c->n; k++) {
     const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
-    if (!(buf[k] = malloc(2 * (tr->n + 1) * sizeof(double)))) break;
-    phase_coordinates(dk, tr, buf[k], buf[k] + tr->n);
+    phase_coordinates(dk, tr, pt->traj[k], pt->traj[k] + tr->n);
     ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)",
                               tr->n,
-                              buf[k],
-                              buf[k] + tr->n,
+                              pt->traj[k],
+                              pt->traj[k] + tr->n,
                               NULL,
                               DV_CURVE_LINE,
                               (int)k + 1};
   }
-  snprintf(path, sizeof path, "%s/phase.svg", dir);
   snprintf(title, sizeof title, "%s: phase plane", c->sc->name);
+  if (!status) status = dv_io_path(path, sizeof path, err, "%s/phase.svg", dir);
   if (!status)
-    status = dv_report_plot_xy(path, title, "tilt theta (rad)", "p_theta (kg m^2/s)", ph, n, 0, err);
-  for (size_t k = 0; k <= c->n; k++) free(buf[k]);
+    status =
+        dv_report_plot_xy(path, title, "tilt theta (rad)", "p_theta (kg m^2/s)", ph, n, 0, err);
+  return status;
+}
+
+/* the thesis's Figures 4.1-4.6 for this scenario: the effective potential of
+ * theta for its f1, f2 with the energy level, and the phase plane with the
+ * level set and every engine's trajectory over it */
+static int write_portraits(const char *dir, const dv_comparison *c, dv_error *err) {
+  portrait *pt = calloc(1, sizeof *pt);
+  int status = pt ? DV_OK : DV_ESYSTEM;
+  for (size_t k = 0; !status && k <= c->n; k++) {
+    const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
+    if (!(pt->traj[k] = malloc(2 * (tr->n + 1) * sizeof(double)))) status = DV_ESYSTEM;
+  }
+  if (status)
+    dv_fail(err, status, "%s: portraits: out of memory", c->sc->name);
+  else
+    status = draw_portraits(dir, c, pt, err);
+  for (size_t k = 0; pt && k <= c->n; k++) free(pt->traj[k]);
+  free(pt);
   return status;
 }
 
@@ -239,8 +260,8 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
   for (size_t i = 0; i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
     fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
-            dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_PATH_MAX_ERR],
-            r->pass ? "pass" : "FAIL");
+            dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR],
+            r->vs_ref.value[DV_PATH_MAX_ERR], r->pass ? "pass" : "FAIL");
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
   }
 }

@@ -28,7 +28,9 @@ typedef struct ctx {
 /* one probe: choice (NULL: the scenario's) and step */
 static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   dv_search *s = c->out;
-  if (s->nprobes == DV_SEARCH_MAX_PROBES) return -1;
+  if (s->nprobes == DV_SEARCH_MAX_PROBES) /* not with at most DV_SEARCH_MAX_CHOICES */
+    return dv_fail(err, DV_ESYSTEM, "%s: more than %d probes", c->sp.engine, DV_SEARCH_MAX_PROBES),
+           -1;
   dv_probe *p = &s->probes[s->nprobes++];
   char over[2][160];
   const char *ptrs[2];
@@ -54,7 +56,7 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
 static double largest(ctx *c, const char *choice, double start, int *fail_probe, dv_error *err) {
   double pass = NAN, fail = NAN, h = start;
   *fail_probe = -1;
-  for (int i = 0; i < 24; i++) {
+  for (int i = 0; i < DV_SEARCH_BRACKET; i++) {
     const int ok = probe(c, choice, h, err);
     if (ok < 0) return pass;
     if (ok) {
@@ -68,7 +70,7 @@ static double largest(ctx *c, const char *choice, double start, int *fail_probe,
       h /= 2.0;
     }
   }
-  for (int i = 0; i < 6 && !isnan(pass) && !isnan(fail); i++) {
+  for (int i = 0; i < DV_SEARCH_BISECTIONS && !isnan(pass) && !isnan(fail); i++) {
     const double mid = sqrt(pass * fail);
     const int ok = probe(c, choice, mid, err);
     if (ok < 0) break;
@@ -101,6 +103,11 @@ static int setup(const char *path, const char *const *sets, size_t nsets, const 
   c->sp.engine = engine;
   c->sp.search = search;
   c->sp.choice = dv_settings_find(owner->settings, search->choice_key);
+  size_t nchoices = 0;
+  while (c->sp.choice && dv_setting_choice(c->sp.choice, nchoices)) nchoices++;
+  if (nchoices > DV_SEARCH_MAX_CHOICES)
+    return dv_fail(err, DV_EINPUT, "%s: %zu choices of %s, a search takes at most %d", engine,
+                   nchoices, search->choice_key, DV_SEARCH_MAX_CHOICES);
   snprintf(c->sp.choice_key, sizeof c->sp.choice_key, "engines.%s.%s", search->section,
            search->choice_key);
   snprintf(c->sp.step_key, sizeof c->sp.step_key, "engines.%s.%s", search->section,

@@ -17,7 +17,10 @@
 
 #include "search_sweep.h"
 
-#define DV_SEARCH_MAX_PROBES 64
+#define DV_SEARCH_BRACKET 24    /* probes at most to bracket the limit, by factors of 2 */
+#define DV_SEARCH_BISECTIONS 6  /* probes then to narrow it */
+#define DV_SEARCH_MAX_CHOICES 8 /* choices of the discrete setting a search takes */
+#define DV_SEARCH_MAX_PROBES (DV_SEARCH_MAX_CHOICES * (DV_SEARCH_BRACKET + DV_SEARCH_BISECTIONS))
 
 typedef struct dv_probe {
   char choice[32];      /* the discrete setting, e.g. "rk4" */

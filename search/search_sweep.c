@@ -20,8 +20,10 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
   if (!eq || eq == spec || !eq[1])
     return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
   const int bare = memchr(spec, '.', (size_t)(eq - spec)) == NULL;
-  snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "", bare ? engine : "",
-           bare ? "." : "", (int)(eq - spec), spec);
+  const int len = snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "",
+                           bare ? engine : "", bare ? "." : "", (int)(eq - spec), spec);
+  if (len < 0 || (size_t)len >= sizeof out->key)
+    return dv_fail(err, DV_EINPUT, "--vary %s: the key is too long", spec);
   const char *list = eq + 1, *dots = strstr(list, "..");
   if (dots) { /* a..b:n on a log scale */
     char first[64], *end;
@@ -39,12 +41,16 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
     out->n = (size_t)n;
     return DV_OK;
   }
-  char buf[2048];
-  snprintf(buf, sizeof buf, "%s", list);
-  for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-    if (out->n == DV_SWEEP_MAX_VALUES)
+  /* v1,v2,...: every value whole, or an error */
+  for (const char *v = list; *v;) {
+    const size_t n = strcspn(v, ",");
+    if (n >= sizeof out->values[0])
+      return dv_fail(err, DV_EINPUT, "--vary %s: a value has at most %zu characters", spec,
+                     sizeof out->values[0] - 1);
+    if (n && out->n == DV_SWEEP_MAX_VALUES)
       return dv_fail(err, DV_EINPUT, "--vary %s: at most %d values", spec, DV_SWEEP_MAX_VALUES);
-    snprintf(out->values[out->n++], sizeof out->values[0], "%s", tok);
+    if (n) snprintf(out->values[out->n++], sizeof out->values[0], "%.*s", (int)n, v);
+    v += n + (v[n] == ',');
   }
   return out->n ? DV_OK : dv_fail(err, DV_EINPUT, "--vary %s: no values", spec);
 }
@@ -95,18 +101,19 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
   dv_scenario *sc = malloc(sizeof *sc), *ref = malloc(sizeof *ref);
   dv_comparison *c = malloc(sizeof *c);
-  const char *sets[64 + DV_SWEEP_MAX_VARY];
+  const char **sets = malloc((jb->nsets + nover + 1) * sizeof *sets);
   dv_error err = {{0}};
   pt->verdict = DV_VERDICT_INVALID;
   pt->failure = DV_FAILURE_NONE;
   for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
-  if (!sc || !ref || !c) {
+  if (!sc || !ref || !c || !sets) {
     snprintf(pt->detail, sizeof pt->detail, "out of memory");
     goto cleanup;
   }
+  /* the common settings, then the point's own: the later wins */
   size_t nsets = 0;
-  for (size_t i = 0; i < jb->nsets && nsets < 64; i++) sets[nsets++] = jb->sets[i];
-  for (size_t v = 0; v < nover && v < DV_SWEEP_MAX_VARY; v++) sets[nsets++] = over[v];
+  for (size_t i = 0; i < jb->nsets; i++) sets[nsets++] = jb->sets[i];
+  for (size_t v = 0; v < nover; v++) sets[nsets++] = over[v];
   if (dv_engine_load_scenario(jb->path, sets, nsets, sc, &err)) {
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
     goto cleanup;
@@ -142,6 +149,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   snprintf(pt->detail, sizeof pt->detail, "%.191s", r->stats.detail);
   dv_run_comparison_free(c);
 cleanup:
+  free(sets);
   free(sc);
   free(ref);
   free(c);

@@ -12,8 +12,6 @@
 #include "report_plot.h"
 #include "search_sweep.h"
 
-#define MAX_CURVES 16
-
 /* the varied key that orders a curve: a timestep or a tolerance, else the last */
 static size_t curve_key(const dv_sweep *s) {
   for (size_t v = 0; v < s->nvary; v++) {
@@ -23,45 +21,92 @@ static size_t curve_key(const dv_sweep *s) {
   return s->nvary ? s->nvary - 1 : 0;
 }
 
+/* the ok points of one curve, in sweep order */
 typedef struct curve {
   char label[96];
+  char order_label[128]; /* the label with the fitted order */
   size_t n;
-  double x[DV_SWEEP_MAX_VALUES], y[DV_SWEEP_MAX_VALUES], h[DV_SWEEP_MAX_VALUES];
-  int marked[DV_SWEEP_MAX_VALUES];
+  double *x, *y, *h; /* cost, theta error, the curve key's value */
+  int *marked;       /* Pareto points */
 } curve;
 
-/* group the ok points into curves along the curve key, labelled by the rest */
-static size_t make_curves(const dv_sweep *s, curve *cv, size_t max) {
-  const size_t key = curve_key(s);
-  size_t nc = 0;
-  for (size_t i = 0; i < s->n; i++) {
-    const dv_sweep_point *p = &s->p[i];
-    char label[96];
-    int len = snprintf(label, sizeof label, "%s", s->engine);
-    for (size_t v = 0; v < s->nvary; v++)
-      if (v != key && len < (int)sizeof label)
-        len += snprintf(label + len, sizeof label - (size_t)len, " %s", p->values[v]);
-    size_t c = 0;
-    while (c < nc && strcmp(cv[c].label, label)) c++;
-    if (c == nc) {
-      if (nc == max) continue;
-      memset(&cv[nc], 0, sizeof cv[nc]);
-      snprintf(cv[nc++].label, sizeof cv[0].label, "%s", label);
-    }
-    if (!p->ok || cv[c].n == DV_SWEEP_MAX_VALUES) continue;
-    cv[c].x[cv[c].n] = p->wall_per_sim_s;
-    cv[c].y[cv[c].n] = p->metric[DV_THETA_MAX_ERR];
-    cv[c].h[cv[c].n] = s->nvary ? atof(p->values[key]) : NAN;
-    cv[c].marked[cv[c].n++] = p->pareto;
-  }
-  return nc;
+/* a sweep's curves and the storage of their points */
+typedef struct curves {
+  size_t n;
+  curve *c;
+  double *values; /* 3 per ok point */
+  int *marks;     /* 1 per ok point */
+} curves;
+
+/* whether points a and b lie on one curve: the same values but for the curve key */
+static int same_curve(const dv_sweep *s, size_t key, const dv_sweep_point *a,
+                      const dv_sweep_point *b) {
+  for (size_t v = 0; v < s->nvary; v++)
+    if (v != key && strcmp(a->values[v], b->values[v])) return 0;
+  return 1;
 }
 
+/* free what make_curves allocated; cs is left empty */
+static void curves_free(curves *cs) {
+  free(cs->c);
+  free(cs->values);
+  free(cs->marks);
+  memset(cs, 0, sizeof *cs);
+}
+
+/* group the ok points into curves along the curve key, labelled by the
+ * other keys' values (a curve without ok points stays, empty); -1 without memory */
+static int make_curves(const dv_sweep *s, curves *cs) {
+  const size_t key = curve_key(s);
+  size_t *of = calloc(s->n + 1, sizeof *of), *first = calloc(s->n + 1, sizeof *first), nok = 0;
+  memset(cs, 0, sizeof *cs);
+  cs->c = calloc(s->n + 1, sizeof *cs->c);
+  for (size_t i = 0; of && first && cs->c && i < s->n; i++) {
+    const dv_sweep_point *p = &s->p[i];
+    size_t c = 0;
+    while (c < cs->n && !same_curve(s, key, &s->p[first[c]], p)) c++;
+    if (c == cs->n) {
+      first[cs->n++] = i;
+      int len = snprintf(cs->c[c].label, sizeof cs->c[c].label, "%s", s->engine);
+      for (size_t v = 0; v < s->nvary; v++)
+        if (v != key && len < (int)sizeof cs->c[c].label)
+          len += snprintf(cs->c[c].label + len, sizeof cs->c[c].label - (size_t)len, " %s",
+                          p->values[v]);
+    }
+    of[i] = c;
+    nok += p->ok;
+    cs->c[c].n += p->ok; /* counted here, filled below */
+  }
+  cs->values = malloc(3 * (nok + 1) * sizeof *cs->values);
+  cs->marks = malloc((nok + 1) * sizeof *cs->marks);
+  const int ok = of && first && cs->c && cs->values && cs->marks;
+  double *v = cs->values;
+  int *m = cs->marks;
+  for (size_t c = 0; ok && c < cs->n; c++) { /* each curve's share of the storage */
+    curve *cv = &cs->c[c];
+    const size_t len = cv->n;
+    cv->x = v, cv->y = v + len, cv->h = v + 2 * len, cv->marked = m, cv->n = 0;
+    v += 3 * len, m += len;
+  }
+  for (size_t i = 0; ok && i < s->n; i++) {
+    const dv_sweep_point *p = &s->p[i];
+    curve *c = &cs->c[of[i]];
+    if (!p->ok) continue;
+    c->x[c->n] = p->wall_per_sim_s;
+    c->y[c->n] = p->metric[DV_THETA_MAX_ERR];
+    c->h[c->n] = s->nvary ? atof(p->values[key]) : NAN;
+    c->marked[c->n++] = p->pareto;
+  }
+  free(of);
+  free(first);
+  if (!ok) curves_free(cs);
+  return ok ? 0 : -1;
+}
+
+/* sweep.csv: a row per point */
 static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
-  char path[1200];
   dv_io_file out;
-  snprintf(path, sizeof path, "%s/sweep.csv", dir);
-  int status = dv_io_open(&out, path, err);
+  int status = dv_io_open_in(&out, dir, "sweep.csv", err);
   if (status) return status;
   fprintf(out.fp, "engine");
   for (size_t v = 0; v < s->nvary; v++) fprintf(out.fp, ",%s", s->vary[v].key);
@@ -72,11 +117,13 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
     fprintf(out.fp, "%s", s->engine);
     for (size_t v = 0; v < s->nvary; v++) fprintf(out.fp, ",%s", p->values[v]);
     for (int m = 0; m < DV_NMETRICS; m++) fprintf(out.fp, ",%.9g", p->metric[m]);
-    fprintf(out.fp, ",%.6g,%ld,%s,%d\n", p->wall_per_sim_s, p->steps, dv_run_verdict_name(p->verdict), p->pareto);
+    fprintf(out.fp, ",%.6g,%ld,%s,%d\n", p->wall_per_sim_s, p->steps,
+            dv_run_verdict_name(p->verdict), p->pareto);
   }
   return dv_io_commit(&out, err);
 }
 
+/* sweep.json: the points, and the fitted order of every curve */
 static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_t nc,
                       dv_error *err) {
   cJSON *o = cJSON_CreateObject();
@@ -106,50 +153,70 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
   for (size_t c = 0; c < nc; c++) {
     cJSON *q = cJSON_CreateObject();
     cJSON_AddStringToObject(q, "curve", cv[c].label);
-    cJSON_AddItemToObject(q, "order", dv_io_json_number(dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n)));
+    cJSON_AddItemToObject(q, "order",
+                          dv_io_json_number(dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n)));
     cJSON_AddItemToArray(orders, q);
   }
   return dv_io_json_write(dir, "sweep.json", o, err);
 }
 
 int dv_search_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err) {
-  static curve cv[MAX_CURVES];
-  const size_t nc = make_curves(s, cv, MAX_CURVES);
+  curves cs;
+  if (make_curves(s, &cs)) return dv_fail(err, DV_ESYSTEM, "sweep: out of memory");
   int status = write_csv(dir, s, err);
-  return status ? status : write_json(dir, s, cv, nc, err);
+  if (!status) status = write_json(dir, s, cs.c, cs.n, err);
+  curves_free(&cs);
+  return status;
+}
+
+/* the plots of the curves cs of s, with the reference's curves rc (if any)
+ * on the work-precision plot where there is room */
+static int write_plots(const char *dir, const dv_sweep *s, curves *cs, const curves *rc,
+                       dv_error *err) {
+  dv_plot_curve pc[DV_PLOT_MAX_CURVES];
+  char path[1200], title[200], shown[64] = "";
+  const size_t nc = cs->n < DV_PLOT_MAX_CURVES ? cs->n : DV_PLOT_MAX_CURVES;
+  const size_t nr = rc->n < DV_PLOT_MAX_CURVES - nc ? rc->n : DV_PLOT_MAX_CURVES - nc;
+  if (nc < cs->n) /* a plot holds so many curves; the tables have them all */
+    snprintf(shown, sizeof shown, " (the first %zu of %zu curves)", nc, cs->n);
+  for (size_t c = 0; c < nc + nr; c++) {
+    const curve *cv = c < nc ? &cs->c[c] : &rc->c[c - nc];
+    pc[c] = (dv_plot_curve){cv->label, cv->n, cv->x, cv->y, cv->marked, DV_CURVE_LINE_POINTS,
+                            (int)c + 1};
+  }
+  snprintf(title, sizeof title, "%s: theta error against cost%s", s->scenario, shown);
+  int status = dv_io_path(path, sizeof path, err, "%s/work_precision.svg", dir);
+  if (!status)
+    status =
+        dv_report_plot_xy(path, title, "wall seconds per simulated second",
+                          "max |theta error| (rad)", pc, nc + nr, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
+  const char *dot = s->nvary ? strrchr(s->vary[curve_key(s)].key, '.') : NULL;
+  if (status || !dot || strcmp(dot, ".timestep")) return status;
+  for (size_t c = 0; c < nc; c++) {
+    curve *cv = &cs->c[c];
+    snprintf(cv->order_label, sizeof cv->order_label, "%.90s (order %.2f)", cv->label,
+             dv_search_fit_order(cv->h, cv->y, cv->n));
+    pc[c] = (dv_plot_curve){cv->order_label,      cv->n,     cv->h, cv->y, NULL,
+                            DV_CURVE_LINE_POINTS, (int)c + 1};
+  }
+  snprintf(title, sizeof title, "%s: theta error against the timestep%s", s->scenario, shown);
+  status = dv_io_path(path, sizeof path, err, "%s/error_vs_timestep.svg", dir);
+  if (!status)
+    status = dv_report_plot_xy(path, title, "timestep (s)", "max |theta error| (rad)", pc, nc,
+                               DV_PLOT_LOGX | DV_PLOT_LOGY, err);
+  return status;
 }
 
 int dv_search_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *ref, dv_error *err) {
-  static curve cv[MAX_CURVES], rc[MAX_CURVES];
-  const size_t nc = make_curves(s, cv, MAX_CURVES);
-  const size_t nr = ref ? make_curves(ref, rc, MAX_CURVES - nc) : 0;
-  int status = write_csv(dir, s, err);
-  if (!status) status = write_json(dir, s, cv, nc, err);
-  dv_plot_curve pc[MAX_CURVES];
-  char path[1200], title[160];
-  for (size_t c = 0; c < nc; c++)
-    pc[c] = (dv_plot_curve){cv[c].label,          cv[c].n,   cv[c].x, cv[c].y, cv[c].marked,
-                            DV_CURVE_LINE_POINTS, (int)c + 1};
-  for (size_t c = 0; c < nr; c++)
-    pc[nc + c] =
-        (dv_plot_curve){rc[c].label,          rc[c].n,          rc[c].x, rc[c].y, rc[c].marked,
-                        DV_CURVE_LINE_POINTS, (int)(nc + c) + 1};
-  snprintf(path, sizeof path, "%s/work_precision.svg", dir);
-  snprintf(title, sizeof title, "%s: theta error against cost", s->scenario);
-  if (!status)
-    status = dv_report_plot_xy(path, title, "wall seconds per simulated second", "max |theta error| (rad)",
-                        pc, nc + nr, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
-  const char *dot = s->nvary ? strrchr(s->vary[curve_key(s)].key, '.') : NULL;
-  if (status || !dot || strcmp(dot, ".timestep")) return status;
-  static char labels[MAX_CURVES][128];
-  for (size_t c = 0; c < nc; c++) {
-    snprintf(labels[c], sizeof labels[c], "%.90s (order %.2f)", cv[c].label,
-             dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n));
-    pc[c] = (dv_plot_curve){labels[c], cv[c].n, cv[c].h, cv[c].y, NULL, DV_CURVE_LINE_POINTS,
-                            (int)c + 1};
+  curves cs, rc = {0};
+  if (make_curves(s, &cs) || (ref && make_curves(ref, &rc))) {
+    curves_free(&cs);
+    return dv_fail(err, DV_ESYSTEM, "sweep: out of memory");
   }
-  snprintf(path, sizeof path, "%s/error_vs_timestep.svg", dir);
-  snprintf(title, sizeof title, "%s: theta error against the timestep", s->scenario);
-  return dv_report_plot_xy(path, title, "timestep (s)", "max |theta error| (rad)", pc, nc,
-                    DV_PLOT_LOGX | DV_PLOT_LOGY, err);
+  int status = write_csv(dir, s, err);
+  if (!status) status = write_json(dir, s, cs.c, cs.n, err);
+  if (!status) status = write_plots(dir, s, &cs, &rc, err);
+  curves_free(&cs);
+  curves_free(&rc);
+  return status;
 }
