@@ -24,8 +24,8 @@
 
 #include "report_plot_internal.h"
 
-const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg", "energy.svg",
-                                     NULL};
+const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg",
+                                            "energy.svg", NULL};
 
 /* the plots, in the order of dv_report_plot_files */
 typedef enum plot_kind { PLOT_THETA = 0, PLOT_ERROR, PLOT_PATH, PLOT_ENERGY, NPLOTS } plot_kind;
@@ -169,20 +169,22 @@ static void free_figure(figure *f) {
   f->ncurves = 0;
 }
 
+void dvp_extend_range(const double *x, const double *y, size_t n, double r[4], int *any) {
+  for (size_t i = 0; i < n; i++) {
+    if (!dvp_plottable(x[i]) || !dvp_plottable(y[i])) continue;
+    if (!*any || x[i] < r[0]) r[0] = x[i];
+    if (!*any || x[i] > r[1]) r[1] = x[i];
+    if (!*any || y[i] < r[2]) r[2] = y[i];
+    if (!*any || y[i] > r[3]) r[3] = y[i];
+    *any = 1;
+  }
+}
+
 /* bounds of every drawable point; 0 when there is none */
 static int data_range(const figure *f, double r[4]) {
   int any = 0;
-  for (size_t k = 0; k < f->ncurves; k++) {
-    const curve *c = &f->c[k];
-    for (size_t i = 0; i < c->n; i++) {
-      if (!point_ok(c, i)) continue;
-      if (!any || c->x[i] < r[0]) r[0] = c->x[i];
-      if (!any || c->x[i] > r[1]) r[1] = c->x[i];
-      if (!any || c->y[i] < r[2]) r[2] = c->y[i];
-      if (!any || c->y[i] > r[3]) r[3] = c->y[i];
-      any = 1;
-    }
-  }
+  for (size_t k = 0; k < f->ncurves; k++)
+    dvp_extend_range(f->c[k].x, f->c[k].y, f->c[k].n, r, &any);
   return any;
 }
 
@@ -215,6 +217,14 @@ void dvp_equal_aspect(double r[4]) {
   }
 }
 
+void dvp_line(const double *x, const double *y, size_t n) {
+  for (size_t a = 0; n - a > 1; a += LINE_CHUNK - 1) { /* chunks share their end points */
+    const size_t m = n - a < LINE_CHUNK ? n - a : LINE_CHUNK;
+    plline((PLINT)m, &x[a], &y[a]);
+    if (a + m == n) break;
+  }
+}
+
 /* draw the drawable runs of c as lines, a lone point as a dot */
 static void draw_curve(const curve *c) {
   size_t i = 0;
@@ -223,11 +233,7 @@ static void draw_curve(const curve *c) {
     size_t j = i;
     while (j < c->n && point_ok(c, j)) j++;
     if (j - i == 1) plpoin(1, &c->x[i], &c->y[i], 17);
-    for (size_t a = i; j - a > 1; a += LINE_CHUNK - 1) {
-      const size_t m = j - a < LINE_CHUNK ? j - a : LINE_CHUNK;
-      plline((PLINT)m, &c->x[a], &c->y[a]);
-      if (a + m == j) break;
-    }
+    dvp_line(&c->x[i], &c->y[i], j - i);
     i = j;
   }
 }

@@ -33,6 +33,13 @@ void dvp_escape(char *out, size_t size, const char *text, const char *suffix);
 /* whether v can be drawn */
 int dvp_plottable(double v);
 
+/* widen the bounds r (x0, x1, y0, y1) to the points of x, y (n each) that can
+ * be drawn; *any says whether r holds a point yet, and is set once it does */
+void dvp_extend_range(const double *x, const double *y, size_t n, double r[4], int *any);
+
+/* a line through the n points of x, y, all drawable, in calls PLplot can take */
+void dvp_line(const double *x, const double *y, size_t n);
+
 /* widen [lo, hi] by margin of its span, or pad it around its middle when it collapses */
 void dvp_pad_range(double *lo, double *hi, double margin, double min_pad);
 

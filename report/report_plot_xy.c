@@ -20,7 +20,7 @@
 #define MARK_TEXT "Pareto-optimal"  /* the legend entry of marked points */
 #define DOT_SCALE 0.5               /* of the default character height */
 #define STAR_SCALE 1.4
-#define CHUNK 65536 /* points per plline or plstring call */
+#define CHUNK 65536 /* points per plstring call */
 
 typedef struct xy_curve {
   double *x, *y;     /* plotted coordinates, NaN where a point is skipped */
@@ -77,17 +77,7 @@ static int fill_curve(xy_curve *c, const dv_plot_curve *in, int flags) {
 /* bounds of every drawn point; 0 when there is none */
 static int data_range(const xy_figure *f, double r[4]) {
   int any = 0;
-  for (size_t k = 0; k < f->n; k++) {
-    const xy_curve *c = &f->c[k];
-    for (size_t i = 0; i < c->n; i++) {
-      if (!point_ok(c, i)) continue;
-      if (!any || c->x[i] < r[0]) r[0] = c->x[i];
-      if (!any || c->x[i] > r[1]) r[1] = c->x[i];
-      if (!any || c->y[i] < r[2]) r[2] = c->y[i];
-      if (!any || c->y[i] > r[3]) r[3] = c->y[i];
-      any = 1;
-    }
-  }
+  for (size_t k = 0; k < f->n; k++) dvp_extend_range(f->c[k].x, f->c[k].y, f->c[k].n, r, &any);
   return any;
 }
 
@@ -116,12 +106,7 @@ static void draw_curve(const xy_curve *c) {
     while (i < c->n && !point_ok(c, i)) i++;
     size_t j = i;
     while (j < c->n && point_ok(c, j)) j++;
-    if (line)
-      for (size_t a = i; j - a > 1; a += CHUNK - 1) {
-        const size_t m = j - a < CHUNK ? j - a : CHUNK;
-        plline((PLINT)m, &c->x[a], &c->y[a]);
-        if (a + m == j) break;
-      }
+    if (line) dvp_line(&c->x[i], &c->y[i], j - i);
     if (dots || j - i == 1) {
       plschr(0, DOT_SCALE);
       glyphs(c, i, j, DOT);
@@ -245,7 +230,7 @@ static void free_figure(xy_figure *f) {
 }
 
 int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, const char *ylabel,
-               const dv_plot_curve *curves, size_t n, int flags, dv_error *err) {
+                      const dv_plot_curve *curves, size_t n, int flags, dv_error *err) {
   if (!path || (n > 0 && !curves) || n > DV_PLOT_MAX_CURVES)
     return dv_fail(err, DV_EINPUT, "dv_report_plot_xy: bad arguments");
   if (flags & ~(DV_PLOT_LOGX | DV_PLOT_LOGY | DV_PLOT_EQUAL))
