@@ -1,7 +1,8 @@
-/* dv_commands: the diskval subcommands. Each returns the process exit status:
- * 0 success, 1 a tolerance failed, 2 bad input or a harness error. */
-#ifndef DV_COMMANDS_H
-#define DV_COMMANDS_H
+/* cli: the diskval subcommands, one file each (cmd_NAME.c). Each returns the
+ * process exit status: 0 success, 1 a tolerance failed, 2 bad input or a
+ * harness error. Options are parsed by cli_args.h. */
+#ifndef DV_CLI_H
+#define DV_CLI_H
 
 enum { DV_EXIT_OK = 0, DV_EXIT_FAIL = 1, DV_EXIT_ERROR = 2 };
 
@@ -15,17 +16,22 @@ int dv_cli_best(int argc, char **argv);
 int dv_cli_attribute(int argc, char **argv);
 int dv_cli_map(int argc, char **argv);
 
-/* print "diskval: message" on stderr and return DV_EXIT_ERROR */
-int dv_cli_usage_error(const char *command, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* print "diskval COMMAND: message (see diskval COMMAND --help)" on stderr;
+ * returns DV_EXIT_ERROR */
+int dv_cli_usage_error(const char *command, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
 
-/* shared option parsing: SCENARIO [--set k=v]... and command-specific flags */
-typedef struct dv_common_args {
-  const char *scenario;
-  const char *sets[64];
-  int nsets;
-} dv_common_args;
+/* print "diskval COMMAND: message" on stderr; returns DV_EXIT_ERROR */
+int dv_cli_error(const char *command, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-/* consume --set at argv[*i]; 1 when consumed, 0 when not, -1 on error */
-int dv_cli_take_set(dv_common_args *a, int argc, char **argv, int *i);
+/* "unknown engine 'NAME' (one of: ...)" as a usage error */
+int dv_cli_unknown_engine(const char *command, const char *name);
+
+/* engines from "mujoco,ode"; NULL or "": every contact engine (NULL-terminated,
+ * at most DV_MAX_ENGINES) */
+struct dv_engine_type;
+struct dv_error;
+int dv_cli_engine_list(const char *list, const struct dv_engine_type **engines,
+                       struct dv_error *err);
 
 #endif

@@ -1,6 +1,8 @@
 /* diskval: cross-validation of rolling-disk simulations against the reduced
  * equations. The entry point dispatches to the subcommands. */
+#include <errno.h>
 #include <gsl/gsl_errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -9,6 +11,7 @@
 #include "dv_engine.h"
 #include "scenario.h"
 #include "red_solver.h"
+#include "run_scenario.h"
 
 static const char HELP[] =
     "usage: diskval COMMAND [ARGS]   (diskval COMMAND --help for each)\n"
@@ -27,36 +30,41 @@ static const char HELP[] =
     "  map [--c A..B:N] [--spin A..B:N]               stability map of upright rolling\n"
     "  engines                                        the engines and integrators\n";
 
-int dv_cli_engines(int argc, char **argv) {
-  if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-    puts(
-        "usage: diskval engines\n\nList the engines, their library versions and the\n"
-        "reference's integrators ([engines.reduced] integrator = NAME).");
-    return DV_EXIT_OK;
-  }
-  for (const dv_engine_type *const *e = dv_engines; *e; e++) {
-    printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
-    for (size_t i = 0; (*e)->settings && i < (*e)->settings->nspecs; i++) {
-      const dv_setting_spec *sp = &(*e)->settings->specs[i];
-      char range[96];
-      printf("    %-20s default ", sp->key);
-      if (sp->type == DV_SETTING_CHOICE) {
-        printf("%-10s (", dv_setting_choice(sp, (size_t)sp->def));
-        for (size_t j = 0; dv_setting_choice(sp, j); j++)
-          printf("%s%s", j ? ", " : "", dv_setting_choice(sp, j));
-        printf(")");
-      } else {
-        dv_setting_range_text(sp, range, sizeof range);
-        printf("%-10g %s", sp->def, range);
-      }
-      printf("%s%s%s%s\n", sp->unit[0] || sp->doc[0] ? "  " : "", sp->unit,
-             sp->unit[0] && sp->doc[0] ? ", " : "", sp->doc);
-    }
-  }
-  printf("\nreference integrators (default %s):\n", red_stepper_default()->name);
-  for (const red_stepper_type *const *t = red_steppers; *t; t++)
-    printf("  %-20s %s\n", (*t)->name, (*t)->description);
-  return DV_EXIT_OK;
+int dv_cli_usage_error(const char *command, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "diskval %s: ", command);
+  vfprintf(stderr, fmt, ap);
+  fprintf(stderr, " (see diskval %s --help)\n", command);
+  va_end(ap);
+  return DV_EXIT_ERROR;
+}
+
+int dv_cli_error(const char *command, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "diskval %s: ", command);
+  vfprintf(stderr, fmt, ap);
+  fputc('\n', stderr);
+  va_end(ap);
+  return DV_EXIT_ERROR;
+}
+
+int dv_cli_unknown_engine(const char *command, const char *name) {
+  char names[256] = "";
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+    snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
+             e == dv_engines ? "" : ", ", (*e)->name);
+  return dv_cli_error(command, "unknown engine '%s' (one of: %s)", name, names);
+}
+
+int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_error *err) {
+  if (list && list[0]) return dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, err);
+  size_t n = 0;
+  for (const dv_engine_type *const *e = dv_engines; *e && n < DV_MAX_ENGINES; e++)
+    if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
+  engines[n] = NULL;
+  return DV_OK;
 }
 
 int main(int argc, char **argv) {
@@ -75,7 +83,9 @@ int main(int argc, char **argv) {
   }
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
     if (!strcmp(argv[1], commands[i].name)) {
-      const int code = commands[i].run(argc - 1, argv + 1);
+      int code = commands[i].run(argc - 1, argv + 1);
+      if (fflush(stdout) || ferror(stdout)) /* e.g. > /dev/full: the output is lost */
+        code = dv_cli_error(argv[1], "cannot write the output: %s", strerror(errno));
       dv_exec_mpi_finalize();
       return code;
     }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cli_args.h"
 #include "dv_reference.h"
 #include "run_meta.h"
 #include "scenario.h"
@@ -38,7 +39,8 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   an->crit = red_upright_critical_spin(d);
   if (red_invariants(d, y, &an->f1, &an->f2))
     return dv_fail(err, DV_ENUMERIC, "f1, f2 could not be evaluated at theta = %g", y[RED_TH]);
-  int status = red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, err);
+  int status =
+      red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, err);
   if (status) return status;
   an->steady = red_is_steady(d, y, 1e-9);
   if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
@@ -105,44 +107,29 @@ static void print_text(const dv_scenario *sc, const analysis *an) {
 }
 
 int dv_cli_analyze(int argc, char **argv) {
-  dv_common_args a = {0};
   int json = 0;
-  for (int i = 1; i < argc; i++) {
-    const int set = dv_cli_take_set(&a, argc, argv, &i);
-    if (set < 0) return dv_cli_usage_error("analyze", "--set needs section.key=value");
-    if (set) continue;
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      fputs(HELP, stdout);
-      return DV_EXIT_OK;
-    } else if (!strcmp(argv[i], "--json")) {
-      json = 1;
-    } else if (argv[i][0] == '-' && argv[i][1]) {
-      return dv_cli_usage_error("analyze", "unknown option '%s'", argv[i]);
-    } else if (!a.scenario) {
-      a.scenario = argv[i];
-    } else {
-      return dv_cli_usage_error("analyze", "more than one scenario given");
-    }
-  }
-  if (!a.scenario) return dv_cli_usage_error("analyze", "no scenario given");
-  static dv_scenario sc;
+  const dv_cli_option options[] = {{"json", DV_CLI_FLAG, &json, 0, 0}};
+  const dv_cli_command cmd = {"analyze", HELP, options, 1, 1, 1};
+  dv_cli_args a;
+  const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
+  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  dv_scenario sc;
   dv_error err = {{0}};
   analysis an;
-  if (dv_engine_load_scenario(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
+  int code = DV_EXIT_OK;
+  if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
-    return DV_EXIT_ERROR;
-  }
-  if (analyse(&sc, &an, &err)) {
-    fprintf(stderr, "diskval analyze: %s: %s\n", sc.name, err.msg);
-    return DV_EXIT_ERROR;
-  }
-  if (!json) {
+    code = DV_EXIT_ERROR;
+  } else if (analyse(&sc, &an, &err)) {
+    code = dv_cli_error("analyze", "%s: %s", sc.name, err.msg);
+  } else if (!json) {
     print_text(&sc, &an);
-    return DV_EXIT_OK;
+  } else {
+    char *text = to_json(&sc, &an);
+    if (text) puts(text);
+    code = text ? DV_EXIT_OK : dv_cli_error("analyze", "out of memory");
+    free(text);
   }
-  char *text = to_json(&sc, &an);
-  if (!text) return DV_EXIT_ERROR;
-  puts(text);
-  free(text);
-  return DV_EXIT_OK;
+  dv_cli_args_free(&cmd, &a);
+  return code;
 }

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_args.h"
 #include "io_file.h"
 #include "report_plot.h"
 #include "exec_pool.h"
@@ -24,8 +25,8 @@ static const char HELP[] =
     "\n"
     "Map upright rolling of a disk (r 0.1 m, m 1 kg, A = m r^2 / 4) over C / (m r^2)\n"
     "(default 0.05..0.5:8) and the spin psi_dot (rad/s, default 1..40:12, log), nudged\n"
-    "by theta_dot = 0.05 rad/s, for DURATION s (default 5) in every engine (default\n"
-    "reduced,mujoco,ode). Each cell is 'stays up' (|theta - pi/2| < 0.1 rad),\n"
+    "by theta_dot = 0.05 rad/s, for DURATION s (default 5) in every engine (default:\n"
+    "the reference and every contact engine). Each cell is 'stays up' (|theta - pi/2| < 0.1 rad),\n"
     "'wobbles', or 'falls' (lies down or leaves the ground). Writes DIR (default: map):\n"
     "map.csv and map_<engine>.svg with the critical spin\n"
     "Omega_c = sqrt(m g r A / (C (C + m r^2))) drawn over the cells.\n";
@@ -58,8 +59,6 @@ static void cell_scenario(const map *mp, size_t ic, size_t is, dv_scenario *sc) 
   sc->output_dt = 0.01;
   sc->disk = red_disk_uniform(0.1, 1.0, 9.81);
   sc->disk.C = value(mp->c, ic) * sc->disk.m * sc->disk.r * sc->disk.r;
-  /* as thin as ODE stays stable: upright cylinders rock */
-  dv_scenario_set_number(sc, "ode", "half_thickness", 1e-6, NULL);
   sc->initial[RED_TH] = M_PI / 2;
   sc->initial[RED_VTH] = 0.05;
   sc->initial[RED_VPS] = value(mp->spin, is);
@@ -80,7 +79,7 @@ static void cell_task(size_t k, void *result, void *ctx) {
   const map *mp = ctx;
   const size_t ns = mp->spin->n, nc = mp->c->n;
   const size_t is = k % ns, ic = (k / ns) % nc, ie = k / (ns * nc);
-  static dv_scenario sc;
+  dv_scenario sc;
   cell_scenario(mp, ic, is, &sc);
   excursion x = {0.0};
   dv_engine_stats st;
@@ -114,8 +113,8 @@ static int write_outputs(const char *dir, const map *mp, const cell *cells, dv_e
     }
   status = dv_io_commit(&out, err);
   /* one map per engine: a curve of points per outcome, and the critical spin */
-  static double xs[NOUTCOMES][DV_SWEEP_MAX_VALUES * DV_SWEEP_MAX_VALUES];
-  static double ys[NOUTCOMES][DV_SWEEP_MAX_VALUES * DV_SWEEP_MAX_VALUES];
+  double *xs = malloc(2 * NOUTCOMES * nc * ns * sizeof *xs), *ys = xs + NOUTCOMES * nc * ns;
+  if (!xs) return status ? status : dv_fail(err, DV_ESYSTEM, "out of memory");
   double cx[200], cy[200];
   for (int i = 0; i < 200; i++) {
     red_disk dk = red_disk_uniform(0.1, 1.0, 9.81);
@@ -127,80 +126,87 @@ static int write_outputs(const char *dir, const map *mp, const cell *cells, dv_e
     size_t count[NOUTCOMES] = {0};
     for (size_t i = 0; i < nc * ns; i++) {
       const int o = cells[e * nc * ns + i].outcome;
-      xs[o][count[o]] = value(mp->c, i / ns);
-      ys[o][count[o]++] = value(mp->spin, i % ns);
+      xs[o * nc * ns + count[o]] = value(mp->c, i / ns);
+      ys[o * nc * ns + count[o]++] = value(mp->spin, i % ns);
     }
     dv_plot_curve curves[NOUTCOMES + 1];
     size_t n = 0;
     for (int o = 0; o < NOUTCOMES; o++)
       if (count[o])
         curves[n++] =
-            (dv_plot_curve){OUTCOMES[o], count[o], xs[o], ys[o], NULL, DV_CURVE_POINTS, o + 1};
+            (dv_plot_curve){OUTCOMES[o],     count[o], xs + o * nc * ns, ys + o * nc * ns, NULL,
+                            DV_CURVE_POINTS, o + 1};
     curves[n++] =
         (dv_plot_curve){"critical spin (reduced, linear)", 200, cx, cy, NULL, DV_CURVE_LINE, 0};
     char title[128];
     snprintf(path, sizeof path, "%s/map_%s.svg", dir, mp->engines[e]->name);
     snprintf(title, sizeof title, "upright rolling in %s", mp->engines[e]->name);
-    status = dv_report_plot_xy(path, title, "C / (m r^2)", "spin psi_dot (rad/s)", curves, n, DV_PLOT_LOGY,
-                        err);
+    status = dv_report_plot_xy(path, title, "C / (m r^2)", "spin psi_dot (rad/s)", curves, n,
+                               DV_PLOT_LOGY, err);
   }
+  free(xs);
   return status;
 }
 
-int dv_cli_map(int argc, char **argv) {
-  static dv_vary c, spin;
-  const char *cspec = "c=0.05..0.5:8", *sspec = "spin=1..40:12", *engines = "reduced,mujoco,ode";
-  const char *out = "map";
-  double duration = 5.0;
-  int jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
+/* the default engines: the thin-disk reference and every contact engine */
+static void default_engines(map *mp) {
+  mp->engines[mp->nengines++] = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  for (const dv_engine_type *const *e = dv_engines; *e && mp->nengines < DV_MAX_ENGINES; e++)
+    if ((*e)->role == DV_ENGINE_CONTACT) mp->engines[mp->nengines++] = *e;
+}
+
+/* the command once its options are read */
+static int run_map(map *mp, const char *cspec, const char *sspec, const char *engines,
+                   const char *out, int jobs) {
   char cbuf[128], sbuf[128];
-  for (int i = 1; i < argc; i++) {
-    const int has = i + 1 < argc;
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))
-      return fputs(HELP, stdout), DV_EXIT_OK;
-    else if (!strcmp(argv[i], "--c") && has)
-      snprintf(cbuf, sizeof cbuf, "c=%s", argv[++i]), cspec = cbuf;
-    else if (!strcmp(argv[i], "--spin") && has)
-      snprintf(sbuf, sizeof sbuf, "spin=%s", argv[++i]), sspec = sbuf;
-    else if (!strcmp(argv[i], "--engines") && has)
-      engines = argv[++i];
-    else if (!strcmp(argv[i], "--duration") && has)
-      duration = strtod(argv[++i], NULL);
-    else if (!strcmp(argv[i], "--out") && has)
-      out = argv[++i];
-    else if (!strcmp(argv[i], "--jobs") && has)
-      jobs = atoi(argv[++i]);
-    else
-      return dv_cli_usage_error("map", "unknown or incomplete option '%s'", argv[i]);
-  }
   dv_error err = {{0}};
-  map mp = {&c, &spin, {NULL}, 0, duration};
-  if (dv_search_vary_parse(cspec, "map", &c, &err) || dv_search_vary_parse(sspec, "map", &spin, &err) ||
-      dv_engine_parse_list(engines, mp.engines, DV_MAX_ENGINES + 1, &err))
+  snprintf(cbuf, sizeof cbuf, "c=%s", cspec);
+  snprintf(sbuf, sizeof sbuf, "spin=%s", sspec);
+  if (dv_search_vary_parse(cbuf, "map", (dv_vary *)mp->c, &err) ||
+      dv_search_vary_parse(sbuf, "map", (dv_vary *)mp->spin, &err))
     return dv_cli_usage_error("map", "%s", err.msg);
-  while (mp.engines[mp.nengines]) mp.nengines++;
-  if (!(duration > 0.0 && duration <= 3600.0) || jobs < 1)
-    return dv_cli_usage_error("map", "--duration takes (0, 3600] s and --jobs >= 1");
-  for (size_t i = 0; i < c.n; i++)
-    if (!(value(&c, i) > 0.0 && value(&c, i) <= 0.5))
-      return dv_cli_usage_error("map", "C / (m r^2) must lie in (0, 0.5] (C <= 2A)");
-  const size_t n = mp.nengines * c.n * spin.n;
+  if (engines && dv_engine_parse_list(engines, mp->engines, DV_MAX_ENGINES + 1, &err))
+    return dv_cli_usage_error("map", "%s", err.msg);
+  if (!engines) default_engines(mp);
+  while (mp->engines[mp->nengines]) mp->nengines++;
+  for (size_t i = 0; i < mp->c->n; i++)
+    if (!(value(mp->c, i) > 0.0 && value(mp->c, i) <= 0.5))
+      return dv_cli_usage_error("map", "--c: C / (m r^2) must lie in (0, 0.5] (C <= 2A)");
+  const size_t n = mp->nengines * mp->c->n * mp->spin->n;
   cell *cells = calloc(n, sizeof *cells);
-  if (!cells) return DV_EXIT_ERROR;
+  if (!cells) return dv_cli_error("map", "out of memory");
   for (size_t k = 0; k < n; k++) cells[k].outcome = FAILED;
-  const int pool = dv_exec_pool_run(n, sizeof *cells, cell_task, &mp, cells, jobs, NULL);
+  const int pool = dv_exec_pool_run(n, sizeof *cells, cell_task, mp, cells, jobs, NULL);
   int code = DV_EXIT_OK;
   if (pool == 1) { /* a worker rank */
     free(cells);
     return DV_EXIT_OK;
   }
-  if (pool != 0 || dv_io_make_dirs(out, &err) || write_outputs(out, &mp, cells, &err)) {
-    fprintf(stderr, "diskval map: %s\n", err.msg[0] ? err.msg : "stopped early");
-    code = DV_EXIT_ERROR;
-  } else {
-    printf("map: %zu cells x %zu engines: %s/map.csv, %s/map_<engine>.svg\n", c.n * spin.n,
-           mp.nengines, out, out);
-  }
+  if (pool != 0 || dv_io_make_dirs(out, &err) || write_outputs(out, mp, cells, &err))
+    code = dv_cli_error("map", "%s", err.msg[0] ? err.msg : "stopped early");
+  else
+    printf("map: %zu cells x %zu engines: %s/map.csv, %s/map_<engine>.svg\n",
+           mp->c->n * mp->spin->n, mp->nengines, out, out);
   free(cells);
+  return code;
+}
+
+int dv_cli_map(int argc, char **argv) {
+  const char *cspec = "0.05..0.5:8", *sspec = "1..40:12", *engines = NULL, *out = "map";
+  double duration = 5.0;
+  int jobs = dv_cli_default_jobs();
+  const dv_cli_option options[] = {
+      {"c", DV_CLI_TEXT, &cspec, 0, 0},         {"spin", DV_CLI_TEXT, &sspec, 0, 0},
+      {"engines", DV_CLI_TEXT, &engines, 0, 0}, {"duration", DV_CLI_REAL, &duration, 1e-6, 3600.0},
+      {"out", DV_CLI_TEXT, &out, 0, 0},         {"jobs", DV_CLI_INT, &jobs, 1, 1024},
+  };
+  const dv_cli_command cmd = {"map", HELP, options, 6, 0, 0};
+  dv_cli_args a;
+  const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
+  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  dv_vary c, spin;
+  map mp = {&c, &spin, {NULL}, 0, duration};
+  const int code = run_map(&mp, cspec, sspec, engines, out, jobs);
+  dv_cli_args_free(&cmd, &a);
   return code;
 }

@@ -1,9 +1,9 @@
 /* dv_cli_simulate: diskval simulate SCENARIO --engine NAME [--set k=v] [--out FILE]. */
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "cli_args.h"
 #include "dv_engine.h"
 #include "run_meta.h"
 #include "io_file.h"
@@ -25,61 +25,22 @@ static const char HELP[] =
     "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
     "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
 
-int dv_cli_usage_error(const char *command, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  fprintf(stderr, "diskval %s: ", command);
-  vfprintf(stderr, fmt, ap);
-  fprintf(stderr, " (see diskval %s --help)\n", command);
-  va_end(ap);
-  return DV_EXIT_ERROR;
-}
-
-int dv_cli_take_set(dv_common_args *a, int argc, char **argv, int *i) {
-  if (strcmp(argv[*i], "--set") != 0) return 0;
-  if (*i + 1 >= argc || a->nsets == (int)(sizeof a->sets / sizeof a->sets[0])) return -1;
-  a->sets[a->nsets++] = argv[++*i];
-  return 1;
-}
-
-int dv_cli_simulate(int argc, char **argv) {
-  dv_common_args a = {0};
-  const char *engine_name = NULL, *out_path = "-", *forces_path = NULL;
-  for (int i = 1; i < argc; i++) {
-    const int set = dv_cli_take_set(&a, argc, argv, &i);
-    if (set < 0) return dv_cli_usage_error("simulate", "--set needs section.key=value");
-    if (set) continue;
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      fputs(HELP, stdout);
-      return DV_EXIT_OK;
-    } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
-      engine_name = argv[++i];
-    } else if (!strcmp(argv[i], "--out") && i + 1 < argc) {
-      out_path = argv[++i];
-    } else if (!strcmp(argv[i], "--forces") && i + 1 < argc) {
-      forces_path = argv[++i];
-    } else if (argv[i][0] == '-' && argv[i][1]) {
-      return dv_cli_usage_error("simulate", "unknown or incomplete option '%s'", argv[i]);
-    } else if (!a.scenario) {
-      a.scenario = argv[i];
-    } else {
-      return dv_cli_usage_error("simulate", "more than one scenario given");
-    }
-  }
-  if (!a.scenario) return dv_cli_usage_error("simulate", "no scenario given");
+/* the command once its options are read */
+static int simulate(const char *scenario, const dv_cli_list *sets, const char *engine_name,
+                    const char *out_path, const char *forces_path) {
   if (!engine_name) return dv_cli_usage_error("simulate", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
-  if (!engine) return dv_cli_usage_error("simulate", "unknown engine '%s'", engine_name);
-
-  static dv_scenario sc;
+  if (!engine) return dv_cli_unknown_engine("simulate", engine_name);
+  if (forces_path && strcmp(out_path, "-") && !strcmp(forces_path, out_path))
+    return dv_cli_usage_error("simulate", "--out and --forces name the same file '%s'", out_path);
+  dv_scenario sc;
   dv_error err = {{0}};
-  if (dv_engine_load_scenario(a.scenario, a.sets, (size_t)a.nsets, &sc, &err)) {
+  if (dv_engine_load_scenario(scenario, sets->items, sets->n, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }
   dv_io_file out, forces = {0};
-  if (dv_io_open(&out, out_path, &err) ||
-      (forces_path && dv_io_open(&forces, forces_path, &err))) {
+  if (dv_io_open(&out, out_path, &err) || (forces_path && dv_io_open(&forces, forces_path, &err))) {
     dv_io_abort(&out);
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
@@ -110,4 +71,20 @@ int dv_cli_simulate(int argc, char **argv) {
     fprintf(stderr, "diskval simulate: %s: %s: the run ended early: %s\n", sc.name, engine->name,
             stats.detail);
   return DV_EXIT_OK;
+}
+
+int dv_cli_simulate(int argc, char **argv) {
+  const char *engine_name = NULL, *out_path = "-", *forces_path = NULL;
+  const dv_cli_option options[] = {
+      {"engine", DV_CLI_TEXT, &engine_name, 0, 0},
+      {"out", DV_CLI_TEXT, &out_path, 0, 0},
+      {"forces", DV_CLI_TEXT, &forces_path, 0, 0},
+  };
+  const dv_cli_command cmd = {"simulate", HELP, options, 3, 1, 1};
+  dv_cli_args a;
+  const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
+  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path);
+  dv_cli_args_free(&cmd, &a);
+  return code;
 }

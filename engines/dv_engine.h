@@ -83,7 +83,20 @@ typedef struct dv_engine_search {
   const char *choice_key; /* e.g. "integrator" */
   const char *step_key;   /* e.g. "timestep", "rtol" */
   double lo, hi;          /* range of the step searched */
+  /* a reference: the step range of its own work-precision curves, drawn with a
+   * contact engine's sweep ("rtol=1e-6..1e-13:8"); NULL: none */
+  const char *work_precision;
 } dv_engine_search;
+
+/* a contact engine's keys of [engines.NAME] that attribution turns */
+typedef struct dv_engine_contact {
+  const char *geom_key;      /* the body's shape, e.g. "geom" */
+  const char *thin_choice;   /* its value for the exact thin disk, e.g. "thin" */
+  const char *softness_key;  /* the contact's softness, e.g. "solref_timeconst", "soft_cfm" */
+  double stiffer;            /* factor on it for a stiffer contact (0.25, 0.01) */
+  double softness_min_steps; /* the library raises the softness to this many steps (0: none) */
+  const char *friction_key;  /* e.g. "friction" */
+} dv_engine_contact;
 
 typedef struct dv_engine_type {
   const char *name;        /* as given to --engine */
@@ -91,6 +104,7 @@ typedef struct dv_engine_type {
   dv_engine_role role;
   const dv_settings_section *settings; /* [engines.NAME] */
   const dv_engine_search *search;      /* NULL: nothing to search */
+  const dv_engine_contact *contact;    /* a contact engine's knobs; NULL for references */
   /* half-thickness (m) of the body it simulates in sc: 0 for the thin disk or a
    * smooth stand-in compared with it; NULL: 0 */
   double (*half_thickness)(const dv_scenario *sc);

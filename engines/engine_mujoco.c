@@ -100,7 +100,10 @@ static double mujoco_half_thickness(const dv_scenario *sc) {
   return s->geom == GEOM_CYLINDER ? s->half_thickness : 0.0;
 }
 
-static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02};
+static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02, NULL};
+
+/* MuJoCo raises the solref time constant to 2 timesteps */
+static const dv_engine_contact CONTACT = {"geom", "thin", "solref_timeconst", 0.25, 2.0, "friction"};
 
 #define LOST_CONTACT_TIME 0.05 /* s the lowest point may stay above the gap before lost_contact */
 
@@ -442,6 +445,7 @@ const dv_engine_type dv_engine_mujoco = {
     .role = DV_ENGINE_CONTACT,
     .settings = &SETTINGS,
     .search = &SEARCH,
+    .contact = &CONTACT,
     .half_thickness = mujoco_half_thickness,
     .version = mujoco_version,
     .alloc = mujoco_alloc,

@@ -118,7 +118,8 @@ static int reduced_tighten(dv_scenario *sc, dv_error *err) {
 }
 
 /* the reference's own accuracy: its integrator and rtol */
-const dv_engine_search dv_reference_search = {"reduced", "integrator", "rtol", 1e-14, 1e-3};
+const dv_engine_search dv_reference_search = {"reduced", "integrator", "rtol", 1e-14, 1e-3,
+                                               "rtol=1e-6..1e-13:8"};
 
 const dv_engine_type dv_engine_reduced = {
     .name = "reduced",

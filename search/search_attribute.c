@@ -1,0 +1,102 @@
+/* search_attribute: the shares of a contact engine's error (search_attribute.h). */
+#include "search_attribute.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_engine.h"
+#include "search_sweep.h"
+
+/* a plateau, where the errors do not fall with the step: an order below
+ * MIN_ORDER, or less than MIN_FALL of e(dt) gone at dt/4 */
+#define MIN_ORDER 0.2
+#define MIN_FALL 0.1
+
+void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
+                               dv_attribution *out) {
+  out->e = *e;
+  out->has_stand_in = has_stand_in;
+  out->geometry = has_stand_in ? e->stand_in - e->thin : 0.0;
+  const double d1 = e->dt[0] - e->dt[1], d2 = e->dt[1] - e->dt[2];
+  const double p = d1 > 0.0 && d2 > 0.0 ? log2(d1 / d2) : NAN;
+  out->order = p > MIN_ORDER && e->dt[0] - e->dt[2] > MIN_FALL * e->dt[0] ? p : NAN;
+  /* e(dt) - e(0) = d1 / (1 - 2^-p) for e(h) = e(0) + c h^p */
+  out->time = isnan(out->order) ? 0.0 : d1 / (1.0 - pow(2.0, -out->order));
+  out->contact = e->dt[2] - e->stiff;
+  out->rest = e->stand_in - out->geometry - out->time - out->contact;
+}
+
+typedef struct prober {
+  const char *path;
+  const char *const *sets;
+  size_t nsets;
+  const dv_engine_type *engine;
+} prober;
+
+/* the max theta error against the thin disk of one run with overrides (NULL ends) */
+static int probe(const prober *pr, double *e, dv_error *err, const char *o1, const char *o2,
+                 const char *o3, const char *o4) {
+  const char *given[4] = {o1, o2, o3, o4}, *over[4];
+  size_t n = 0;
+  for (int i = 0; i < 4; i++)
+    if (given[i]) over[n++] = given[i];
+  dv_sweep_point p;
+  if (dv_search_sweep_probe(pr->path, pr->sets, pr->nsets, pr->engine->name, over, n, &p, err))
+    return DV_EINPUT;
+  if (!p.ok) {
+    char with[400] = "";
+    for (size_t i = 0; i < n; i++)
+      snprintf(with + strlen(with), sizeof with - strlen(with), " %s", over[i]);
+    return dv_fail(err, DV_ENUMERIC, "%s cannot be attributed: the run%s%s failed: %s: %s",
+                   pr->engine->name, n ? " with" : "", with, dv_run_verdict_name(p.verdict),
+                   p.detail);
+  }
+  *e = p.theta_thin;
+  return DV_OK;
+}
+
+int dv_search_attribute(const char *path, const char *const *sets, size_t nsets,
+                        const char *engine_name, dv_attribution *out, dv_error *err) {
+  const dv_engine_type *engine = dv_engine_find(engine_name);
+  if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
+  const dv_engine_contact *k = engine->contact;
+  if (!k || !engine->search)
+    return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute",
+                   engine->name);
+  dv_scenario sc;
+  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
+  const char *name = engine->name;
+  const double dt = dv_scenario_get(&sc, name, engine->search->step_key);
+  const double soft = dv_scenario_get(&sc, name, k->softness_key);
+  const double friction = dv_scenario_get(&sc, name, k->friction_key);
+  const dv_setting_spec *geom = dv_settings_find(engine->settings, k->geom_key);
+  const int stand_in =
+      strcmp(dv_setting_choice(geom, (size_t)dv_scenario_get(&sc, name, k->geom_key)),
+             k->thin_choice) != 0;
+  char thin[128], steps[4][128], softs[4][128], stiff[128], rough[128];
+  snprintf(thin, sizeof thin, "engines.%s.%s=%s", name, k->geom_key, k->thin_choice);
+  for (int i = 0; i < 4; i++) { /* dt, dt/2, dt/4, dt/8 */
+    const double h = dt / (1 << i);
+    snprintf(steps[i], sizeof steps[i], "engines.%s.%s=%.9g", name, engine->search->step_key, h);
+    snprintf(softs[i], sizeof softs[i], "engines.%s.%s=%.9g", name, k->softness_key,
+             fmax(soft, k->softness_min_steps * h));
+  }
+  /* a stiffer contact needs a step that resolves it, where the softness follows the step */
+  const int f = k->softness_min_steps > 0.0 ? 3 : 2;
+  snprintf(stiff, sizeof stiff, "engines.%s.%s=%.9g", name, k->softness_key,
+           fmax(soft, k->softness_min_steps * dt) * k->stiffer);
+  snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
+  const int follows = k->softness_min_steps > 0.0;
+  const prober pr = {path, sets, nsets, engine};
+  dv_attribution_errors e;
+  int status = probe(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
+  if (!status) status = probe(&pr, &e.thin, err, thin, NULL, NULL, NULL);
+  for (int i = 0; !status && i < 3; i++)
+    status = probe(&pr, &e.dt[i], err, thin, steps[i], follows ? softs[i] : NULL, NULL);
+  if (!status) status = probe(&pr, &e.stiff, err, thin, steps[f], stiff, rough);
+  if (status) return status;
+  dv_search_attribute_split(&e, stand_in, out);
+  out->timestep = dt;
+  return DV_OK;
+}

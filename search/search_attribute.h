@@ -1,0 +1,48 @@
+/* search_attribute: why a contact engine disagrees with the thin disk.
+ *
+ * The engine's max theta error against the thin disk, e, is split into
+ * shares, each a measured difference (all at the scenario's other settings):
+ *   geometry  e with the engine's stand-in shape minus e with the exact thin
+ *             disk (zero when the engine already models the thin disk)
+ *   time      Richardson over dt, dt/2, dt/4 with the thin disk: the part
+ *             that vanishes as dt -> 0, e(dt) - e(0); reported only where the
+ *             errors fall with the step (an order p > 0.2, and e(dt/4) at
+ *             least 10% below e(dt)); else zero, "flat"
+ *   contact   at dt/4, e minus e with a stiffer contact and 10x friction
+ *   rest      what the three leave (interactions, the solver's tolerance)
+ * Where the library raises the contact softness to a number of steps (MuJoCo's
+ * solref), the softness follows the step in every probe.
+ */
+#ifndef DV_SEARCH_ATTRIBUTE_H
+#define DV_SEARCH_ATTRIBUTE_H
+
+#include <stddef.h>
+
+#include "dv_error.h"
+
+/* the measured errors attribution splits (rad) */
+typedef struct dv_attribution_errors {
+  double stand_in; /* against the thin disk, at the scenario's settings */
+  double thin;     /* the same with the exact thin-disk geometry */
+  double dt[3];    /* thin geometry at dt, dt/2, dt/4 */
+  double stiff;    /* at dt/4 with a stiffer contact and more friction */
+} dv_attribution_errors;
+
+typedef struct dv_attribution {
+  dv_attribution_errors e;
+  double timestep;                      /* s, the scenario's */
+  int has_stand_in;                     /* the scenario's geometry is not the thin disk */
+  double geometry, time, contact, rest; /* rad; they add up to e.stand_in */
+  double order;                         /* observed order of the time error; NAN: flat */
+} dv_attribution;
+
+/* the shares from measured errors (the maths alone) */
+void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
+                               dv_attribution *out);
+
+/* probe the engine on the scenario and split its error; a probe that fails
+ * (diverges, cannot run the scenario) is an error naming it */
+int dv_search_attribute(const char *scenario_path, const char *const *sets, size_t nsets,
+                        const char *engine, dv_attribution *out, dv_error *err);
+
+#endif

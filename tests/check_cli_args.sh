@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# check_cli_args.sh DISKVAL SCENARIO_DIR: every command refuses bad arguments
+# cleanly. Each case must exit 2, print exactly one line on stderr matching
+# its regex, print nothing on stdout and write nothing in the working
+# directory: strict numbers ("1e-3x", "2x", "nan", ""), unknown options,
+# missing values, surplus arguments, unknown engines, bad --vary.
+set -u
+export LC_ALL=C
+dv=${1:?usage: check_cli_args.sh DISKVAL SCENARIO_DIR}
+sc=${2:?usage: check_cli_args.sh DISKVAL SCENARIO_DIR}/falling.ini
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+fail=0
+
+# expect REGEX ARGS...: exit 2, one stderr line matching REGEX, no stdout, no file
+expect() {
+  local regex=$1
+  shift
+  "$dv" "$@" >out.txt 2>err.txt
+  local code=$? lines
+  lines=$(wc -l <err.txt)
+  if [ $code -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -Eq -e "$regex" err.txt || [ -s out.txt ] ||
+    [ "$(ls -A | grep -cv '^\(out\|err\)\.txt$')" -ne 0 ]; then
+    echo "FAIL: diskval $*: exit $code, stderr: $(cat err.txt), stdout: $(head -c 200 out.txt)"
+    fail=1
+  fi
+  rm -rf ./* ./.[!.]* 2>/dev/null
+}
+
+expect "theta-tol: '1e-3x' is not a finite number" best "$sc" --engine mujoco --theta-tol 1e-3x
+expect "theta-tol: 'nan' is not a finite number" best "$sc" --engine mujoco --theta-tol nan
+expect "theta-tol: '' is not a finite number" best "$sc" --engine mujoco --theta-tol ''
+expect "theta-tol: 'inf' is not a finite number" best "$sc" --engine mujoco --theta-tol inf
+expect "jobs: '2x' is not a whole number" suite "$sc" --jobs 2x
+expect "jobs: '1.5' is not a whole number" sweep "$sc" --engine ode --vary timestep=1e-4 --jobs 1.5
+expect "jobs: '0' is not a whole number in \[1, 1024\]" suite "$sc" --jobs 0
+expect "duration: 'nan' is not a finite number" map --duration nan
+expect "duration: '5s' is not a finite number" map --duration 5s
+expect "timestep: not a number: '1e-3x'" sweep "$sc" --engine mujoco --vary timestep=1e-3x
+expect "bogus: unknown key" sweep "$sc" --engine mujoco --vary bogus=1,2
+expect "integrator: .*rk5" sweep "$sc" --engine mujoco --vary integrator=rk5
+expect "timestep: -1 is outside" sweep "$sc" --engine mujoco --vary timestep=-1
+expect "unexpected argument 'extra'" simulate "$sc" extra --engine reduced
+expect "unexpected argument 'x.ini'" compare "$sc" x.ini
+expect "unexpected argument 'extra'" analyze "$sc" extra
+expect "unexpected argument 'extra'" attribute "$sc" extra --engine mujoco
+expect "unexpected argument 'extra'" best "$sc" extra --engine mujoco --theta-tol 1e-3
+expect "unexpected argument 'extra'" sweep "$sc" extra --engine mujoco --vary timestep=1e-3
+expect "unexpected argument 'x'" map x
+expect "unexpected argument 'x'" engines x
+expect "unknown option '--bogus'" simulate "$sc" --engine reduced --bogus
+expect "unknown option '--jobs'" compare "$sc" --jobs 2
+expect "--engine needs a value" simulate "$sc" --engine
+expect "no scenario given" simulate --engine reduced
+expect "no scenario given" suite
+expect "unknown engine 'Mujoco' \(one of: .*mujoco" simulate "$sc" --engine Mujoco
+expect "--set 'radius=1': expected section.key=value" simulate "$sc" --engine reduced --set radius=1
+expect "same file" simulate "$sc" --engine reduced --out a.csv --forces a.csv
+[ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
+exit $fail
