@@ -15,34 +15,8 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_test.h"
+#include "dv_test_traj.h"
 #include "run_trajectory.h"
-
-#define MAXS 1001
-
-typedef struct traj {
-  long n;
-  dv_sample s[MAXS];
-  int status;
-  dv_engine_stats stats;
-} traj;
-
-static int run(const dv_engine_type *e, const dv_scenario *sc, traj *tr) {
-  dv_error err = {{0}};
-  void *eng = e->alloc(sc, &err);
-  tr->n = 0;
-  tr->status = eng ? e->reset(eng, sc->initial, &err) : DV_ESYSTEM;
-  for (long k = 0; tr->status == DV_OK && k < MAXS; k++) {
-    const double t = fmin(k * sc->output_dt, sc->duration);
-    tr->status = e->advance(eng, t, &tr->s[tr->n], &err);
-    if (tr->status >= 0) tr->n++;
-    if (t >= sc->duration) break;
-  }
-  if (eng) {
-    e->stats(eng, &tr->stats);
-    e->free(eng);
-  }
-  return tr->status;
-}
 
 static dv_scenario base(const char *name, double duration) {
   dv_scenario sc;
@@ -80,8 +54,8 @@ static void check_round_trip(const dv_engine_type *e) {
     sc.duration = sc.output_dt = 0.01;
     memcpy(sc.initial, states[k], sizeof sc.initial);
     dv_scenario_set_number(&sc, "matched", "half_thickness", engine_h(e, &sc), NULL);
-    run(e, &sc, &a);
-    run(&dv_engine_matched, &sc, &b);
+    dv_test_run(e, &sc, &a);
+    dv_test_run(&dv_engine_matched, &sc, &b);
     CHECK(a.n >= 1 && b.n >= 1, "%s: state %d: no sample", e->name, k);
     for (int i = 0; i < RED_NSTATE; i++)
       CHECK(fabs(a.s[0].y[i] - states[k][i]) <= 1e-12 * (1 + fabs(states[k][i])),
@@ -145,9 +119,10 @@ static void check_accuracy(const dv_engine_type *e) {
   for (size_t c = 0; c < 3; c++) {
     dv_scenario sc = base(cases[c].name, cases[c].duration);
     memcpy(sc.initial, cases[c].y, sizeof sc.initial);
-    dv_scenario_set_number(&sc, "matched", "half_thickness", cases[c].thin ? 0.0 : engine_h(e, &sc), NULL);
-    run(e, &sc, &a);
-    run(&dv_engine_matched, &sc, &b);
+    dv_scenario_set_number(&sc, "matched", "half_thickness", cases[c].thin ? 0.0 : engine_h(e, &sc),
+                           NULL);
+    dv_test_run(e, &sc, &a);
+    dv_test_run(&dv_engine_matched, &sc, &b);
     double th, path;
     differences(&a, &b, &th, &path);
     printf("%-7s %-8s theta %.2e rad  contact %.2e m  (%ld/%ld samples, %s)\n", e->name,
@@ -168,7 +143,7 @@ static void check_small_c(const dv_engine_type *e) {
   sc.disk.C = 1e-6 * sc.disk.m * sc.disk.r * sc.disk.r;
   const double y[RED_NSTATE] = {1.1, 0.2, 3.0, -6.0, 0, 0, 0, 0};
   memcpy(sc.initial, y, sizeof y);
-  run(e, &sc, &a);
+  dv_test_run(e, &sc, &a);
   printf("%-7s C = 1e-6 m r^2: %s %s\n", e->name, dv_outcome_name(a.stats.outcome), a.stats.detail);
   CHECK(a.stats.outcome != DV_OUTCOME_ERROR || a.stats.detail[0], "%s: no outcome", e->name);
 }

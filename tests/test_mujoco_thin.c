@@ -23,6 +23,7 @@
 #include "dv_pose.h"
 #include "dv_reference.h"
 #include "dv_test.h"
+#include "dv_test_traj.h"
 #include "engine_mujoco_thin.h"
 #include "red_steady.h"
 
@@ -171,29 +172,10 @@ static void check_collider(void) {
   mj_deleteModel(plain);
 }
 
-#define MAXS 1001
-
-typedef struct traj {
-  long n;
-  dv_sample s[MAXS];
-  int status;
-  dv_engine_stats stats;
-} traj;
-
-/* run engine e over sc, sampled every output_dt */
+/* run e on sc; a failed run is a failed check */
 static int run(const dv_engine_type *e, const dv_scenario *sc, traj *tr) {
-  dv_error err = {{0}};
-  void *eng = e->alloc(sc, &err);
-  tr->n = 0;
-  tr->status = eng ? e->reset(eng, sc->initial, &err) : DV_ESYSTEM;
-  for (long k = 0; tr->status == DV_OK && k < MAXS && k * sc->output_dt <= sc->duration + 1e-12;
-       k++)
-    if ((tr->status = e->advance(eng, k * sc->output_dt, &tr->s[tr->n], &err)) >= 0) tr->n++;
-  if (eng) {
-    e->stats(eng, &tr->stats);
-    e->free(eng);
-  }
-  CHECK(tr->status == DV_OK, "%s: %s (%s)", e->name, err.msg, tr->stats.detail);
+  dv_test_run(e, sc, tr);
+  CHECK(tr->status == DV_OK, "%s: %s (%s)", e->name, tr->msg, tr->stats.detail);
   return tr->status;
 }
 

@@ -20,35 +20,13 @@
 #include "dv_pose.h"
 #include "dv_reference.h"
 #include "dv_test.h"
+#include "dv_test_traj.h"
 #include "engine_ode_thin.h"
 #include "red_steady.h"
 
-#define MAXS 4001
-
-typedef struct traj {
-  long n;
-  dv_sample s[MAXS];
-  int status;
-  dv_engine_stats stats;
-} traj;
-
-/* run engine e on sc, sampling every output_dt to the duration or an event */
+/* run e on sc, saying why a run failed */
 static int run(const dv_engine_type *e, const dv_scenario *sc, traj *tr) {
-  dv_error err = {{0}};
-  void *eng = e->alloc(sc, &err);
-  tr->n = 0;
-  tr->status = eng ? e->reset(eng, sc->initial, &err) : DV_ESYSTEM;
-  for (long k = 0; tr->status == DV_OK && k < MAXS; k++) {
-    const double t = fmin(k * sc->output_dt, sc->duration);
-    tr->status = e->advance(eng, t, &tr->s[tr->n], &err);
-    if (tr->status >= 0) tr->n++;
-    if (t >= sc->duration) break;
-  }
-  if (eng) {
-    e->stats(eng, &tr->stats);
-    e->free(eng);
-  }
-  if (tr->status < 0) fprintf(stderr, "%s: %s\n", e->name, err.msg);
+  if (dv_test_run(e, sc, tr) < 0) fprintf(stderr, "%s: %s\n", e->name, tr->msg);
   return tr->status;
 }
 
