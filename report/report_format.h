@@ -10,7 +10,7 @@
  *     "duration": s, "output_dt": s,
  *     "reference": {"engine": "reduced", "integrator": NAME, "rtol": x,
  *                   "outcome": "completed"|"event", "detail": TEXT, "t_end": s,
- *                   "version": TEXT},
+ *                   "version": TEXT, "horizon": s | null (predictable to the end)},
  *     "pass": bool,                       every engine passed
  *     "engines": {
  *       ENGINE: {
@@ -21,12 +21,20 @@
  *         "wall_per_sim_s": s per simulated s (the only timing field),
  *         "steps": n,
  *         "outcome": "agrees"|"exceeds tolerance"|"diverged"|"lost contact"
- *                    |"ended by event"|"error",
+ *                    |"ended by event"|"error"|"not judged",
  *         "detail": TEXT,
  *         "pass": bool,
  *         "failures": [TEXT, ...]   "SCENARIO: ENGINE: METRIC = V > LIMIT",
- *         "tolerances": {METRIC: limit, ...},
+ *         "tolerances": {METRIC: limit, ...},   every metric has one
+ *         "limits": {METRIC: {"value", "limit", "margin": value / limit,
+ *                             "from": "[tolerance.ENGINE]" | "default: ..."}},
  *         "window_end": s,          end of the compared window
+ *         "window_fraction": x,     of the reference's run it covers
+ *         "pointwise_end": s,       the pointwise metrics (theta_max_err,
+ *                                   theta_rms_err, path_max_err, path_rms_err)
+ *                                   cover the window to here: the reference's
+ *                                   predictability horizon (run_horizon.h)
+ *         "decided": TEXT,          which part decided the verdict
  *         "reference_half_thickness": m,   of its matched reference
  *         "vs_thin": {METRIC: value, ...}, the same metrics against the thin disk
  *         "geometry_share": {"theta_max_err": x, "path_max_err": y},

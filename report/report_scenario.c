@@ -55,10 +55,19 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   for (size_t i = 0; i < r->nfailures; i++)
     cJSON_AddItemToArray(f, cJSON_CreateString(r->failures[i]));
   cJSON *tol = cJSON_AddObjectToObject(o, "tolerances");
-  for (int m = 0; m < DV_NMETRICS; m++)
-    if (isfinite(r->tolerance[m]))
-      cJSON_AddNumberToObject(tol, dv_metric_names[m], r->tolerance[m]);
+  cJSON *lim = cJSON_AddObjectToObject(o, "limits");
+  for (int m = 0; m < DV_NMETRICS; m++) {
+    cJSON_AddItemToObject(tol, dv_metric_names[m], dv_io_json_number(r->tolerance[m]));
+    cJSON *l = cJSON_AddObjectToObject(lim, dv_metric_names[m]);
+    cJSON_AddItemToObject(l, "value", dv_io_json_number(r->vs_ref.value[m]));
+    cJSON_AddItemToObject(l, "limit", dv_io_json_number(r->tolerance[m]));
+    cJSON_AddItemToObject(l, "margin", dv_io_json_number(r->vs_ref.value[m] / r->tolerance[m]));
+    cJSON_AddStringToObject(l, "from", r->limit_why[m]);
+  }
   cJSON_AddNumberToObject(o, "window_end", r->vs_ref.t_window);
+  cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
+  cJSON_AddNumberToObject(o, "pointwise_end", r->pointwise_end);
+  cJSON_AddStringToObject(o, "decided", r->decided);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
   cJSON_AddItemToObject(o, "vs_thin", metrics_json(r->vs_thin.value));
   cJSON *g = cJSON_AddObjectToObject(o, "geometry_share");
@@ -88,6 +97,7 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON_AddNumberToObject(ref, "rtol", dv_reference_settings(sc)->rtol);
   cJSON_AddStringToObject(ref, "outcome", dv_outcome_name(c->thin_stats.outcome));
   cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
+  cJSON_AddItemToObject(ref, "horizon", dv_io_json_number(c->horizon));
   cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   cJSON_AddStringToObject(ref, "version", thin->version());
   cJSON_AddBoolToObject(o, "pass", c->pass);
@@ -137,6 +147,20 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             v[DV_THETA_RMS_ERR], v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF],
             v[DV_ENERGY_DRIFT], v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR],
             sim > 0 ? r->wall_s / sim : 0.0);
+  }
+  for (size_t i = 0; i < c->n; i++) { /* what decided: each metric against its limit */
+    const dv_engine_result *r = &c->r[i];
+    fprintf(fp,
+            "\n%s: %s, decided by %s; compared window to t = %g s (%.0f%% of the reference's "
+            "run), pointwise metrics to t = %g s\n\n",
+            r->engine->name, dv_run_verdict_name(r->verdict), r->decided, r->vs_ref.t_window,
+            100 * r->window_fraction, r->pointwise_end);
+    fprintf(fp,
+            "| metric | value | limit | margin (value / limit) | limit from |\n"
+            "|---|---|---|---|---|\n");
+    for (int m = 0; m < DV_NMETRICS; m++)
+      fprintf(fp, "| %s | %.3g | %.3g | %.3g | %s |\n", dv_metric_names[m], r->vs_ref.value[m],
+              r->tolerance[m], r->vs_ref.value[m] / r->tolerance[m], r->limit_why[m]);
   }
   for (size_t i = 0; i < c->n; i++)
     for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);

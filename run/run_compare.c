@@ -5,6 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "red_invariants.h"
+
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
   if (tr->n == tr->cap) {
     const size_t cap = tr->cap ? 2 * tr->cap : 256;
@@ -56,6 +58,7 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
                    fabs(e->s[n - 1].t - ref->s[n - 1].t) > 1e-9))
     n--;
   double th_max = 0, th_sq = 0, p_max = 0, p_sq = 0, e_drift = 0, slip = 0;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}; /* engine, reference */
   const double e0 = n ? e->s[0].energy : 0.0;
   double(*pa)[2] = malloc((n ? n : 1) * sizeof *pa), (*pb)[2] = malloc((n ? n : 1) * sizeof *pb);
   for (size_t i = 0; i < n; i++) {
@@ -75,6 +78,13 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
       pb[i][1] = b->contact[1];
     }
   }
+  /* extrema over each run to t_end, whatever its timing: a fall that comes later counts */
+  const dv_traj *runs[2] = {e, ref};
+  for (int k = 0; k < 2; k++)
+    for (size_t i = 0; i < runs[k]->n && runs[k]->s[i].t <= t_end; i++) {
+      lo[k] = fmin(lo[k], runs[k]->s[i].y[RED_TH]);
+      hi[k] = fmax(hi[k], runs[k]->s[i].y[RED_TH]);
+    }
   out->n_window = n;
   out->t_window = n ? e->s[n - 1].t : 0.0;
   out->value[DV_THETA_MAX_ERR] = th_max;
@@ -85,6 +95,20 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
       (pa && pb) ? dv_run_hausdorff((const double(*)[2])pa, n, (const double(*)[2])pb, n) : NAN;
   out->value[DV_ENERGY_DRIFT] = e_drift;
   out->value[DV_SLIP_MAX] = slip;
+  out->value[DV_THETA_EXTREMA_ERR] = n ? fmax(fabs(lo[0] - lo[1]), fabs(hi[0] - hi[1])) : 0.0;
+  out->value[DV_INVARIANT_DRIFT] = NAN; /* needs the disk: dv_run_invariant_drift */
   free(pa);
   free(pb);
+}
+
+double dv_run_invariant_drift(const red_disk *disk, const dv_traj *tr, double t_end) {
+  double f0[2], drift = 0.0;
+  if (!tr->n || red_invariants(disk, tr->s[0].y, &f0[0], &f0[1])) return NAN;
+  const double scale = sqrt(2.0 * fabs(tr->s[0].energy) * (disk->A + disk->m * disk->r * disk->r));
+  for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++) {
+    double f[2];
+    if (red_invariants(disk, tr->s[i].y, &f[0], &f[1])) return NAN;
+    drift = fmax(drift, fmax(fabs(f[0] - f0[0]), fabs(f[1] - f0[1])) / scale);
+  }
+  return drift;
 }

@@ -9,6 +9,12 @@
  *                                  paths as polylines: insensitive to timing (m)
  *   energy_drift                   max |E(t) - E(0)| / |E(0)| of the engine
  *   slip_max                       largest slip speed of the engine (m/s)
+ *   theta_extrema_err              the larger of |min theta - min theta_ref| and
+ *                                  |max theta - max theta_ref| (rad), each over its
+ *                                  own run to the window's end: timing-insensitive
+ *   invariant_drift                max |f_i(t) - f_i(0)| of the engine's own states
+ *                                  over the momentum scale sqrt(2 E0 (A + m r^2))
+ *                                  (dv_run_invariant_drift; NAN from dv_run_compare)
  */
 #ifndef DV_COMPARE_H
 #define DV_COMPARE_H
@@ -34,6 +40,11 @@ typedef struct dv_metrics {
 
 /* metrics of engine against reference; t_end bounds the window (INFINITY: none) */
 void dv_run_compare(const dv_traj *engine, const dv_traj *reference, double t_end, dv_metrics *out);
+
+/* the drift of the integrals f1, f2 (red_invariants.h) along tr up to t_end,
+ * over the momentum scale sqrt(2 E0 (A + m r^2)); NAN where they cannot be
+ * evaluated (C = 0 in a contact engine, theta at 0 or pi) */
+double dv_run_invariant_drift(const red_disk *disk, const dv_traj *tr, double t_end);
 
 /* Hausdorff distance between two polylines of points (x, y), m */
 double dv_run_hausdorff(const double (*a)[2], size_t na, const double (*b)[2], size_t nb);

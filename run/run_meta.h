@@ -18,6 +18,6 @@ int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *er
 
 /* write path atomically: scenario, engine, version, settings, stats */
 int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
-                  const dv_engine_stats *stats, dv_error *err);
+                      const dv_engine_stats *stats, dv_error *err);
 
 #endif

@@ -8,6 +8,8 @@
 #include <time.h>
 
 #include "dv_reference.h"
+#include "run_horizon.h"
+#include "run_limits.h"
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
@@ -32,27 +34,88 @@ static void add_failure(dv_engine_result *r, const char *fmt, ...) {
   va_end(ap);
 }
 
+int dv_run_metric_pointwise(dv_metric_id metric) {
+  return metric == DV_THETA_MAX_ERR || metric == DV_THETA_RMS_ERR || metric == DV_PATH_MAX_ERR ||
+         metric == DV_PATH_RMS_ERR;
+}
+
+/* the pointwise metrics up to the horizon, when it ends before the window */
+static void pointwise_to_horizon(const dv_traj *eng, const dv_traj *ref, double ref_end,
+                                 double horizon, dv_engine_result *r) {
+  r->pointwise_end = r->vs_ref.t_window;
+  if (!(horizon < r->vs_ref.t_window)) return;
+  dv_metrics early;
+  dv_run_compare(eng, ref, fmin(ref_end, horizon), &early);
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (dv_run_metric_pointwise((dv_metric_id)m)) r->vs_ref.value[m] = early.value[m];
+  r->pointwise_end = early.t_window;
+}
+
+/* what decided the verdict, in words */
+static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
+  int failed[2] = {0, 0}; /* pointwise, timing-insensitive */
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (!(r->vs_ref.value[m] <= r->tolerance[m]) && !isnan(r->tolerance[m]))
+      failed[!dv_run_metric_pointwise((dv_metric_id)m)] = 1;
+  const int whole = r->pointwise_end >= r->vs_ref.t_window - 0.5 * sc->output_dt;
+  char part[96];
+  if (whole)
+    snprintf(part, sizeof part, "pointwise over the whole window");
+  else
+    snprintf(part, sizeof part,
+             "pointwise to the reference's horizon t = %g s, timing-insensitive after",
+             r->pointwise_end);
+  if (r->verdict == DV_VERDICT_NOT_JUDGED || dv_run_verdict_failed(r->verdict))
+    snprintf(r->decided, sizeof r->decided, "the run: %s", dv_run_verdict_name(r->verdict));
+  else if (failed[0] || failed[1])
+    snprintf(r->decided, sizeof r->decided, "%s metrics (%s)",
+             failed[0] && failed[1] ? "pointwise and timing-insensitive"
+             : failed[0]            ? "pointwise"
+                                    : "timing-insensitive",
+             part);
+  else
+    snprintf(r->decided, sizeof r->decided, "every metric within its limit (%s)", part);
+}
+
 static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_engine_result *r) {
   const char *name = r->engine->name;
   const double t_ref = fmin(ref_end, ref->n ? ref->s[ref->n - 1].t : 0.0);
   const double t_eng = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   r->verdict = DV_VERDICT_AGREES;
+  const double t0 = ref->n ? ref->s[0].t : 0.0, t_run = ref->n ? ref->s[ref->n - 1].t : 0.0;
+  r->window_fraction = t_run > t0 ? (r->vs_ref.t_window - t0) / (t_run - t0) : 0.0;
   if (r->status < 0 && t_eng < t_ref - 0.5 * sc->output_dt) {
     const dv_verdict v = dv_run_verdict_of_outcome(r->stats.outcome);
     r->verdict = dv_run_verdict_failed(v) ? v : DV_VERDICT_ERROR;
     add_failure(r, "%s: %s: %s at t = %g s: %s", sc->name, name, dv_run_verdict_name(r->verdict),
                 t_eng, r->stats.detail);
   }
-  for (int m = 0; m < DV_NMETRICS; m++)
-    if (!(r->vs_ref.value[m] <= r->tolerance[m])) {
-      add_failure(r, "%s: %s: %s = %.6g > %.6g", sc->name, name, dv_metric_names[m],
-                  r->vs_ref.value[m], r->tolerance[m]);
+  /* a window the reference's run does not fill (it ended before the first
+   * samples, or left the validity window at once) measures nothing */
+  if (r->verdict == DV_VERDICT_AGREES &&
+      (r->vs_ref.n_window < 2 || r->window_fraction < DV_MIN_WINDOW_FRACTION)) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r,
+                "%s: %s: not judged: the compared window ends at t = %g s, %.1f%% of the "
+                "reference's %g s (at least %g%% needed): %s",
+                sc->name, name, r->vs_ref.t_window, 100 * r->window_fraction, t_run - t0,
+                100 * DV_MIN_WINDOW_FRACTION,
+                ref_end < t_ref + 1e-12 ? "rolling stops describing the physics there"
+                                        : "the engine or the reference ended there");
+  }
+  for (int m = 0; m < DV_NMETRICS && r->verdict != DV_VERDICT_NOT_JUDGED; m++)
+    if (isnan(r->tolerance[m])) /* a metric without a rule: not judged, never a pass */
+      continue;
+    else if (!(r->vs_ref.value[m] <= r->tolerance[m])) {
+      add_failure(r, "%s: %s: %s = %.6g > %.6g (%s)", sc->name, name, dv_metric_names[m],
+                  r->vs_ref.value[m], r->tolerance[m], r->limit_why[m]);
       if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
     }
   if (r->verdict == DV_VERDICT_AGREES && r->stats.outcome == DV_OUTCOME_EVENT &&
       t_eng < t_ref - 0.5 * sc->output_dt)
     r->verdict = DV_VERDICT_ENDED_BY_EVENT;
   r->pass = r->nfailures == 0;
+  say_decided(sc, r);
 }
 
 /* run type over sc into tr; wall time and stats */
@@ -77,6 +140,8 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, NULL, err);
   if (status < 0) return status;
   c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
+  status = dv_run_horizon(ref_sc, &c->thin, &c->horizon, c->spread, err);
+  if (status < 0) return status;
   for (size_t i = 0; i < n; i++) {
     dv_engine_result *r = &c->r[c->n++];
     dv_error e = {{0}};
@@ -109,8 +174,22 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       r->vs_ref = r->vs_thin;
     else
       dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
-    for (int m = 0; m < DV_NMETRICS; m++)
-      r->tolerance[m] = dv_scenario_tolerance(sc, engines[i]->name, (dv_metric_id)m);
+    pointwise_to_horizon(&r->traj, ref, ref_end, c->horizon, r);
+    r->vs_ref.value[DV_INVARIANT_DRIFT] = r->vs_thin.value[DV_INVARIANT_DRIFT] =
+        dv_run_invariant_drift(&sc->disk, &r->traj, r->vs_ref.t_window);
+    dv_limit limits[DV_NMETRICS];
+    dv_run_limits(sc, engines[i]->name, ref, r->vs_ref.t_window, limits);
+    for (int m = 0; m < DV_NMETRICS; m++) {
+      r->tolerance[m] = limits[m].value;
+      memcpy(r->limit_why[m], limits[m].why, sizeof r->limit_why[m]);
+      /* past the horizon: a measure the nudge alone moves by half its limit is unpredictable */
+      if (!dv_run_metric_pointwise((dv_metric_id)m) && c->spread[m] > 0.5 * r->tolerance[m]) {
+        r->tolerance[m] = NAN;
+        snprintf(r->limit_why[m], sizeof r->limit_why[m],
+                 "not judged: the reference nudged by %g rad moves it by %.3g", DV_HORIZON_NUDGE,
+                 c->spread[m]);
+      }
+    }
     judge(sc, ref, ref_end, r);
     c->pass &= r->pass;
   }

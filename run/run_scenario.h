@@ -4,9 +4,12 @@
  * the geometry-matched disk (engine "matched", same half-thickness) for a
  * cylinder, the thin disk for a thin or ellipsoid stand-in; and, in any
  * case, with the thin disk. The compared window ends where the reference
- * ends (its event or validity limit). Tolerances ([tolerance] and
- * [tolerance.ENGINE], the engine's own first) apply to the metrics against
- * the engine's own reference.
+ * ends (its event or validity limit). Every metric has a limit
+ * (run_limits.h). The pointwise metrics (theta_max_err, theta_rms_err,
+ * path_max_err, path_rms_err) cover the window up to the reference's
+ * predictability horizon (run_horizon.h); the timing-insensitive ones
+ * (path_hausdorff, theta_extrema_err, energy_drift, invariant_drift,
+ * slip_max) the whole window.
  */
 #ifndef DV_RUN_H
 #define DV_RUN_H
@@ -18,6 +21,8 @@
 
 #define DV_MAX_ENGINES 4
 #define DV_MAX_FAILURES (DV_NMETRICS + 1)
+/* a compared window shorter than this share of the reference's run is not judged */
+#define DV_MIN_WINDOW_FRACTION 0.1
 
 typedef struct dv_engine_result {
   const dv_engine_type *engine;
@@ -28,8 +33,12 @@ typedef struct dv_engine_result {
   double half_thickness; /* of its reference: 0 for the thin disk */
   dv_traj matched;       /* that reference's samples when half_thickness > 0 */
   dv_engine_stats matched_stats;
-  dv_metrics vs_ref, vs_thin;    /* against its own reference, and the thin disk */
-  double tolerance[DV_NMETRICS]; /* limits, INFINITY where none */
+  dv_metrics vs_ref, vs_thin;       /* against its own reference, and the thin disk */
+  double tolerance[DV_NMETRICS];    /* limits (run_limits.h): never none */
+  char limit_why[DV_NMETRICS][112]; /* where each limit came from */
+  double window_fraction;           /* of the reference's run the window covers */
+  double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
+  char decided[160];                /* which part decided the verdict, and why */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -40,7 +49,9 @@ typedef struct dv_comparison {
   const dv_scenario *sc;
   dv_traj thin; /* the thin-disk reference */
   dv_engine_stats thin_stats;
-  double thin_valid_end; /* where rolling stops describing the physics, s */
+  double thin_valid_end;      /* where rolling stops describing the physics, s */
+  double horizon;             /* s: the reference is predictable up to here (run_horizon.h) */
+  double spread[DV_NMETRICS]; /* what a nudge of the reference alone moves each metric by */
   size_t n;
   dv_engine_result r[DV_MAX_ENGINES];
   int pass; /* every engine passed */
@@ -54,5 +65,8 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                     dv_error *err);
 
 void dv_run_comparison_free(dv_comparison *c);
+
+/* 1 for a metric that compares samples at equal times (judged up to the horizon) */
+int dv_run_metric_pointwise(dv_metric_id metric);
 
 #endif

@@ -25,7 +25,7 @@ static void force_row(FILE *fp, const dv_sample *s) {
 }
 
 int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_sink sink,
-                          void *ctx, dv_engine_stats *stats, dv_error *err) {
+                   void *ctx, dv_engine_stats *stats, dv_error *err) {
   dv_sample s;
   memset(stats, 0, sizeof *stats);
   void *engine = type->alloc(sc, err);
@@ -70,7 +70,7 @@ static int write_rows(void *ctx, const dv_sample *s) {
 }
 
 int dv_run_write_csv(const dv_engine_type *type, const dv_scenario *sc, FILE *fp, FILE *forces,
-                      dv_engine_stats *stats, dv_error *err) {
+                     dv_engine_stats *stats, dv_error *err) {
   csv_files f = {fp, forces};
   if (fp) fputs(DV_CSV_HEADER "\n", fp);
   if (forces) fputs(DV_FORCES_HEADER "\n", forces);

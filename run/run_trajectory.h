@@ -24,7 +24,7 @@ typedef int (*dv_sample_sink)(void *ctx, const dv_sample *s);
  * each passed to sink; stats are filled in any case. Returns DV_OK, DV_EVENT
  * (ended early) or < 0 with err set (the samples so far were delivered). */
 int dv_run_collect(const dv_engine_type *engine, const dv_scenario *sc, dv_sample_sink sink,
-                          void *ctx, dv_engine_stats *stats, dv_error *err);
+                   void *ctx, dv_engine_stats *stats, dv_error *err);
 
 #define DV_FORCES_HEADER "t,force_x,force_y,force_z,friction_ratio"
 
@@ -33,6 +33,6 @@ int dv_run_collect(const dv_engine_type *engine, const dv_scenario *sc, dv_sampl
  * be NULL. Stats are filled in any case.
  * Returns DV_OK, DV_EVENT (ended early) or < 0 with err set. */
 int dv_run_write_csv(const dv_engine_type *engine, const dv_scenario *sc, FILE *fp, FILE *forces,
-                      dv_engine_stats *stats, dv_error *err);
+                     dv_engine_stats *stats, dv_error *err);
 
 #endif

@@ -14,11 +14,12 @@ typedef enum dv_verdict {
   DV_VERDICT_ENDED_BY_EVENT, /* the engine's run ended at an event before the reference's */
   DV_VERDICT_INVALID,        /* settings refused before the run (sweeps) */
   DV_VERDICT_MISSING,        /* never reported (a lost MPI rank) */
+  DV_VERDICT_NOT_JUDGED,     /* nothing to compare: the window is (nearly) empty */
   DV_NVERDICTS
 } dv_verdict;
 
 /* "agrees", "exceeds tolerance", "diverged", "lost contact", "error",
- * "ended by event", "invalid", "missing" */
+ * "ended by event", "invalid", "missing", "not judged" */
 const char *dv_run_verdict_name(dv_verdict verdict);
 
 /* the verdict of a run that failed with outcome */

@@ -43,6 +43,8 @@ typedef enum dv_metric_id {
   DV_PATH_HAUSDORFF,
   DV_ENERGY_DRIFT,
   DV_SLIP_MAX,
+  DV_THETA_EXTREMA_ERR, /* the lowest and highest theta, each against the reference's */
+  DV_INVARIANT_DRIFT,   /* f1, f2 along the engine's own states, of the momentum scale */
   DV_NMETRICS
 } dv_metric_id;
 

@@ -9,9 +9,9 @@
 
 #include "red_steady.h"
 
-const char *const dv_metric_names[DV_NMETRICS] = {"theta_max_err", "theta_rms_err",  "path_max_err",
-                                                  "path_rms_err",  "path_hausdorff", "energy_drift",
-                                                  "slip_max"};
+const char *const dv_metric_names[DV_NMETRICS] = {
+    "theta_max_err", "theta_rms_err", "path_max_err",      "path_rms_err",   "path_hausdorff",
+    "energy_drift",  "slip_max",      "theta_extrema_err", "invariant_drift"};
 
 #define AT(field) offsetof(dv_scenario, field)
 #define STATE(k) (offsetof(dv_scenario, initial) + (k) * sizeof(double))

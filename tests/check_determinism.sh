@@ -13,7 +13,7 @@ untimed() { # strip the timing fields of a file to stdout
     *.json) grep -v '"wall_per_sim_s"' "$1" ;;
     *.md) sed -E 's/\| [^|]* \|$/|/' "$1" ;;
     *.xml) sed -E 's/ time="[^"]*"//g' "$1" ;;
-    *.html) sed -E 's/<td class="n">[^<]*<\/td>(<td>[^<]*<\/td><\/tr>)$/(wall)\1/' "$1" ;;
+    *.html) sed -E 's/<td class="n">[^<]*<\/td>(<td>([^<]|<br \/>)*<\/td><\/tr>)$/(wall)\1/' "$1" ;;
     *) cat "$1" ;;
   esac
 }

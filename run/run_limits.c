@@ -1,0 +1,73 @@
+/* run_limits: limits from the scenario or the scene (run_limits.h). */
+#include "run_limits.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+double dv_run_distance_rolled(const dv_traj *tr, double t_end) {
+  double d = 0.0;
+  for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++)
+    d += hypot(tr->s[i].contact[0] - tr->s[i - 1].contact[0],
+               tr->s[i].contact[1] - tr->s[i - 1].contact[1]);
+  return d;
+}
+
+/* the limit the scenario gives for metric, with where it came from; 0 when none */
+static int given(const dv_scenario *sc, const char *engine, dv_metric_id metric, dv_limit *out) {
+  for (int own = 1; own >= 0; own--)
+    for (size_t i = 0; i < sc->ntolerances; i++) {
+      const dv_tolerance *t = &sc->tolerances[i];
+      if (t->metric != metric || (own ? strcmp(t->engine, engine) : t->engine[0] != '\0')) continue;
+      out->value = t->limit;
+      snprintf(out->why, sizeof out->why, "[tolerance%s%s]", own ? "." : "", own ? engine : "");
+      return 1;
+    }
+  return 0;
+}
+
+void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,
+                   dv_limit out[DV_NMETRICS]) {
+  const red_disk *d = &sc->disk;
+  const double *y = sc->initial;
+  const double rolled = dv_run_distance_rolled(ref, t_end);
+  const double speed =
+      fmax(fmax(d->r * fabs(y[RED_VPS]), d->r * fabs(y[RED_VPH])), sqrt(d->g * d->r));
+  for (int m = 0; m < DV_NMETRICS; m++) {
+    dv_limit *l = &out[m];
+    if (given(sc, engine, (dv_metric_id)m, l)) continue;
+    switch ((dv_metric_id)m) {
+      case DV_THETA_MAX_ERR:
+      case DV_THETA_RMS_ERR:
+      case DV_THETA_EXTREMA_ERR:
+        l->value = DV_LIMIT_THETA;
+        snprintf(l->why, sizeof l->why, "default: %g rad", DV_LIMIT_THETA);
+        break;
+      case DV_PATH_MAX_ERR:
+      case DV_PATH_RMS_ERR:
+      case DV_PATH_HAUSDORFF:
+        l->value = DV_LIMIT_PATH * fmax(rolled, d->r);
+        snprintf(l->why, sizeof l->why, "default: %g%% of the %.3g m %s", 100 * DV_LIMIT_PATH,
+                 fmax(rolled, d->r), rolled > d->r ? "rolled" : "radius");
+        break;
+      case DV_ENERGY_DRIFT:
+        l->value = DV_LIMIT_ENERGY;
+        snprintf(l->why, sizeof l->why, "default: %g%% of the initial energy",
+                 100 * DV_LIMIT_ENERGY);
+        break;
+      case DV_INVARIANT_DRIFT:
+        l->value = DV_LIMIT_INVARIANTS;
+        snprintf(l->why, sizeof l->why, "default: %g%% of the momentum scale",
+                 100 * DV_LIMIT_INVARIANTS);
+        break;
+      case DV_SLIP_MAX:
+        l->value = DV_LIMIT_SLIP * speed;
+        snprintf(l->why, sizeof l->why, "default: %g%% of the speed scale %.3g m/s",
+                 100 * DV_LIMIT_SLIP, speed);
+        break;
+      default:
+        l->value = NAN; /* not judged */
+        snprintf(l->why, sizeof l->why, "not judged");
+    }
+  }
+}

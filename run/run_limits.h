@@ -1,0 +1,44 @@
+/* run_limits: the limit of every metric, never none.
+ *
+ * A limit comes from the scenario ([tolerance.ENGINE], then [tolerance]) or,
+ * where it gives none, from a rule grounded in the scene (README, "Verdicts"):
+ *   theta_max_err, theta_rms_err,   DV_LIMIT_THETA rad: the default accuracy
+ *   theta_extrema_err
+ *                                   of the engines' derived settings, 1e-3,
+ *                                   with a margin of 10
+ *   path_max_err, path_rms_err,     DV_LIMIT_PATH of the distance the
+ *   path_hausdorff                  reference's contact point travels over
+ *                                   the compared window, and at least that
+ *                                   share of the radius
+ *   energy_drift                    DV_LIMIT_ENERGY of the initial energy
+ *   invariant_drift                 DV_LIMIT_INVARIANTS of the momentum scale
+ *   slip_max                        DV_LIMIT_SLIP of the scene's speed scale,
+ *                                   max(r |psi_dot|, r |phi_dot|, sqrt(g r))
+ * Every limit carries the words that say where it came from.
+ */
+#ifndef DV_RUN_LIMITS_H
+#define DV_RUN_LIMITS_H
+
+#include "run_compare.h"
+#include "scenario.h"
+
+#define DV_LIMIT_THETA 1e-2      /* rad */
+#define DV_LIMIT_PATH 1e-2       /* of the distance rolled */
+#define DV_LIMIT_ENERGY 1e-2     /* of the initial energy */
+#define DV_LIMIT_SLIP 1e-2       /* of the speed scale */
+#define DV_LIMIT_INVARIANTS 1e-2 /* of the momentum scale sqrt(2 E0 (A + m r^2)) */
+
+typedef struct dv_limit {
+  double value;  /* the metric passes when value <= this */
+  char why[112]; /* "[tolerance.ode]", "1% of the 7.6 m rolled", ... */
+} dv_limit;
+
+/* the limits of engine's metrics in sc; ref is the reference compared with,
+ * t_end the end of the compared window */
+void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,
+                   dv_limit out[DV_NMETRICS]);
+
+/* the distance (m) the contact point of tr travels up to t_end */
+double dv_run_distance_rolled(const dv_traj *tr, double t_end);
+
+#endif
