@@ -28,6 +28,7 @@ static const char HELP[] =
     "  best SCENARIO --engine NAME --theta-tol X      the cheapest settings meeting X\n"
     "  attribute SCENARIO --engine NAME               why an engine disagrees, in shares\n"
     "  map [--c A..B:N] [--spin A..B:N]               stability map of upright rolling\n"
+    "  verify SCENARIO [--engines LIST]               do the engines converge to the reference\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cli_usage_error(const char *command, const char *fmt, ...) {
@@ -71,10 +72,11 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     int (*run)(int, char **);
-  } commands[] = {
-      {"simulate", dv_cli_simulate},   {"analyze", dv_cli_analyze}, {"compare", dv_cli_compare},
-      {"suite", dv_cli_suite},         {"sweep", dv_cli_sweep},     {"best", dv_cli_best},
-      {"attribute", dv_cli_attribute}, {"map", dv_cli_map},         {"engines", dv_cli_engines}};
+  } commands[] = {{"simulate", dv_cli_simulate},   {"analyze", dv_cli_analyze},
+                  {"compare", dv_cli_compare},     {"suite", dv_cli_suite},
+                  {"sweep", dv_cli_sweep},         {"best", dv_cli_best},
+                  {"attribute", dv_cli_attribute}, {"map", dv_cli_map},
+                  {"engines", dv_cli_engines},     {"verify", dv_cli_verify}};
   gsl_set_error_handler_off();
   dv_exec_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

@@ -27,16 +27,8 @@ void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
   out->rest = e->stand_in - out->geometry - out->time - out->contact;
 }
 
-typedef struct prober {
-  const char *path;
-  const char *const *sets;
-  size_t nsets;
-  const dv_engine_type *engine;
-} prober;
-
-/* the max theta error against the thin disk of one run with overrides (NULL ends) */
-static int probe(const prober *pr, double *e, dv_error *err, const char *o1, const char *o2,
-                 const char *o3, const char *o4) {
+int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const char *o1,
+                          const char *o2, const char *o3, const char *o4) {
   const char *given[4] = {o1, o2, o3, o4}, *over[4];
   size_t n = 0;
   for (int i = 0; i < 4; i++)
@@ -88,13 +80,14 @@ int dv_search_attribute(const char *path, const char *const *sets, size_t nsets,
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const prober pr = {path, sets, nsets, engine};
+  const dv_prober pr = {path, sets, nsets, engine};
   dv_attribution_errors e;
-  int status = probe(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
-  if (!status) status = probe(&pr, &e.thin, err, thin, NULL, NULL, NULL);
+  int status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
+  if (!status) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
   for (int i = 0; !status && i < 3; i++)
-    status = probe(&pr, &e.dt[i], err, thin, steps[i], follows ? softs[i] : NULL, NULL);
-  if (!status) status = probe(&pr, &e.stiff, err, thin, steps[f], stiff, rough);
+    status =
+        dv_search_probe_theta(&pr, &e.dt[i], err, thin, steps[i], follows ? softs[i] : NULL, NULL);
+  if (!status) status = dv_search_probe_theta(&pr, &e.stiff, err, thin, steps[f], stiff, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
   out->timestep = dt;

@@ -36,6 +36,20 @@ typedef struct dv_attribution {
   double order;                         /* observed order of the time error; NAN: flat */
 } dv_attribution;
 
+/* a scenario and an engine to probe with overrides */
+struct dv_engine_type;
+typedef struct dv_prober {
+  const char *path;
+  const char *const *sets;
+  size_t nsets;
+  const struct dv_engine_type *engine;
+} dv_prober;
+
+/* the max theta error against the thin disk of one run with up to four
+ * section.key=value overrides (NULL: none); a run that fails is an error */
+int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const char *o1,
+                          const char *o2, const char *o3, const char *o4);
+
 /* the shares from measured errors (the maths alone) */
 void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
                                dv_attribution *out);

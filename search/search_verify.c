@@ -1,0 +1,76 @@
+/* search_verify: convergence of a contact engine to the reference (search_verify.h). */
+#include "search_verify.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_engine.h"
+
+const char *dv_search_convergence_name(dv_convergence c) {
+  static const char *const names[] = {"converges to the reference", "converges elsewhere",
+                                      "does not converge"};
+  return (unsigned)c < 3 ? names[c] : "unknown";
+}
+
+/* order and extrapolation from the errors; the verdict before attribution */
+static void extrapolate(dv_verification *v) {
+  const double *e = v->error;
+  const double d1 = e[1] - e[2], d2 = e[2] - e[3];
+  const int flat = fabs(e[0] - e[3]) <= DV_VERIFY_FLAT * e[0];
+  const double p = !flat && d1 > 0.0 && d2 > 0.0 ? log2(d1 / d2) : NAN;
+  v->order = p > 0.2 ? p : NAN;
+  v->extrapolated = isnan(v->order) ? e[3] : e[3] - d2 / (pow(2.0, v->order) - 1.0);
+  if (e[3] <= DV_VERIFY_FLOOR || fabs(v->extrapolated) <= DV_VERIFY_FLOOR)
+    v->verdict = DV_CONVERGES;
+  else /* flat: the step no longer matters, what is left is the model's */
+    v->verdict = flat || !isnan(v->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
+}
+
+/* the largest share of an attribution, by name */
+static const char *dominant(const dv_attribution *a) {
+  const struct {
+    const char *name;
+    double v;
+  } s[] = {{"geometry", a->geometry},
+           {"time step", a->time},
+           {"contact softness and slip", a->contact},
+           {"the rest", a->rest}};
+  size_t best = 0;
+  for (size_t i = 1; i < 4; i++)
+    if (fabs(s[i].v) > fabs(s[best].v)) best = i;
+  return s[best].name;
+}
+
+int dv_search_verify(const char *path, const char *const *sets, size_t nsets,
+                     const char *engine_name, dv_verification *out, dv_error *err) {
+  memset(out, 0, sizeof *out);
+  const dv_engine_type *engine = dv_engine_find(engine_name);
+  if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
+  const dv_engine_contact *k = engine->contact;
+  if (!k || !engine->search)
+    return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to verify", engine->name);
+  dv_scenario sc;
+  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
+  const char *name = engine->name;
+  const double dt = dv_scenario_get(&sc, name, engine->search->step_key);
+  const double soft = dv_scenario_get(&sc, name, k->softness_key);
+  const dv_prober pr = {path, sets, nsets, engine};
+  for (int i = 0; i < DV_VERIFY_LEVELS; i++) {
+    const double h = dt / (1 << i);
+    char step[128], softness[128];
+    snprintf(step, sizeof step, "engines.%s.%s=%.9g", name, engine->search->step_key, h);
+    snprintf(softness, sizeof softness, "engines.%s.%s=%.9g", name, k->softness_key,
+             fmax(soft * h / dt, k->softness_min_steps * h));
+    out->step[i] = h;
+    const int status = dv_search_probe_theta(&pr, &out->error[i], err, step, softness, NULL, NULL);
+    if (status) return status;
+  }
+  extrapolate(out);
+  if (out->verdict != DV_CONVERGES_ELSEWHERE) return DV_OK;
+  dv_attribution a;
+  const int status = dv_search_attribute(path, sets, nsets, name, &a, err);
+  if (status) return status;
+  snprintf(out->cause, sizeof out->cause, "%s", dominant(&a));
+  return DV_OK;
+}

@@ -1,0 +1,51 @@
+/* search_verify: does a contact engine converge to the reference?
+ *
+ * The engine's time step and contact softness are refined together: h =
+ * dt/2^k for k = 0..3 (dt: the scenario's step), the softness scaled by
+ * h/dt (and kept at least as many steps as the library ties it to). From the
+ * max theta errors against the thin disk (pointwise to the reference's
+ * horizon), the observed order p comes from the last three, and Richardson
+ * extrapolation gives the discrepancy at h -> 0:
+ *
+ *   e(0) = e(h3) - (e(h2) - e(h3)) / (2^p - 1)
+ *
+ * "converges to the reference" when |e(0)| <= DV_VERIFY_FLOOR (or the errors
+ * already sit below it); "converges elsewhere" when e(0) is above it, or the
+ * errors are flat above it (a model discrepancy: its dominant cause from
+ * attribution); "does not converge" when the errors grow or wander.
+ */
+#ifndef DV_SEARCH_VERIFY_H
+#define DV_SEARCH_VERIFY_H
+
+#include <stddef.h>
+
+#include "dv_error.h"
+#include "search_attribute.h"
+
+#define DV_VERIFY_FLOOR 1e-4 /* rad: a tenth of the engines' default accuracy goal */
+#define DV_VERIFY_LEVELS 4
+#define DV_VERIFY_FLAT 0.1 /* errors that change less than this share over dt..dt/8 are flat */
+
+typedef enum dv_convergence {
+  DV_CONVERGES = 0,       /* to the reference */
+  DV_CONVERGES_ELSEWHERE, /* to something else: a model discrepancy */
+  DV_DOES_NOT_CONVERGE,   /* the errors do not fall with the step */
+} dv_convergence;
+
+/* "converges to the reference", "converges elsewhere", "does not converge" */
+const char *dv_search_convergence_name(dv_convergence c);
+
+typedef struct dv_verification {
+  double step[DV_VERIFY_LEVELS];  /* s */
+  double error[DV_VERIFY_LEVELS]; /* max theta error against the thin disk, rad */
+  double order;                   /* observed; NAN when the errors do not fall */
+  double extrapolated;            /* e(0), rad */
+  dv_convergence verdict;
+  char cause[64]; /* converges elsewhere: the dominant share of attribution */
+} dv_verification;
+
+/* refine engine on the scenario and judge its convergence */
+int dv_search_verify(const char *scenario_path, const char *const *sets, size_t nsets,
+                     const char *engine, dv_verification *out, dv_error *err);
+
+#endif
