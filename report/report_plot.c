@@ -71,6 +71,8 @@ typedef struct figure {
   char title[256];
   size_t ncurves;
   curve c[DV_PLOT_MAX_SERIES + 1];
+  double limit;   /* error plot: the theta limit, log10 (NAN: none) */
+  double horizon; /* error plot: the horizon, s (NAN: none) */
 } figure;
 
 void dvp_escape(char *out, size_t size, const char *text, const char *suffix) {
@@ -140,6 +142,8 @@ static int curve_has_data(const curve *c) {
 static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
   memset(f, 0, sizeof *f);
   f->kind = kind;
+  f->limit = kind == PLOT_ERROR && in->theta_limit > 0.0 ? log10(in->theta_limit) : NAN;
+  f->horizon = kind == PLOT_ERROR && isfinite(in->horizon) ? in->horizon : NAN;
   char name[160];
   dvp_escape(name, sizeof name, in->title, "");
   snprintf(f->title, sizeof f->title, "%s: %s", name, kinds[kind].what);
@@ -278,6 +282,21 @@ void dvp_decade_label(PLINT axis, PLFLT value, char *label, PLINT length, PLPoin
   snprintf(label, (size_t)length, "10#u%d#d", (int)lround(value));
 }
 
+/* the error plot's theta limit (dashed) and the reference's horizon (dotted), labelled */
+static void draw_limits(const figure *f, const double r[4]) {
+  if (isfinite(f->limit)) {
+    pllsty(2);
+    pljoin(r[0], f->limit, r[1], f->limit);
+    plptex(r[1] - 0.02 * (r[1] - r[0]), f->limit + 0.02 * (r[3] - r[2]), 1, 0, 1, "limit");
+  }
+  if (isfinite(f->horizon) && f->horizon > r[0] && f->horizon < r[1]) {
+    pllsty(3);
+    pljoin(f->horizon, r[2], f->horizon, r[3]);
+    plptex(f->horizon, r[3] - 0.05 * (r[3] - r[2]), 0, 1, 1.05, "horizon");
+  }
+  pllsty(1);
+}
+
 /* draw figure f (a figure *) on the current, initialised stream */
 static void draw_figure(const void *arg) {
   const figure *f = arg;
@@ -288,6 +307,7 @@ static void draw_figure(const void *arg) {
     r[0] = 0, r[1] = 1;
     r[2] = logy ? -16 : 0, r[3] = logy ? 0 : 1;
   }
+  if (isfinite(f->limit)) r[3] = fmax(r[3], f->limit); /* the limit stays in view */
   dvp_pad_range(&r[0], &r[1], f->kind == PLOT_PATH ? 0.05 : 0.0, 0.0);
   dvp_pad_range(&r[2], &r[3], 0.05, logy ? 1.0 : 0.0);
   if (logy) { /* whole decades, so that at least two are labelled */
@@ -319,6 +339,7 @@ static void draw_figure(const void *arg) {
   }
   plwidth(1.0);
   plcol0(COL_FG);
+  draw_limits(f, r);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
   draw_legend(f);
 }

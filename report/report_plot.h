@@ -30,6 +30,8 @@ typedef struct dv_plot_input {
   const dv_traj *thin; /* the thin-disk reference, drawn in every plot */
   size_t nseries;
   dv_plot_series series[DV_PLOT_MAX_SERIES];
+  double theta_limit; /* rad, drawn on the error plot (0 or NAN: none) */
+  double horizon;     /* s, the reference's predictability horizon, marked there (INFINITY: none) */
 } dv_plot_input;
 
 /* the names of the files dv_report_plot_scenario writes, NULL-terminated */
@@ -97,6 +99,6 @@ typedef struct dv_plot_curve {
 
 /* one SVG at path (written under a temporary name in path's directory and renamed) */
 int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, const char *ylabel,
-               const dv_plot_curve *curves, size_t n, int flags, dv_error *err);
+                      const dv_plot_curve *curves, size_t n, int flags, dv_error *err);
 
 #endif

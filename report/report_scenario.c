@@ -260,7 +260,9 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
   char name[96];
   snprintf(name, sizeof name, "%s.csv", dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
   int status = write_csv(dir, name, &c->thin, err);
-  dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}};
+  dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}, INFINITY, c->horizon};
+  for (size_t i = 0; i < c->n; i++) /* the tightest theta limit */
+    plot.theta_limit = fmin(plot.theta_limit, c->r[i].tolerance[DV_THETA_MAX_ERR]);
   for (size_t i = 0; !status && i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
     snprintf(name, sizeof name, "%s.csv", r->engine->name);

@@ -193,6 +193,22 @@ static void put_link(FILE *fp, const char *out_dir, const char *dir, const char 
 }
 
 /* one summary-table row of engine eng of scenario i */
+/* the metric closest to (or furthest over) its limit: "0.42 (theta_max_err)" */
+static void put_margin(FILE *fp, const cJSON *limits) {
+  const cJSON *l, *worst = NULL;
+  cJSON_ArrayForEach(l, limits) {
+    const cJSON *m = item(l, "margin");
+    if (cJSON_IsNumber(m) && (!worst || m->valuedouble > item(worst, "margin")->valuedouble))
+      worst = l;
+  }
+  if (!worst) {
+    fputs("<td class=\"n\">&#8211;</td>", fp);
+    return;
+  }
+  fprintf(fp, "<td class=\"n\">%.3g (", item(worst, "margin")->valuedouble);
+  dv_report_escape_put(fp, "", worst->string, 0, ")</td>");
+}
+
 static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   static const char *const metrics[] = {"theta_max_err", "path_max_err", "path_hausdorff",
                                         "energy_drift"};
@@ -206,8 +222,11 @@ static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   for (size_t k = 0; k < sizeof metrics / sizeof *metrics; k++)
     put_num(fp, "<td class=\"n\">", item(eng, metrics[k]), "</td>");
   put_num(fp, "<td class=\"n\">", item(item(eng, "geometry_share"), "theta_max_err"), "</td>");
+  put_margin(fp, item(eng, "limits"));
   put_num(fp, "<td class=\"n\">", item(eng, "wall_per_sim_s"), "</td><td>");
   int nf = 0;
+  if (cJSON_IsString(item(eng, "decided")))
+    dv_report_escape_put(fp, "", text(eng, "decided"), 0, ""), nf = 1;
   cJSON_ArrayForEach(f, item(eng, "failures")) if (cJSON_IsString(f))
       dv_report_escape_put(fp, nf++ ? "<br />" : "", f->valuestring, 0, "");
   fputs("</td></tr>\n", fp);
@@ -296,8 +315,8 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
   fputs(
       "<table>\n<tr><th>scenario</th><th>engine</th><th>outcome</th><th>verdict</th>"
       "<th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
-      "<th>energy_drift</th><th>geometry share</th><th>wall_per_sim_s</th>"
-      "<th>failures</th></tr>\n",
+      "<th>energy_drift</th><th>geometry share</th><th>largest margin (value / limit)</th>"
+      "<th>wall_per_sim_s</th><th>what decided; failures</th></tr>\n",
       fp);
   for (size_t i = 0; i < n; i++) {
     const cJSON *eng;

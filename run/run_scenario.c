@@ -65,7 +65,8 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
     snprintf(part, sizeof part,
              "pointwise to the reference's horizon t = %g s, timing-insensitive after",
              r->pointwise_end);
-  if (r->verdict == DV_VERDICT_NOT_JUDGED || dv_run_verdict_failed(r->verdict))
+  if (r->verdict == DV_VERDICT_NOT_JUDGED || r->verdict == DV_VERDICT_OUTSIDE_VALIDITY ||
+      dv_run_verdict_failed(r->verdict))
     snprintf(r->decided, sizeof r->decided, "the run: %s", dv_run_verdict_name(r->verdict));
   else if (failed[0] || failed[1])
     snprintf(r->decided, sizeof r->decided, "%s metrics (%s)",
@@ -94,16 +95,19 @@ static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_
    * samples, or left the validity window at once) measures nothing */
   if (r->verdict == DV_VERDICT_AGREES &&
       (r->vs_ref.n_window < 2 || r->window_fraction < DV_MIN_WINDOW_FRACTION)) {
-    r->verdict = DV_VERDICT_NOT_JUDGED;
+    const int validity = ref_end < t_run - 0.5 * sc->output_dt;
+    r->verdict = validity ? DV_VERDICT_OUTSIDE_VALIDITY : DV_VERDICT_NOT_JUDGED;
     add_failure(r,
-                "%s: %s: not judged: the compared window ends at t = %g s, %.1f%% of the "
+                "%s: %s: %s: the compared window ends at t = %g s, %.1f%% of the "
                 "reference's %g s (at least %g%% needed): %s",
-                sc->name, name, r->vs_ref.t_window, 100 * r->window_fraction, t_run - t0,
-                100 * DV_MIN_WINDOW_FRACTION,
-                ref_end < t_ref + 1e-12 ? "rolling stops describing the physics there"
-                                        : "the engine or the reference ended there");
+                sc->name, name, dv_run_verdict_name(r->verdict), r->vs_ref.t_window,
+                100 * r->window_fraction, t_run - t0, 100 * DV_MIN_WINDOW_FRACTION,
+                validity ? "the contact force rolling needs leaves the friction cone there"
+                         : "the engine or the reference ended there");
   }
-  for (int m = 0; m < DV_NMETRICS && r->verdict != DV_VERDICT_NOT_JUDGED; m++)
+  const int judged =
+      r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
+  for (int m = 0; m < DV_NMETRICS && judged; m++)
     if (isnan(r->tolerance[m])) /* a metric without a rule: not judged, never a pass */
       continue;
     else if (!(r->vs_ref.value[m] <= r->tolerance[m])) {

@@ -3,11 +3,11 @@
 
 const char *dv_run_verdict_name(dv_verdict verdict) {
   static const char *const names[DV_NVERDICTS] = {
-      [DV_VERDICT_AGREES] = "agrees",        [DV_VERDICT_EXCEEDS] = "exceeds tolerance",
-      [DV_VERDICT_DIVERGED] = "diverged",    [DV_VERDICT_LOST_CONTACT] = "lost contact",
-      [DV_VERDICT_ERROR] = "error",          [DV_VERDICT_ENDED_BY_EVENT] = "ended by event",
-      [DV_VERDICT_INVALID] = "invalid",      [DV_VERDICT_MISSING] = "missing",
-      [DV_VERDICT_NOT_JUDGED] = "not judged"};
+      [DV_VERDICT_AGREES] = "agrees",         [DV_VERDICT_EXCEEDS] = "exceeds tolerance",
+      [DV_VERDICT_DIVERGED] = "diverged",     [DV_VERDICT_LOST_CONTACT] = "lost contact",
+      [DV_VERDICT_ERROR] = "error",           [DV_VERDICT_ENDED_BY_EVENT] = "ended by event",
+      [DV_VERDICT_INVALID] = "invalid",       [DV_VERDICT_MISSING] = "missing",
+      [DV_VERDICT_NOT_JUDGED] = "not judged", [DV_VERDICT_OUTSIDE_VALIDITY] = "outside validity"};
   return (unsigned)verdict < DV_NVERDICTS ? names[verdict] : "unknown";
 }
 

@@ -6,20 +6,21 @@
 #include "dv_engine.h"
 
 typedef enum dv_verdict {
-  DV_VERDICT_AGREES = 0,     /* every metric within its limit */
-  DV_VERDICT_EXCEEDS,        /* "exceeds tolerance": a metric above its limit */
-  DV_VERDICT_DIVERGED,       /* the run failed: NaN, a blow-up, a reset state */
-  DV_VERDICT_LOST_CONTACT,   /* the disk left the ground */
-  DV_VERDICT_ERROR,          /* a library or set-up error */
-  DV_VERDICT_ENDED_BY_EVENT, /* the engine's run ended at an event before the reference's */
-  DV_VERDICT_INVALID,        /* settings refused before the run (sweeps) */
-  DV_VERDICT_MISSING,        /* never reported (a lost MPI rank) */
-  DV_VERDICT_NOT_JUDGED,     /* nothing to compare: the window is (nearly) empty */
+  DV_VERDICT_AGREES = 0,       /* every metric within its limit */
+  DV_VERDICT_EXCEEDS,          /* "exceeds tolerance": a metric above its limit */
+  DV_VERDICT_DIVERGED,         /* the run failed: NaN, a blow-up, a reset state */
+  DV_VERDICT_LOST_CONTACT,     /* the disk left the ground */
+  DV_VERDICT_ERROR,            /* a library or set-up error */
+  DV_VERDICT_ENDED_BY_EVENT,   /* the engine's run ended at an event before the reference's */
+  DV_VERDICT_INVALID,          /* settings refused before the run (sweeps) */
+  DV_VERDICT_MISSING,          /* never reported (a lost MPI rank) */
+  DV_VERDICT_NOT_JUDGED,       /* nothing to compare: the window is (nearly) empty */
+  DV_VERDICT_OUTSIDE_VALIDITY, /* not judged: rolling stops describing the physics at once */
   DV_NVERDICTS
 } dv_verdict;
 
 /* "agrees", "exceeds tolerance", "diverged", "lost contact", "error",
- * "ended by event", "invalid", "missing", "not judged" */
+ * "ended by event", "invalid", "missing", "not judged", "outside validity" */
 const char *dv_run_verdict_name(dv_verdict verdict);
 
 /* the verdict of a run that failed with outcome */

@@ -117,7 +117,7 @@ int main(void) {
   if (!compare(CIRCLE, "mujoco", frictionless, 1, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
     printf("friction 0: %s: %s\n", dv_run_verdict_name(r->verdict), r->nfailures ? r->failures[0] : "");
-    CHECK(!r->pass && r->verdict == DV_VERDICT_NOT_JUDGED, "empty window: %s",
+    CHECK(!r->pass && r->verdict == DV_VERDICT_OUTSIDE_VALIDITY, "empty window: %s",
           dv_run_verdict_name(r->verdict));
     dv_run_comparison_free(&c);
   }
