@@ -13,10 +13,11 @@
 #include "report_suite_run.h"
 #include "run_scenario.h"
 #include "search_stability.h"
+#include "search_verify_suite.h"
 
 static const char HELP[] =
     "usage: diskval suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N] [--engines LIST]\n"
-    "                     [--stability]\n"
+    "                     [--stability | --verify]\n"
     "\n"
     "Compare every scenario (the *.ini files of each DIR, and each FILE) as diskval\n"
     "compare does, N at a time in separate processes (default: the number of cores),\n"
@@ -25,12 +26,16 @@ static const char HELP[] =
     "--stability also finds, per scenario and engine, the largest timestep that stays\n"
     "finite and within the scenario's theta tolerance (bisection), and the failure\n"
     "above it: DIR/stability.html, .md and .json, linked from index.html.\n"
+    "--verify instead refines each contact engine's step and contact softness on every\n"
+    "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
+    "a failure wherever an engine does not converge to the reference.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 typedef struct suite_opts {
   const char *out, *junit, *engines;
   int jobs;
   int stability; /* also the largest stable timesteps and failure modes */
+  int verify;    /* instead: do the engines converge to the reference */
 } suite_opts;
 
 static int by_name(const void *a, const void *b) {
@@ -86,6 +91,41 @@ static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenar
   return DV_EXIT_OK;
 }
 
+/* --verify: every scenario's engines refined; verify.md, verify.json, JUnit */
+static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_list *sets,
+                  const dv_engine_type *const *engines, const dv_scenario *scs) {
+  size_t ne = 0;
+  while (engines[ne]) ne++;
+  const size_t n = files->n;
+  const char **names = malloc(n * sizeof *names);
+  dv_verify_case *cases = calloc(n * ne, sizeof *cases);
+  dv_error err = {{0}};
+  int code = DV_EXIT_OK;
+  if (!names || !cases) code = dv_cli_error("suite", "out of memory");
+  for (size_t i = 0; !code && i < n; i++) names[i] = scs[i].name;
+  if (!code && dv_io_make_dirs(o->out, &err)) code = dv_cli_error("suite", "%s", err.msg);
+  const int ran = code ? DV_OK
+                       : dv_search_verify_suite(files->items, names, n, sets->items, sets->n,
+                                                engines, ne, o->jobs, cases, &err);
+  char junit[1100];
+  snprintf(junit, sizeof junit, "%s/junit.xml", o->out);
+  if (!code && ran == DV_OK &&
+      dv_search_verify_write(o->out, o->junit ? o->junit : junit, cases, n * ne, &err))
+    code = dv_cli_error("suite", "%s", err.msg);
+  size_t converge = 0;
+  for (size_t k = 0; !code && ran == DV_OK && k < n * ne; k++) {
+    if (cases[k].status < 0) code = DV_EXIT_ERROR;
+    converge += cases[k].status == 0 && cases[k].v.verdict == DV_CONVERGES;
+  }
+  if (!code && converge < n * ne) code = DV_EXIT_FAIL;
+  if (ran == DV_OK && (code == DV_EXIT_OK || code == DV_EXIT_FAIL || converge))
+    printf("%zu of %zu engine runs converge to the reference; report: %s/verify.md\n", converge,
+           n * ne, o->out);
+  free(names);
+  free(cases);
+  return code;
+}
+
 /* run the loaded scenarios and write the suite's files */
 static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_type *const *engines,
                const dv_scenario *scs, size_t n, int *codes) {
@@ -121,15 +161,16 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
 }
 
 int dv_cli_suite(int argc, char **argv) {
-  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0};
+  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0};
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &o.out, 0, 0},
       {"junit", DV_CLI_TEXT, &o.junit, 0, 0},
       {"engines", DV_CLI_TEXT, &o.engines, 0, 0},
       {"jobs", DV_CLI_INT, &o.jobs, 1, 1024},
       {"stability", DV_CLI_FLAG, &o.stability, 0, 0},
+      {"verify", DV_CLI_FLAG, &o.verify, 0, 0},
   };
-  const dv_cli_command cmd = {"suite", HELP, options, 5, 1, (size_t)-1};
+  const dv_cli_command cmd = {"suite", HELP, options, 6, 1, (size_t)-1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
@@ -145,7 +186,10 @@ int dv_cli_suite(int argc, char **argv) {
   if (!code && (!(scs = calloc(files.n, sizeof *scs)) || !(codes = calloc(files.n, sizeof *codes))))
     code = dv_cli_error("suite", "out of memory");
   if (!code) code = load_all(&files, &a.sets, scs);
-  if (!code) code = run(&o, &a.sets, engines, scs, files.n, codes);
+  if (!code && o.verify)
+    code = verify(&o, &files, &a.sets, engines, scs);
+  else if (!code)
+    code = run(&o, &a.sets, engines, scs, files.n, codes);
   for (size_t i = 0; i < files.n; i++) free((char *)files.items[i]);
   free(files.items);
   free(scs);

@@ -1,0 +1,140 @@
+/* search_verify_suite: verification of every scenario, and its files. */
+#include "search_verify_suite.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_clock.h"
+#include "exec_pool.h"
+#include "io_file.h"
+#include "report_escape.h"
+#include "run_meta.h"
+
+typedef struct suite_job {
+  const char *const *paths;
+  const char *const *sets;
+  size_t nsets;
+  const dv_engine_type *const *engines;
+  size_t nengines;
+} suite_job;
+
+/* dv_exec_pool's task k: scenario k / nengines in engine k % nengines */
+static void verify_task(size_t k, void *result, void *ctx) {
+  const suite_job *j = ctx;
+  dv_verify_case *c = result;
+  dv_error err = {{0}};
+  const double t0 = dv_clock_now();
+  c->status = dv_search_verify(j->paths[k / j->nengines], j->sets, j->nsets,
+                               j->engines[k % j->nengines]->name, &c->v, &err);
+  c->wall_s = dv_clock_now() - t0;
+  snprintf(c->message, sizeof c->message, "%s", err.msg);
+}
+
+int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
+                           const char *const *sets, size_t nsets,
+                           const dv_engine_type *const *engines, size_t nengines, int jobs,
+                           dv_verify_case *cases, dv_error *err) {
+  for (size_t k = 0; k < n * nengines; k++) {
+    memset(&cases[k], 0, sizeof cases[k]);
+    snprintf(cases[k].scenario, sizeof cases[k].scenario, "%s", names[k / nengines]);
+    snprintf(cases[k].engine, sizeof cases[k].engine, "%s", engines[k % nengines]->name);
+    cases[k].status = DV_ESYSTEM; /* until its task reports */
+    snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
+  }
+  const suite_job j = {paths, sets, nsets, engines, nengines};
+  const int pool =
+      dv_exec_pool_run(n * nengines, sizeof *cases, verify_task, (void *)&j, cases, jobs, NULL);
+  if (pool < 0) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  return pool == 1 ? DV_EVENT : DV_OK; /* DV_EVENT: an MPI worker rank */
+}
+
+/* the one line that says how a case ended */
+static void describe(const dv_verify_case *c, char *text, size_t size) {
+  if (c->status < 0)
+    snprintf(text, size, "error: %s", c->message);
+  else
+    snprintf(text, size, "%s: extrapolated discrepancy %.3g rad (floor %g), order %s%.3g%s%s",
+             dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR,
+             isnan(c->v.order) ? "none " : "", isnan(c->v.order) ? 0.0 : c->v.order,
+             c->v.cause[0] ? ", cause: " : "", c->v.cause);
+}
+
+/* verify.md: a row per case */
+static int write_md(const char *dir, const dv_verify_case *cases, size_t n, dv_error *err) {
+  dv_io_file out;
+  int status = dv_io_open_in(&out, dir, "verify.md", err);
+  if (status) return status;
+  fprintf(out.fp,
+          "# Verification: do the engines converge to the reference?\n\n"
+          "| scenario | engine | errors at dt, dt/2, dt/4, dt/8 (rad) | verdict |\n"
+          "|---|---|---|---|\n");
+  for (size_t k = 0; k < n; k++) {
+    char text[640];
+    describe(&cases[k], text, sizeof text);
+    fprintf(out.fp, "| %s | %s | %.3g, %.3g, %.3g, %.3g | %s |\n", cases[k].scenario,
+            cases[k].engine, cases[k].v.error[0], cases[k].v.error[1], cases[k].v.error[2],
+            cases[k].v.error[3], text);
+  }
+  return dv_io_commit(&out, err);
+}
+
+/* verify.json: the same as numbers */
+static int write_json(const char *dir, const dv_verify_case *cases, size_t n, dv_error *err) {
+  cJSON *o = cJSON_CreateObject(), *list = cJSON_AddArrayToObject(o, "cases");
+  cJSON_AddNumberToObject(o, "floor", DV_VERIFY_FLOOR);
+  for (size_t k = 0; k < n; k++) {
+    const dv_verify_case *c = &cases[k];
+    cJSON *e = cJSON_CreateObject();
+    cJSON_AddStringToObject(e, "scenario", c->scenario);
+    cJSON_AddStringToObject(e, "engine", c->engine);
+    cJSON_AddStringToObject(e, "verdict",
+                            c->status < 0 ? "error" : dv_search_convergence_name(c->v.verdict));
+    cJSON_AddStringToObject(e, "detail", c->status < 0 ? c->message : c->v.cause);
+    cJSON_AddItemToObject(e, "steps", cJSON_CreateDoubleArray(c->v.step, DV_VERIFY_LEVELS));
+    cJSON_AddItemToObject(e, "errors", cJSON_CreateDoubleArray(c->v.error, DV_VERIFY_LEVELS));
+    cJSON_AddItemToObject(e, "order", dv_io_json_number(c->v.order));
+    cJSON_AddItemToObject(e, "extrapolated", dv_io_json_number(c->v.extrapolated));
+    cJSON_AddNumberToObject(e, "wall_s", c->wall_s);
+    cJSON_AddItemToArray(list, e);
+  }
+  return dv_io_json_write(dir, "verify.json", o, err);
+}
+
+/* the JUnit XML: a test case per scenario and engine */
+static int write_junit(const char *path, const dv_verify_case *cases, size_t n, dv_error *err) {
+  dv_io_file out;
+  int status = dv_io_open(&out, path, err);
+  if (status) return status;
+  size_t failures = 0;
+  for (size_t k = 0; k < n; k++)
+    failures += cases[k].status < 0 || cases[k].v.verdict != DV_CONVERGES;
+  fprintf(out.fp,
+          "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+          "<testsuite name=\"diskval verify\" tests=\"%zu\" failures=\"%zu\">\n",
+          n, failures);
+  for (size_t k = 0; k < n; k++) {
+    const dv_verify_case *c = &cases[k];
+    char text[640];
+    describe(c, text, sizeof text);
+    dv_report_escape_put(out.fp, "  <testcase classname=\"", c->scenario, 1, "\" name=\"");
+    dv_report_escape_put(out.fp, "", c->engine, 1, "\"");
+    fprintf(out.fp, " time=\"%.3f\">", c->wall_s);
+    if (c->status < 0 || c->v.verdict != DV_CONVERGES)
+      dv_report_escape_put(out.fp, "<failure message=\"", text, 1, "\"/>");
+    else
+      dv_report_escape_put(out.fp, "<system-out>", text, 0, "</system-out>");
+    fputs("</testcase>\n", out.fp);
+  }
+  fputs("</testsuite>\n", out.fp);
+  return dv_io_commit(&out, err);
+}
+
+int dv_search_verify_write(const char *dir, const char *junit, const dv_verify_case *cases,
+                           size_t n, dv_error *err) {
+  int status = write_md(dir, cases, n, err);
+  if (!status) status = write_json(dir, cases, n, err);
+  if (!status) status = write_junit(junit, cases, n, err);
+  return status;
+}

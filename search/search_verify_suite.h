@@ -1,0 +1,35 @@
+/* search_verify_suite: diskval suite --verify: every scenario's contact
+ * engines verified (search_verify.h) in parallel, written as OUT/verify.md,
+ * OUT/verify.json and a JUnit XML file (one test case per scenario and
+ * engine; a failure unless it converges to the reference).
+ */
+#ifndef DV_SEARCH_VERIFY_SUITE_H
+#define DV_SEARCH_VERIFY_SUITE_H
+
+#include <stddef.h>
+
+#include "dv_engine.h"
+#include "search_verify.h"
+
+/* one scenario x engine */
+typedef struct dv_verify_case {
+  char scenario[64];
+  char engine[32];
+  int status; /* of dv_search_verify: DV_OK, or < 0 with message */
+  char message[512];
+  double wall_s;
+  dv_verification v;
+} dv_verify_case;
+
+/* verify every (scenario, engine): paths[i] loaded with sets; results in
+ * cases[i * nengines + j] (the caller's, n x nengines) */
+int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
+                           const char *const *sets, size_t nsets,
+                           const dv_engine_type *const *engines, size_t nengines, int jobs,
+                           dv_verify_case *cases, dv_error *err);
+
+/* verify.md and verify.json in dir, and the JUnit XML at junit */
+int dv_search_verify_write(const char *dir, const char *junit, const dv_verify_case *cases,
+                           size_t n, dv_error *err);
+
+#endif
