@@ -29,6 +29,8 @@ int dv_cli_compare(int argc, char **argv) {
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_scenario sc;
   dv_error err = {{0}};
+  dv_report_explain explain;
+  dv_cli_explainer(&a.sets, &explain);
   int code;
   if (dv_cli_engine_list(list, engines, &err))
     code = dv_cli_usage_error("compare", "%s", err.msg);
@@ -36,7 +38,7 @@ int dv_cli_compare(int argc, char **argv) {
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
   else if (dv_io_make_dirs(out, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &err)) == DV_EXIT_ERROR)
+  else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &explain, &err)) == DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.name, err.msg);
   else
     printf("report: %s/%s/report.md\n", out, sc.name);

@@ -131,7 +131,9 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
                const dv_scenario *scs, size_t n, int *codes) {
   dv_error err = {{0}};
   if (dv_io_make_dirs(o->out, &err)) return dv_cli_error("suite", "%s", err.msg);
-  const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, codes, &err);
+  dv_report_explain explain;
+  dv_cli_explainer(sets, &explain);
+  const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, &explain, codes, &err);
   if (ran == DV_SUITE_RUN_WORKER) return DV_EXIT_OK; /* an MPI worker rank: rank 0 reports */
   if (ran == DV_EVENT) {
     dv_cli_error("suite", "%s", err.msg);

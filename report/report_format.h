@@ -35,6 +35,9 @@
  *                                   cover the window to here: the reference's
  *                                   predictability horizon (run_horizon.h)
  *         "decided": TEXT,          which part decided the verdict
+ *         "cause": TEXT,            an excess's dominant cause from attribution
+ *                                   (geometry, time step, contact softness and
+ *                                   slip, the rest, with its share), or ""
  *         "reference_half_thickness": m,   of its matched reference
  *         "vs_thin": {METRIC: value, ...}, the same metrics against the thin disk
  *         "geometry_share": {"theta_max_err": x, "path_max_err": y},

@@ -68,6 +68,7 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
   cJSON_AddNumberToObject(o, "pointwise_end", r->pointwise_end);
   cJSON_AddStringToObject(o, "decided", r->decided);
+  cJSON_AddStringToObject(o, "cause", r->cause);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
   cJSON_AddItemToObject(o, "vs_thin", metrics_json(r->vs_thin.value));
   cJSON *g = cJSON_AddObjectToObject(o, "geometry_share");

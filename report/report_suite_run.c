@@ -24,14 +24,31 @@ static int remove_tree(const char *path) {
   return nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
+/* the cause of each engine's excess, added to its failures */
+static void explain_failures(const dv_scenario *sc, const dv_report_explain *explain,
+                             dv_comparison *c) {
+  for (size_t i = 0; explain && i < c->n; i++) {
+    dv_engine_result *r = &c->r[i];
+    if (r->verdict != DV_VERDICT_EXCEEDS ||
+        explain->cause(explain->ctx, sc, r->engine->name, r->cause, sizeof r->cause))
+      continue;
+    for (size_t k = 0; k < r->nfailures; k++) {
+      const size_t len = strlen(r->failures[k]);
+      snprintf(r->failures[k] + len, sizeof r->failures[k] - len, "; cause: %s", r->cause);
+    }
+  }
+}
+
 /* compare sc into a new directory tmp; its dv_suite_result */
 static int compare_into(const char *tmp, const dv_scenario *sc,
-                        const dv_engine_type *const *engines, int verbose, dv_error *err) {
+                        const dv_engine_type *const *engines, int verbose,
+                        const dv_report_explain *explain, dv_error *err) {
   size_t n = 0;
   while (engines[n]) n++;
   dv_comparison *c = calloc(1, sizeof *c);
   if (!c) return dv_fail(err, DV_ESYSTEM, "out of memory"), DV_SUITE_ERROR;
   int status = dv_run_scenario(sc, NULL, engines, n, c, err);
+  if (!status) explain_failures(sc, explain, c);
   if (!status) status = dv_report_scenario_write(tmp, c, err);
   if (!status && verbose) dv_report_scenario_print(stdout, c);
   const int pass = c->pass;
@@ -41,7 +58,8 @@ static int compare_into(const char *tmp, const dv_scenario *sc,
 }
 
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
-                            const char *out_dir, int verbose, dv_error *err) {
+                            const char *out_dir, int verbose, const dv_report_explain *explain,
+                            dv_error *err) {
   char tmp[1200], final[1200], old[1200];
   const dv_engine_type *own[DV_MAX_ENGINES + 1];
   /* a scenario may name its own engines */
@@ -58,7 +76,7 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
   const mode_t mask = umask(0);
   umask(mask);
   chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */
-  const int code = compare_into(tmp, sc, engines, verbose, err);
+  const int code = compare_into(tmp, sc, engines, verbose, explain, err);
   if (code == DV_SUITE_ERROR) {
     remove_tree(tmp);
     return DV_SUITE_ERROR;
@@ -94,6 +112,7 @@ typedef struct suite_run {
   size_t n;
   const dv_engine_type *const *engines;
   const char *out_dir;
+  const dv_report_explain *explain;
   const int *codes; /* each scenario's dv_suite_result once it has ended */
   size_t ended;     /* scenarios ended so far */
   int tty;          /* progress on stderr */
@@ -103,7 +122,7 @@ typedef struct suite_run {
 static void run_task(size_t k, void *result, void *ctx) {
   const suite_run *s = ctx;
   dv_error e = {{0}};
-  const int code = dv_report_suite_run_one(&s->scs[k], s->engines, s->out_dir, 0, &e);
+  const int code = dv_report_suite_run_one(&s->scs[k], s->engines, s->out_dir, 0, s->explain, &e);
   if (code == DV_SUITE_ERROR) fprintf(stderr, "diskval suite: %s: %s\n", s->scs[k].name, e.msg);
   memcpy(result, &code, sizeof code);
 }
@@ -122,9 +141,10 @@ static void progress(size_t k, int ran, void *ctx) {
 }
 
 int dv_report_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
-                            const char *out_dir, int jobs, int *codes, dv_error *err) {
+                            const char *out_dir, int jobs, const dv_report_explain *explain,
+                            int *codes, dv_error *err) {
   for (size_t i = 0; i < n; i++) codes[i] = DV_SUITE_ERROR; /* a scenario that never ends */
-  suite_run s = {scs, n, engines, out_dir, codes, 0, isatty(STDERR_FILENO)};
+  suite_run s = {scs, n, engines, out_dir, explain, codes, 0, isatty(STDERR_FILENO)};
   const dv_exec_options opt = {.jobs = jobs, .on_result = progress};
   const int pool = dv_exec_pool(n, sizeof *codes, run_task, &s, codes, &opt);
   if (s.tty && pool != DV_EXEC_WORKER) fputc('\n', stderr);

@@ -23,10 +23,19 @@ typedef enum dv_suite_result {
   DV_SUITE_ERROR = 2
 } dv_suite_result;
 
-/* compare sc and write OUT/<name>/; print a line per engine to stdout when
+/* explains why an engine exceeds its limits (attribution lives above this
+ * layer): the dominant cause in words into out; 0, or < 0 when it cannot */
+typedef struct dv_report_explain {
+  int (*cause)(void *ctx, const dv_scenario *sc, const char *engine, char *out, size_t size);
+  void *ctx;
+} dv_report_explain;
+
+/* compare sc and write OUT/<name>/ (an engine that exceeds a limit gets its
+ * cause from explain, when given); print a line per engine to stdout when
  * verbose. Returns a dv_suite_result. */
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
-                            const char *out_dir, int verbose, dv_error *err);
+                            const char *out_dir, int verbose, const dv_report_explain *explain,
+                            dv_error *err);
 
 /* dv_report_suite_run_all on an MPI worker rank: rank 0 has the results */
 #define DV_SUITE_RUN_WORKER 2
@@ -39,6 +48,6 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
  * DV_OK, or DV_SUITE_RUN_WORKER. */
 int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n,
                             const dv_engine_type *const *engines, const char *out_dir, int jobs,
-                            int *codes, dv_error *err);
+                            const dv_report_explain *explain, int *codes, dv_error *err);
 
 #endif

@@ -39,10 +39,11 @@ typedef struct dv_engine_result {
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
   char decided[160];                /* which part decided the verdict, and why */
+  char cause[96];                   /* an excess's dominant cause, from attribution ("": unknown) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
-  char failures[DV_MAX_FAILURES][256];
+  char failures[DV_MAX_FAILURES][384];
 } dv_engine_result;
 
 typedef struct dv_comparison {

@@ -4,13 +4,28 @@
 #include <math.h>
 #include <string.h>
 
+#include "dv_format.h"
 #include "red_solver.h"
 
+/* a row of n numbers into line: t to 12 significant digits (the grid time), the rest exact */
+static size_t format_row(char *line, double t, const double *v, int n) {
+  char *p = line;
+  p += dv_format_precision(t, 12, p, DV_FORMAT_SIZE);
+  for (int i = 0; i < n; i++) {
+    *p++ = ',';
+    p += dv_format_double(v[i], p, DV_FORMAT_SIZE);
+  }
+  *p++ = '\n';
+  return (size_t)(p - line);
+}
+
+/* a trajectory row, the columns of DV_CSV_HEADER, in one write */
 void dv_run_csv_row(FILE *fp, const dv_sample *s) {
   const double *y = s->y;
-  fprintf(fp, "%.12g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", s->t,
-          y[RED_TH], y[RED_PH], y[RED_PS], y[RED_X], y[RED_Y], s->contact[0], s->contact[1],
-          y[RED_VTH], y[RED_VPH], y[RED_VPS], s->energy);
+  const double v[] = {y[RED_TH],     y[RED_PH],  y[RED_PS],  y[RED_X],   y[RED_Y], s->contact[0],
+                      s->contact[1], y[RED_VTH], y[RED_VPH], y[RED_VPS], s->energy};
+  char line[(1 + sizeof v / sizeof *v) * (DV_FORMAT_SIZE + 1)];
+  fwrite(line, 1, format_row(line, s->t, v, (int)(sizeof v / sizeof *v)), fp);
 }
 
 static int sample_finite(const dv_sample *s) {
@@ -19,9 +34,12 @@ static int sample_finite(const dv_sample *s) {
   return isfinite(sum);
 }
 
+/* a row of the forces file: the contact force and the friction it needs */
 static void force_row(FILE *fp, const dv_sample *s) {
   const double *F = s->force;
-  fprintf(fp, "%.12g,%.17g,%.17g,%.17g,%.17g\n", s->t, F[0], F[1], F[2], hypot(F[0], F[1]) / F[2]);
+  const double v[] = {F[0], F[1], F[2], hypot(F[0], F[1]) / F[2]};
+  char line[(1 + sizeof v / sizeof *v) * (DV_FORMAT_SIZE + 1)];
+  fwrite(line, 1, format_row(line, s->t, v, (int)(sizeof v / sizeof *v)), fp);
 }
 
 int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_sink sink,

@@ -54,6 +54,9 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
 void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
                                dv_attribution *out);
 
+/* the largest share in words with its size: "time step (78% of 1.2e-3 rad)" */
+void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
+
 /* probe the engine on the scenario and split its error; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it */
 int dv_search_attribute(const char *scenario_path, const char *const *sets, size_t nsets,

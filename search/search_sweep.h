@@ -62,15 +62,15 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
  * Under mpirun the ranks share the points: rank 0 gets the results, the
  * other ranks return DV_EVENT. */
 int dv_search_sweep_run(const char *scenario_path, const char *const *sets, size_t nsets,
-                 const char *engine, const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out,
-                 dv_error *err);
+                        const char *engine, const dv_vary *vary, size_t nvary, int jobs,
+                        dv_sweep *out, dv_error *err);
 
 void dv_search_sweep_free(dv_sweep *s); /* NULL-safe */
 
 /* one run in this process with the given key=value overrides (section.key) */
 int dv_search_sweep_probe(const char *scenario_path, const char *const *sets, size_t nsets,
-                   const char *engine, const char *const *overrides, size_t n, dv_sweep_point *out,
-                   dv_error *err);
+                          const char *engine, const char *const *overrides, size_t n,
+                          dv_sweep_point *out, dv_error *err);
 
 /* mark the Pareto points (theta_max_err against wall_per_sim_s) among ok points */
 void dv_search_pareto(dv_sweep_point *p, size_t n);
@@ -81,7 +81,8 @@ double dv_search_fit_order(const double *h, const double *err, size_t n);
 
 /* sweep.csv, sweep.json and the plots into the existing dir; reference is an
  * optional sweep of the reference's own integrators drawn on the same axes */
-int dv_search_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *reference, dv_error *err);
+int dv_search_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *reference,
+                          dv_error *err);
 
 /* sweep.csv and sweep.json only (no plots): the checkpoint written under MPI */
 int dv_search_sweep_write_tables(const char *dir, const dv_sweep *s, dv_error *err);

@@ -7,8 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run_meta.h"
+#include "dv_format.h"
 #include "io_file.h"
+#include "io_json.h"
+#include "run_meta.h"
 #include "report_plot.h"
 #include "search_sweep.h"
 
@@ -103,7 +105,7 @@ static int make_curves(const dv_sweep *s, curves *cs) {
   return ok ? 0 : -1;
 }
 
-/* sweep.csv: a row per point */
+/* sweep.csv: a row per point, the metrics exact */
 static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
   dv_io_file out;
   int status = dv_io_open_in(&out, dir, "sweep.csv", err);
@@ -116,14 +118,18 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
     const dv_sweep_point *p = &s->p[i];
     fprintf(out.fp, "%s", s->engine);
     for (size_t v = 0; v < s->nvary; v++) fprintf(out.fp, ",%s", p->values[v]);
-    for (int m = 0; m < DV_NMETRICS; m++) fprintf(out.fp, ",%.9g", p->metric[m]);
-    fprintf(out.fp, ",%.6g,%ld,%s,%d\n", p->wall_per_sim_s, p->steps,
-            dv_run_verdict_name(p->verdict), p->pareto);
+    char num[DV_FORMAT_SIZE];
+    for (int m = 0; m < DV_NMETRICS; m++) {
+      dv_format_double(p->metric[m], num, sizeof num);
+      fprintf(out.fp, ",%s", num);
+    }
+    dv_format_precision(p->wall_per_sim_s, 6, num, sizeof num); /* timing: 6 digits say enough */
+    fprintf(out.fp, ",%s,%ld,%s,%d\n", num, p->steps, dv_run_verdict_name(p->verdict), p->pareto);
   }
   return dv_io_commit(&out, err);
 }
 
-/* sweep.json: the points, and the fitted order of every curve */
+/* sweep.json: the points, and the fitted order of every curve, numbers exact */
 static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_t nc,
                       dv_error *err) {
   cJSON *o = cJSON_CreateObject();
@@ -140,8 +146,8 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     for (size_t v = 0; v < s->nvary; v++)
       cJSON_AddStringToObject(set, s->vary[v].key, p->values[v]);
     for (int m = 0; m < DV_NMETRICS; m++)
-      cJSON_AddItemToObject(q, dv_metric_names[m], dv_io_json_number(p->metric[m]));
-    cJSON_AddItemToObject(q, "wall_per_sim_s", dv_io_json_number(p->wall_per_sim_s));
+      cJSON_AddItemToObject(q, dv_metric_names[m], dv_io_json_double(p->metric[m]));
+    cJSON_AddItemToObject(q, "wall_per_sim_s", dv_io_json_double(p->wall_per_sim_s));
     cJSON_AddNumberToObject(q, "steps", (double)p->steps);
     cJSON_AddStringToObject(q, "outcome", dv_run_verdict_name(p->verdict));
     cJSON_AddStringToObject(q, "detail", p->detail);
@@ -154,7 +160,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     cJSON *q = cJSON_CreateObject();
     cJSON_AddStringToObject(q, "curve", cv[c].label);
     cJSON_AddItemToObject(q, "order",
-                          dv_io_json_number(dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n)));
+                          dv_io_json_double(dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n)));
     cJSON_AddItemToArray(orders, q);
   }
   return dv_io_json_write(dir, "sweep.json", o, err);

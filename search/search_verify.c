@@ -27,21 +27,6 @@ static void extrapolate(dv_verification *v) {
     v->verdict = flat || !isnan(v->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
 }
 
-/* the largest share of an attribution, by name */
-static const char *dominant(const dv_attribution *a) {
-  const struct {
-    const char *name;
-    double v;
-  } s[] = {{"geometry", a->geometry},
-           {"time step", a->time},
-           {"contact softness and slip", a->contact},
-           {"the rest", a->rest}};
-  size_t best = 0;
-  for (size_t i = 1; i < 4; i++)
-    if (fabs(s[i].v) > fabs(s[best].v)) best = i;
-  return s[best].name;
-}
-
 int dv_search_verify(const char *path, const char *const *sets, size_t nsets,
                      const char *engine_name, dv_verification *out, dv_error *err) {
   memset(out, 0, sizeof *out);
@@ -71,6 +56,6 @@ int dv_search_verify(const char *path, const char *const *sets, size_t nsets,
   dv_attribution a;
   const int status = dv_search_attribute(path, sets, nsets, name, &a, err);
   if (status) return status;
-  snprintf(out->cause, sizeof out->cause, "%s", dominant(&a));
+  dv_search_attribute_cause(&a, out->cause, sizeof out->cause);
   return DV_OK;
 }

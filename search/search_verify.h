@@ -41,7 +41,7 @@ typedef struct dv_verification {
   double order;                   /* observed; NAN when the errors do not fall */
   double extrapolated;            /* e(0), rad */
   dv_convergence verdict;
-  char cause[64]; /* converges elsewhere: the dominant share of attribution */
+  char cause[96]; /* converges elsewhere: the dominant share of attribution */
 } dv_verification;
 
 /* refine engine on the scenario and judge its convergence */

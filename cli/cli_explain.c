@@ -1,0 +1,25 @@
+/* cli_explain: the cause of an engine's excess, by attribution (search layer). */
+#include <stdio.h>
+
+#include "cli.h"
+#include "cli_args.h"
+#include "report_suite_run.h"
+#include "search_attribute.h"
+
+/* dv_report_explain's cause: the dominant share of the engine's attribution */
+static int attribute(void *ctx, const dv_scenario *sc, const char *engine, char *out, size_t size) {
+  const dv_cli_list *sets = ctx;
+  dv_attribution a;
+  dv_error err = {{0}};
+  if (dv_search_attribute(sc->path, sets->items, sets->n, engine, &a, &err)) {
+    snprintf(out, size, "unknown (%s)", err.msg);
+    return 0;
+  }
+  dv_search_attribute_cause(&a, out, size);
+  return 0;
+}
+
+void dv_cli_explainer(const dv_cli_list *sets, dv_report_explain *out) {
+  out->cause = attribute;
+  out->ctx = (void *)sets;
+}
