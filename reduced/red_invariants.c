@@ -3,8 +3,12 @@
 #include "red_invariants.h"
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_sf_hyperg.h>
 #include <math.h>
+
+/* within this of lying flat the basis comes from its equation, not from 2F1 (rad) */
+#define BASIS_EDGE 0.06
 
 double red_legendre_k(const red_disk *dk) {
   const double mr2 = dk->m * dk->r * dk->r;
@@ -26,7 +30,8 @@ static int hyp(double k, double shift, double c, double z, double *out) {
   return status == GSL_SUCCESS && isfinite(r.val) ? 0 : -1;
 }
 
-int red_rho_basis(const red_disk *dk, double th, double u[2], double du[2]) {
+/* the basis from GSL's hypergeometric functions, where they converge */
+static int basis_hypergeometric(const red_disk *dk, double th, double u[2], double du[2]) {
   const double s = sin(th), x = cos(th), z = x * x, q = dk->m * dk->r * dk->r / dk->A;
   const double k = red_legendre_k(dk);
   if (!(s > 0.0)) return -1;
@@ -48,6 +53,42 @@ int red_rho_basis(const red_disk *dk, double th, double u[2], double du[2]) {
   u[1] = -q * x * G0;
   du[1] = q * s * (G0 + 2.0 * z * (2.0 / 3.0) * (0.25 * k + 0.5) * G1);
   return 0;
+}
+
+/* rho'' = k rho - cot(theta) rho' for both basis functions: y = (u1, u1', u2, u2') */
+static int legendre(double th, const double y[], double dy[], void *params) {
+  const double k = *(const double *)params, cot = cos(th) / sin(th);
+  dy[0] = y[1];
+  dy[1] = k * y[0] - cot * y[1];
+  dy[2] = y[3];
+  dy[3] = k * y[2] - cot * y[3];
+  return GSL_SUCCESS;
+}
+
+/* near lying flat, where F(a, b; c; z) at z = cos^2 -> 1 has logarithmic terms
+ * (c - a - b = 0 or -1) that GSL's 2F1 refuses: the basis at the edge of
+ * BASIS_EDGE carried to th by the equation it solves (rk8pd, GSL) */
+static int basis_near_flat(const red_disk *dk, double th, double u[2], double du[2]) {
+  const double th0 = th < M_PI_2 ? BASIS_EDGE : M_PI - BASIS_EDGE;
+  double y[4], k = red_legendre_k(dk);
+  if (basis_hypergeometric(dk, th0, u, du)) return -1;
+  y[0] = u[0], y[1] = du[0], y[2] = u[1], y[3] = du[1];
+  gsl_odeiv2_system sys = {legendre, NULL, 4, &k};
+  gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd,
+                                                       th < th0 ? -1e-4 : 1e-4, 1e-14, 1e-14);
+  if (!d) return -1;
+  double t = th0;
+  const int status = gsl_odeiv2_driver_apply(d, &t, th, y);
+  gsl_odeiv2_driver_free(d);
+  u[0] = y[0], du[0] = y[1], u[1] = y[2], du[1] = y[3];
+  return status == GSL_SUCCESS && isfinite(y[0] + y[1] + y[2] + y[3]) ? 0 : -1;
+}
+
+int red_rho_basis(const red_disk *dk, double th, double u[2], double du[2]) {
+  if (!(sin(th) > 0.0)) return -1;
+  if (red_legendre_k(dk) != 0.0 && (th < BASIS_EDGE || th > M_PI - BASIS_EDGE))
+    return basis_near_flat(dk, th, u, du);
+  return basis_hypergeometric(dk, th, u, du);
 }
 
 int red_invariants(const red_disk *dk, const double y[RED_NSTATE], double *f1, double *f2) {
