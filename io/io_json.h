@@ -1,0 +1,14 @@
+/* dv_io_json: JSON numbers as the shortest text that reads back exactly.
+ *
+ * cJSON prints a number with 15 significant digits whenever that lands within
+ * a relative DBL_EPSILON of it, so its text does not always read back to the
+ * same double (0.1 + 0.2 is printed as 0.3); these numbers are printed by
+ * dv_format instead, and NaN and the infinities, which JSON lacks, as null.
+ */
+#ifndef DV_IO_JSON_H
+#define DV_IO_JSON_H
+
+/* a cJSON item (cJSON *) that prints as v exactly, or null when v is not finite */
+void *dv_io_json_double(double v);
+
+#endif
