@@ -13,7 +13,9 @@
 #include "scenario_core.h"
 
 #define MAX_SECTIONS (DV_NCORE_SECTIONS + DV_MAX_ENGINE_SECTIONS)
-#define MAX_SEEN 16  /* section headers remembered for their lines */
+/* distinct known section headers: the core and engine sections, [tolerance]
+ * and one [tolerance.ENGINE] per engine (an unknown one ends the read) */
+#define MAX_SEEN (2 * MAX_SECTIONS + 1)
 #define MAX_KEYS 256 /* keys over every section */
 
 typedef struct parse_ctx {
@@ -33,7 +35,11 @@ typedef struct parse_ctx {
   char seen[MAX_SEEN][64];
   int seen_line[MAX_SEEN];
   int nseen;
+  char *raw; /* getline's buffer */
+  size_t raw_size;
 } parse_ctx;
+
+static int known_section(const parse_ctx *c, const char *name);
 
 static int fail_at(parse_ctx *c, int line, const char *key, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
@@ -53,25 +59,40 @@ static int fail_at(parse_ctx *c, int line, const char *key, const char *fmt, ...
   return -1;
 }
 
-/* inih reader: one line per call, counted; over-long lines are errors */
+/* remember the first line of each section header; an unknown one is an error at once */
+static int see_header(parse_ctx *c, const char *p) {
+  const char *end = strchr(p, ']');
+  char name[64];
+  size_t len = end ? (size_t)(end - p - 1) : 0;
+  if (len >= sizeof name) len = sizeof name - 1;
+  memcpy(name, p + 1, len);
+  name[len] = '\0';
+  for (int i = 0; i < c->nseen; i++)
+    if (!strcmp(c->seen[i], name)) return 0;
+  if (!known_section(c, name) || c->nseen == MAX_SEEN)
+    return fail_at(c, c->line, name, "unknown section [%s]", name);
+  memcpy(c->seen[c->nseen], name, sizeof name);
+  c->seen_line[c->nseen++] = c->line;
+  return 0;
+}
+
+/* inih reader: one line per call, counted; over-long lines, NUL bytes and
+ * unknown sections are errors; a UTF-8 byte order mark on line 1 is skipped */
 static char *read_line(char *buf, int size, void *stream) {
   parse_ctx *c = stream;
-  if (!fgets(buf, size, c->file)) return NULL;
+  const ssize_t got = getline(&c->raw, &c->raw_size, c->file);
+  if (got < 0) return NULL;
   c->line++;
-  size_t n = strlen(buf);
-  if (n + 1 == (size_t)size && buf[n - 1] != '\n' && !feof(c->file)) {
-    fail_at(c, c->line, "syntax", "line longer than %d characters", size - 2);
-    return NULL;
-  }
+  const char *text = c->raw;
+  size_t n = (size_t)got;
+  if (c->line == 1 && n >= 3 && !memcmp(text, "\xef\xbb\xbf", 3)) text += 3, n -= 3;
+  if (strlen(text) != n)
+    return fail_at(c, c->line, "syntax", "a NUL byte inside the line"), NULL;
+  if (n + 1 > (size_t)size)
+    return fail_at(c, c->line, "syntax", "line longer than %d characters", size - 2), NULL;
+  memcpy(buf, text, n + 1);
   const char *p = buf + strspn(buf, " \t");
-  if (*p == '[' && c->nseen < MAX_SEEN) {
-    const char *end = strchr(p, ']');
-    size_t len = end ? (size_t)(end - p - 1) : 0;
-    if (len >= sizeof c->seen[0]) len = sizeof c->seen[0] - 1;
-    memcpy(c->seen[c->nseen], p + 1, len);
-    c->seen[c->nseen][len] = '\0';
-    c->seen_line[c->nseen++] = c->line;
-  }
+  if (*p == '[' && see_header(c, p)) return NULL;
   return buf;
 }
 
@@ -271,6 +292,7 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
 
 cleanup:
   if (c->file) fclose(c->file);
+  free(c->raw);
   free(c);
   return status;
 }

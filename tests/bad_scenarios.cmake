@@ -32,11 +32,12 @@ set(_dv_bad_subdir ${CMAKE_CURRENT_BINARY_DIR}/bad_scenario_directory.ini)
 file(MAKE_DIRECTORY ${_dv_bad_subdir})
 
 add_test(NAME bad/valid COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid.ini.txt --valid)
+add_test(NAME bad/valid_bom_repeats COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid_bom_repeats.ini.txt --valid)
 add_test(NAME bad/directory COMMAND ${_dv_bad_check} ${_dv_bad_subdir})
 add_test(NAME bad/unreadable COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid.ini.txt --unreadable)
 add_test(NAME bad/empty COMMAND ${_dv_bad_check} ${_dv_bad_dir}/empty.ini.txt --empty)
 add_test(NAME bad/binary COMMAND ${_dv_bad_check} ${_dv_bad_dir}/binary.ini.bin --binary)
-list(APPEND _dv_bad_tests bad/valid bad/directory bad/unreadable bad/empty bad/binary)
+list(APPEND _dv_bad_tests bad/valid bad/valid_bom_repeats bad/directory bad/unreadable bad/empty bad/binary)
 
 # the driver itself limits each run to 20 s (plus 5 s to kill)
 set_tests_properties(${_dv_bad_tests} PROPERTIES LABELS bad TIMEOUT 40)
