@@ -23,6 +23,7 @@
 #define DV_MAX_TOLERANCES 32
 #define DV_MAX_ENGINE_SECTIONS 8
 #define DV_SETTINGS_BYTES 256 /* the largest engine settings struct */
+#define DV_DERIVED_BYTES 320  /* why an engine's derived settings are what they are */
 
 /* what a scenario name may hold: it names the report's directory, so it is
  * one path component of these characters, and not "." or ".." */
@@ -82,6 +83,10 @@ typedef struct dv_scenario {
   size_t nsections;
   const dv_settings_section *sections[DV_MAX_ENGINE_SECTIONS];
   dv_settings_block settings[DV_MAX_ENGINE_SECTIONS];
+  /* settings a section's check derived (a default of NAN: not given): one
+   * line saying why, per section ("" when nothing was derived) */
+  char derived[DV_MAX_ENGINE_SECTIONS][DV_DERIVED_BYTES];
+  unsigned derived_keys[DV_MAX_ENGINE_SECTIONS]; /* bit i: the section's key i was derived */
 } dv_scenario;
 
 /* engines: NULL-terminated, at most DV_MAX_ENGINE_SECTIONS, each named after
@@ -107,6 +112,19 @@ int dv_scenario_set(dv_scenario *sc, const char *engine, const char *key, const 
                     dv_error *err);
 int dv_scenario_set_number(dv_scenario *sc, const char *engine, const char *key, double v,
                            dv_error *err);
+
+/* why engine's derived settings are what they are ("timestep 5e-05 s: wobble
+ * period 0.04 s / 800, ..."), as its section's check wrote it; "" when the
+ * scenario gave them or the engine derives none. Setting one of those keys
+ * afterwards (dv_scenario_set*) clears it: the line no longer describes them. */
+const char *dv_scenario_derived(const dv_scenario *sc, const char *engine);
+
+/* 1 when [engines.ENGINE] key was derived (and not set since), else 0 */
+int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char *key);
+
+/* for a section's check: record why, naming the keys derived (NULL-terminated) */
+void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,
+                             const char *why);
 
 /* the limit on metric for engine: [tolerance.ENGINE], else [tolerance], else INFINITY */
 double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric);

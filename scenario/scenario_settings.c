@@ -1,5 +1,6 @@
 /* scenario_settings: an engine's settings in a scenario, by name. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "scenario.h"
@@ -39,7 +40,12 @@ static int set(dv_scenario *sc, const char *engine, const char *key, const char 
   if (!sp) return dv_fail(err, DV_EINPUT, "engines.%s.%s: no such setting", engine, key);
   const int bad = text ? dv_setting_parse(sp, text, &sc->settings[i], what, sizeof what)
                        : dv_setting_store(sp, v, &sc->settings[i], what, sizeof what);
-  return bad ? dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what) : DV_OK;
+  if (bad) return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what);
+  if (dv_scenario_is_derived(sc, engine, key)) { /* the reason no longer holds */
+    sc->derived[i][0] = '\0';
+    sc->derived_keys[i] = 0;
+  }
+  return DV_OK;
 }
 
 int dv_scenario_set(dv_scenario *sc, const char *engine, const char *key, const char *text,
@@ -50,6 +56,32 @@ int dv_scenario_set(dv_scenario *sc, const char *engine, const char *key, const 
 int dv_scenario_set_number(dv_scenario *sc, const char *engine, const char *key, double v,
                            dv_error *err) {
   return set(sc, engine, key, NULL, v, err);
+}
+
+const char *dv_scenario_derived(const dv_scenario *sc, const char *engine) {
+  const int i = find(sc, engine);
+  return i < 0 ? "" : sc->derived[i];
+}
+
+/* bit of key in engine's table section i (0 when it has none) */
+static unsigned key_bit(const dv_scenario *sc, int i, const char *key) {
+  const dv_setting_spec *sp = dv_settings_find(sc->sections[i], key);
+  const size_t k = sp ? (size_t)(sp - sc->sections[i]->specs) : 32;
+  return k < 32 ? 1u << k : 0u;
+}
+
+int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char *key) {
+  const int i = find(sc, engine);
+  return i >= 0 && (sc->derived_keys[i] & key_bit(sc, i, key)) != 0;
+}
+
+void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,
+                             const char *why) {
+  const int i = find(sc, engine);
+  if (i < 0) return;
+  sc->derived_keys[i] = 0;
+  for (size_t k = 0; keys && keys[k]; k++) sc->derived_keys[i] |= key_bit(sc, i, keys[k]);
+  snprintf(sc->derived[i], sizeof sc->derived[i], "%s", why ? why : "");
 }
 
 double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric) {
