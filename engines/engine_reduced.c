@@ -87,7 +87,7 @@ static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) 
   if (theta > s->theta_limit && theta < M_PI - s->theta_limit) return 0;
   issue->section = "initial";
   issue->key = "theta";
-  snprintf(issue->what, sizeof issue->what, "%.17g is outside (%.17g, %.17g), the lying-down limits", theta,
+  snprintf(issue->what, sizeof issue->what, "%.15g is outside (%.15g, %.15g), the lying-down limits", theta,
            s->theta_limit, M_PI - s->theta_limit);
   return -1;
 }

@@ -82,13 +82,13 @@ static int check_disk(dv_scenario *sc, void *block, dv_setting_issue *is) {
   /* a tiny radius or mass can make the derived moments underflow to zero */
   if (!(d->A > 0.0) || !isfinite(d->A))
     return issue(is, "disk", given_a ? "A" : "radius",
-                 given_a ? "A = %.17g must be a positive finite number"
-                         : "A = m r^2 / 4 = %.17g (derived from the radius and mass) is not a "
+                 given_a ? "A = %.15g must be a positive finite number"
+                         : "A = m r^2 / 4 = %.15g (derived from the radius and mass) is not a "
                            "positive finite number",
                  d->A);
   if (d->C > 2.0 * d->A * (1.0 + 1e-15))
     return issue(is, "disk", given_c ? "C" : "A",
-                 "C = %.17g exceeds 2A = %.17g: no rigid body has these moments", d->C, 2.0 * d->A);
+                 "C = %.15g exceeds 2A = %.15g: no rigid body has these moments", d->C, 2.0 * d->A);
   return 0;
 }
 

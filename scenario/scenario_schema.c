@@ -32,7 +32,7 @@ static int parse_number(const char *text, double *out) {
 }
 
 void dv_setting_range_text(const dv_setting_spec *spec, char *buf, size_t size) {
-  snprintf(buf, size, "%s%.17g, %.17g%s", spec->flags & DV_SETTING_OPEN_LO ? "(" : "[", spec->lo,
+  snprintf(buf, size, "%s%.15g, %.15g%s", spec->flags & DV_SETTING_OPEN_LO ? "(" : "[", spec->lo,
            spec->hi, spec->flags & DV_SETTING_OPEN_HI ? ")" : "]");
 }
 
@@ -47,7 +47,7 @@ int dv_setting_store(const dv_setting_spec *spec, double v, void *block, char *w
     return snprintf(what, size, "%g is not the index of a choice", v), -1;
   if (spec->type != DV_SETTING_CHOICE && (!ok_lo || !ok_hi)) {
     dv_setting_range_text(spec, range, sizeof range);
-    return snprintf(what, size, "%.17g is outside %s", v, range), -1;
+    return snprintf(what, size, "%.15g is outside %s", v, range), -1;
   }
   char *field = (char *)block + spec->offset;
   if (spec->type == DV_SETTING_REAL)
