@@ -172,6 +172,8 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
   for (size_t i = 0; i < mp->c->n; i++)
     if (!(value(mp->c, i) > 0.0 && value(mp->c, i) <= 0.5))
       return dv_cli_usage_error("map", "--c: C / (m r^2) must lie in (0, 0.5] (C <= 2A)");
+  if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err)) /* a bad --out fails at once */
+    return dv_cli_error("map", "%s", err.msg);
   const size_t n = mp->nengines * mp->c->n * mp->spin->n;
   cell *cells = calloc(n, sizeof *cells);
   if (!cells) return dv_cli_error("map", "out of memory");
@@ -182,7 +184,7 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
     free(cells);
     return DV_EXIT_OK;
   }
-  if (pool != 0 || dv_io_make_dirs(out, &err) || write_outputs(out, mp, cells, &err))
+  if (pool != 0 || write_outputs(out, mp, cells, &err))
     code = dv_cli_error("map", "%s", err.msg[0] ? err.msg : "stopped early");
   else
     printf("map: %zu cells x %zu engines: %s/map.csv, %s/map_<engine>.svg\n",

@@ -88,11 +88,10 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
     if (dv_search_vary_parse(specs->items[v], engine->name, &vary[v], &err) ||
         check_values(scenario, sets, &vary[v], &err))
       return dv_cli_error("sweep", "%s", err.msg);
-  if (dv_exec_mpi_size() > 1) { /* rank 0 keeps the tables current as results arrive */
-    if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err))
-      return dv_cli_error("sweep", "%s", err.msg);
-    s->checkpoint_dir = out;
-  }
+  /* the output directory before any run: a bad --out fails at once */
+  if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err))
+    return dv_cli_error("sweep", "%s", err.msg);
+  if (dv_exec_mpi_size() > 1) s->checkpoint_dir = out; /* rank 0 keeps the tables current */
   if (dv_search_sweep_run(scenario, sets->items, sets->n, engine->name, vary, specs->n, jobs, s,
                           &err) < 0)
     return dv_cli_error("sweep", "%s", err.msg);
@@ -101,7 +100,7 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
   if (with_ref && reference_curves(scenario, sets, jobs, ref, &err) < 0)
     return dv_cli_error("sweep", "reference: %s", err.msg);
   if (dv_exec_mpi_rank() != 0) return DV_EXIT_OK; /* rank 0 writes */
-  if (dv_io_make_dirs(out, &err) || dv_search_sweep_write(out, s, with_ref ? ref : NULL, &err))
+  if (dv_search_sweep_write(out, s, with_ref ? ref : NULL, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   print_points(s);
   printf("sweep: %s/sweep.csv, %s/work_precision.svg\n", out, out);

@@ -104,5 +104,11 @@ int dv_io_make_dirs(const char *path, dv_error *err) {
     *p = c;
     if (!c) break;
   }
+  /* an existing file of another kind, or a directory nothing can be written into */
+  struct stat st;
+  if (stat(buf, &st) || !S_ISDIR(st.st_mode))
+    return dv_fail(err, DV_ESYSTEM, "%s: not a directory", buf);
+  if (access(buf, W_OK | X_OK))
+    return dv_fail(err, DV_ESYSTEM, "%s: cannot write into it: %s", buf, strerror(errno));
   return DV_OK;
 }
