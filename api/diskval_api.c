@@ -1,0 +1,247 @@
+/* diskval_api: the public C API (include/diskval/diskval.h) over the run,
+ * engines and scenario layers. Only the diskval_* functions are exported. */
+#include "diskval/diskval.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "run_scenario.h"
+#include "run_trajectory.h"
+
+_Static_assert(DV_NMETRICS <= DISKVAL_MAX_METRICS, "DISKVAL_MAX_METRICS too small");
+_Static_assert(sizeof(diskval_error) == sizeof(dv_error), "diskval_error is a dv_error");
+_Static_assert(DISKVAL_EINPUT == DV_EINPUT && DISKVAL_ENUMERIC == DV_ENUMERIC &&
+                   DISKVAL_ESYSTEM == DV_ESYSTEM && DISKVAL_EVENT == DV_EVENT,
+               "the same status codes");
+
+struct diskval_scenario {
+  dv_scenario sc;
+};
+
+struct diskval_trajectory {
+  dv_traj traj;
+  dv_engine_stats stats;
+};
+
+/* the internal error buffer of err (the same layout), or NULL */
+static dv_error *as_dv(diskval_error *err) {
+  return (dv_error *)err;
+}
+
+/* the library's version */
+const char *diskval_version(void) {
+  return DISKVAL_VERSION;
+}
+
+/* load a scenario file against every engine's settings table */
+int diskval_scenario_load(const char *path, const char *const *overrides, size_t n,
+                          diskval_scenario **out, diskval_error *err) {
+  if (!path || !out || (n && !overrides))
+    return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_load: NULL argument");
+  diskval_scenario *s = calloc(1, sizeof *s);
+  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  const int status = dv_engine_load_scenario(path, overrides, n, &s->sc, as_dv(err));
+  if (status < 0) {
+    free(s);
+    return status;
+  }
+  *out = s;
+  return DV_OK;
+}
+
+/* a scenario from code: defaults for every engine, the given disk, state and times */
+int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
+                         double duration, double output_dt, diskval_scenario **out,
+                         diskval_error *err) {
+  if (!disk || !initial || !out)
+    return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_new: NULL argument");
+  if (!(disk->radius > 0) || !(disk->mass > 0) || !(disk->gravity >= 0) ||
+      !isfinite(disk->radius) || !isfinite(disk->mass) || !isfinite(disk->gravity))
+    return dv_fail(as_dv(err), DV_EINPUT, "disk: radius and mass must be > 0, gravity >= 0");
+  if (!(duration > 0) || !isfinite(duration) || !(output_dt > 0) || output_dt > duration)
+    return dv_fail(as_dv(err), DV_EINPUT, "times: need 0 < output_dt <= duration");
+  if (!(initial->theta > 0 && initial->theta < M_PI))
+    return dv_fail(as_dv(err), DV_EINPUT, "initial: theta must be in (0, pi)");
+  char what[128];
+  const char *nm = name && name[0] ? name : "scenario";
+  if (strlen(nm) >= sizeof((dv_scenario *)0)->name || dv_scenario_check_name(nm, what, sizeof what))
+    return dv_fail(as_dv(err), DV_EINPUT, "name: '%s' is not a scenario name", nm);
+  diskval_scenario *s = calloc(1, sizeof *s);
+  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  dv_scenario *sc = &s->sc;
+  dv_engine_init_scenario(sc);
+  snprintf(sc->name, sizeof sc->name, "%s", nm);
+  sc->duration = duration;
+  sc->output_dt = output_dt;
+  sc->disk = red_disk_uniform(disk->radius, disk->mass, disk->gravity);
+  if (disk->A > 0 || disk->C > 0) {
+    sc->disk.A = disk->A;
+    sc->disk.C = disk->C;
+  }
+  sc->init_mode = DV_INIT_STATE;
+  sc->steady_circle_radius = NAN;
+  sc->steady_phi_dot = NAN;
+  const double y[RED_NSTATE] = {[RED_TH] = initial->theta,    [RED_VTH] = initial->theta_dot,
+                                [RED_VPH] = initial->phi_dot, [RED_VPS] = initial->psi_dot,
+                                [RED_PH] = initial->phi,      [RED_PS] = initial->psi,
+                                [RED_X] = initial->x,         [RED_Y] = initial->y};
+  memcpy(sc->initial, y, sizeof y);
+  *out = s;
+  return DV_OK;
+}
+
+/* set one engine setting, checked as at load */
+int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *key,
+                         const char *value, diskval_error *err) {
+  if (!sc || !engine || !key || !value)
+    return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_set: NULL argument");
+  return dv_scenario_set(&sc->sc, engine, key, value, as_dv(err));
+}
+
+/* the scenario's name */
+const char *diskval_scenario_name(const diskval_scenario *sc) {
+  return sc ? sc->sc.name : "";
+}
+
+/* the scenario's duration, s */
+double diskval_scenario_duration(const diskval_scenario *sc) {
+  return sc ? sc->sc.duration : NAN;
+}
+
+/* copy a canonical state into the public layout */
+static void state_out(const double y[RED_NSTATE], diskval_state *out) {
+  *out = (diskval_state){y[RED_TH], y[RED_VTH], y[RED_VPH], y[RED_VPS],
+                         y[RED_PH], y[RED_PS],  y[RED_X],   y[RED_Y]};
+}
+
+/* the scenario's resolved initial state */
+void diskval_scenario_initial(const diskval_scenario *sc, diskval_state *out) {
+  if (sc && out) state_out(sc->sc.initial, out);
+}
+
+/* free a scenario */
+void diskval_scenario_free(diskval_scenario *sc) {
+  free(sc);
+}
+
+/* the name of engine i of the registry */
+const char *diskval_engine_name(size_t i) {
+  for (size_t k = 0; dv_engines[k]; k++)
+    if (k == i) return dv_engines[k]->name;
+  return NULL;
+}
+
+/* the engine called name, or NULL with err set */
+static const dv_engine_type *find_engine(const char *name, diskval_error *err) {
+  const dv_engine_type *e = name ? dv_engine_find(name) : NULL;
+  if (!e) dv_fail(as_dv(err), DV_EINPUT, "unknown engine '%s'", name ? name : "(null)");
+  return e;
+}
+
+/* dv_run_collect's sink: append the sample */
+static int push(void *ctx, const dv_sample *s) {
+  return dv_run_traj_push(ctx, s);
+}
+
+/* run engine over sc into a new trajectory */
+int diskval_run(const diskval_scenario *sc, const char *engine, diskval_trajectory **out,
+                diskval_error *err) {
+  if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_run: NULL argument");
+  const dv_engine_type *e = find_engine(engine, err);
+  if (!e) return DV_EINPUT;
+  diskval_trajectory *tr = calloc(1, sizeof *tr);
+  if (!tr) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  const int status = dv_run_collect(e, &sc->sc, push, &tr->traj, &tr->stats, as_dv(err));
+  if (status < 0) {
+    diskval_trajectory_free(tr);
+    return status;
+  }
+  *out = tr;
+  return status;
+}
+
+/* the number of samples */
+size_t diskval_trajectory_size(const diskval_trajectory *tr) {
+  return tr ? tr->traj.n : 0;
+}
+
+/* sample i in the public layout */
+int diskval_trajectory_sample(const diskval_trajectory *tr, size_t i, diskval_sample *out) {
+  if (!tr || !out || i >= tr->traj.n) return -1;
+  const dv_sample *s = &tr->traj.s[i];
+  out->t = s->t;
+  state_out(s->y, &out->state);
+  out->contact_x = s->contact[0];
+  out->contact_y = s->contact[1];
+  out->energy = s->energy;
+  return 0;
+}
+
+/* free a trajectory */
+void diskval_trajectory_free(diskval_trajectory *tr) {
+  if (!tr) return;
+  dv_run_traj_free(&tr->traj);
+  free(tr);
+}
+
+/* copy metrics into the public layout */
+static void metrics_out(const dv_metrics *m, diskval_metrics *out) {
+  memset(out, 0, sizeof *out);
+  out->n = DV_NMETRICS;
+  for (size_t i = 0; i < DV_NMETRICS; i++) {
+    out->name[i] = dv_metric_names[i];
+    out->value[i] = m->value[i];
+  }
+  for (size_t i = DV_NMETRICS; i < DISKVAL_MAX_METRICS; i++) out->value[i] = NAN;
+  out->n_window = m->n_window;
+  out->t_window = m->t_window;
+}
+
+/* metrics of one trajectory against another */
+int diskval_compare_trajectories(const diskval_trajectory *engine,
+                                 const diskval_trajectory *reference, diskval_metrics *out,
+                                 diskval_error *err) {
+  if (!engine || !reference || !out)
+    return dv_fail(as_dv(err), DV_EINPUT, "diskval_compare_trajectories: NULL argument");
+  if (engine->traj.n == 0 || reference->traj.n == 0)
+    return dv_fail(as_dv(err), DV_EINPUT, "an empty trajectory");
+  dv_metrics m;
+  dv_run_compare(&engine->traj, &reference->traj, INFINITY, &m);
+  metrics_out(&m, out);
+  return DV_OK;
+}
+
+/* run engine on sc and judge it against its reference */
+int diskval_compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
+                    diskval_error *err) {
+  if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_compare: NULL argument");
+  const dv_engine_type *e[2] = {find_engine(engine, err), NULL};
+  if (!e[0]) return DV_EINPUT;
+  dv_comparison *c = calloc(1, sizeof *c);
+  if (!c) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  const int status = dv_run_scenario(&sc->sc, NULL, e, 1, c, as_dv(err));
+  if (status >= 0) {
+    const dv_engine_result *r = &c->r[0];
+    memset(out, 0, sizeof *out);
+    out->pass = r->pass;
+    snprintf(out->verdict, sizeof out->verdict, "%s", dv_run_verdict_name(r->verdict));
+    snprintf(out->decided, sizeof out->decided, "%s", r->decided);
+    metrics_out(&r->vs_ref, &out->metrics);
+    for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++)
+      out->limit[i] = i < DV_NMETRICS ? r->tolerance[i] : NAN;
+    out->wall_s = r->wall_s;
+  }
+  dv_run_comparison_free(c);
+  free(c);
+  return status < 0 ? status : DV_OK;
+}
+
+/* a metric's value by name */
+double diskval_metric(const diskval_metrics *m, const char *name) {
+  if (!m || !name) return NAN;
+  for (size_t i = 0; i < m->n && i < DISKVAL_MAX_METRICS; i++)
+    if (m->name[i] && strcmp(m->name[i], name) == 0) return m->value[i];
+  return NAN;
+}
