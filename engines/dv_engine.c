@@ -47,6 +47,16 @@ void dv_engine_init_scenario(dv_scenario *sc) {
   dv_scenario_init(sc, t);
 }
 
+int dv_engine_derive_settings(dv_scenario *sc, dv_error *err) {
+  for (size_t i = 0; i < sc->nsections; i++) {
+    dv_setting_issue issue = {0};
+    const dv_settings_section *sec = sc->sections[i];
+    if (sec->check && sec->check(sc, &sc->settings[i], &issue))
+      return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", issue.section, issue.key, issue.what);
+  }
+  return DV_OK;
+}
+
 int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max,
                          dv_error *err) {
   char buf[256];
@@ -62,16 +72,6 @@ int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_
   if (!n) return dv_fail(err, DV_EINPUT, "no engine in '%s'", list);
   engines[n] = NULL;
   return DV_OK;
-}
-
-int dv_engine_check_step(const dv_scenario *sc, const char *engine, double dt,
-                         dv_setting_issue *issue) {
-  if (!(dt > sc->output_dt * (1.0 + 1e-12))) return 0;
-  issue->section = engine;
-  issue->key = "timestep";
-  snprintf(issue->what, sizeof issue->what, "%g s is longer than output_dt %g s", dt,
-           sc->output_dt);
-  return -1;
 }
 
 const char *dv_failure_name(dv_failure failure) {

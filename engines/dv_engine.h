@@ -141,16 +141,19 @@ double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario 
 int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
                             dv_scenario *sc, dv_error *err);
 
-/* a scenario with every engine's settings at their defaults (for code) */
+/* a scenario with every engine's settings at their defaults (for code); those
+ * derived from the scene (NAN) stay NAN and each engine derives them from
+ * the scenario it is given, unless dv_engine_derive_settings fills them */
 void dv_engine_init_scenario(dv_scenario *sc);
+
+/* run every engine's section check on sc, as a load does: the settings it
+ * leaves to the scene (NAN) derived, with their reasons (dv_scenario_derived);
+ * for scenarios built in code, once their disk, state and times are set */
+int dv_engine_derive_settings(dv_scenario *sc, dv_error *err);
 
 /* parse "mujoco,ode" into engines (NULL-terminated, at most max - 1) */
 int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max,
                          dv_error *err);
-
-/* the section check shared by the stepping engines: a step no longer than output_dt */
-int dv_engine_check_step(const dv_scenario *sc, const char *engine, double dt,
-                         dv_setting_issue *issue);
 
 /* fill the sample's derived fields (contact, energy, slip, penetration) from a
  * pose and geometry; used by the contact engines */

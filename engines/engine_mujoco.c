@@ -29,9 +29,11 @@
 #include "dv_pose.h"
 #include "dv_reference.h"
 #include "engine_mujoco_thin.h"
+#include "engine_scene.h"
 
 /* [engines.mujoco]: the defaults are the most accurate affordable settings
- * measured (README, "Engine settings"), not MuJoCo's own */
+ * measured (README, "Engine settings"), not MuJoCo's own; the timestep and
+ * the contact time constant follow from the scene (MODELS below) */
 typedef struct mujoco_settings {
   double timestep;                               /* s */
   int integrator;                                /* 0 euler, 1 rk4, 2 implicit */
@@ -61,7 +63,8 @@ enum { GEOM_THIN, GEOM_CYLINDER, GEOM_ELLIPSOID }; /* GEOMS' indices */
 #define PICK DV_SETTING_CHOICE, AT
 
 static const dv_setting_spec KEYS[] = {
-    {"timestep", NUM(timestep), 0, 0, 2e-4, 1e-7, 0.1, NULL, NULL, "s", ""},
+    {"timestep", NUM(timestep), 0, 0, NAN, 1e-7, 0.1, NULL, NULL, "s",
+     "default: from the scene's time scales"},
     {"integrator", PICK(integrator), 0, 0, 1, 0, 2, INTEGRATORS, NULL, "", ""},
     {"cone", PICK(cone), 0, 0, 1, 0, 1, CONES, NULL, "", "friction cone"},
     {"impratio", NUM(impratio), 0, 0, 10.0, 1e-6, 1e6, NULL, NULL, "", ""},
@@ -69,8 +72,8 @@ static const dv_setting_spec KEYS[] = {
     {"tolerance", NUM(tolerance), 0, 0, 1e-10, 0.0, 1.0, NULL, NULL, "", "solver tolerance"},
     {"iterations", WHOLE(iterations), 0, 0, 100, 1, 100000, NULL, NULL, "", "solver"},
     {"noslip_iterations", WHOLE(noslip_iterations), 0, 0, 0, 0, 100000, NULL, NULL, "", ""},
-    {"solref_timeconst", NUM(solref_timeconst), 0, 0, 4e-4, 1e-7, 10.0, NULL, NULL, "s",
-     "raised by MuJoCo to >= 2 timestep"},
+    {"solref_timeconst", NUM(solref_timeconst), 0, 0, NAN, 1e-7, 10.0, NULL, NULL, "s",
+     "raised by MuJoCo to >= 2 timestep; default: from the scene's time scales"},
     {"solref_dampratio", NUM(solref_dampratio), 0, 0, 1.0, 0.0, 100.0, NULL, NULL, "", ""},
     {"solimp_dmin", NUM(solimp_dmin), 0, 0, 0.9, 0.0001, 0.9999, NULL, NULL, "", ""},
     {"solimp_dmax", NUM(solimp_dmax), 0, 0, 0.95, 0.0001, 0.9999, NULL, NULL, "", ""},
@@ -82,8 +85,37 @@ static const dv_setting_spec KEYS[] = {
      "cylinder half-length or ellipsoid semi-axis"},
 };
 
+/* The error model of engine_scene.h per integrator, h the contact time
+ * constant at 2 timesteps: the theta error is first order in it (RK4's own
+ * step error is far below), and MuJoCo raises a shorter one to 2 timesteps.
+ * c is the largest err T^2 / (h D) measured on the shipped scenarios (thin
+ * disk, whole validity window, T the shortest time scale, D the duration):
+ * RK4 at h = 1.25e-4 s (x4 steps give x4 errors: first order): nonuniform
+ * 0.0265 (its wobble's phase), euler_disk 0.018, falling 0.0030, steady_steep
+ * 0.0018, fast_spin 0.0017, steady_circle 9.0e-4, small_c 6.3e-4,
+ * critical_above 4.9e-6, upright_stable 1.0e-6; Euler and implicit 15-60x
+ * more (nonuniform 0.41, 0.38; steady_circle 0.054, 0.052). Cost of a step
+ * (./run.sh bench): Euler 3 us, RK4 9 us, implicit 4 us. */
+static const dv_step_model MODELS[] = {
+    {0.41, 2.0, "solref_timeconst", 3e-6},
+    {0.027, 2.0, "solref_timeconst", 9e-6},
+    {0.41, 2.0, "solref_timeconst", 4e-6},
+};
+
+/* fill the timestep and time constant s leaves to the scene; why as dv_engine_derive_step */
+static void derive(const dv_scenario *sc, mujoco_settings *s, char *why, size_t size,
+                   const char **keys) {
+  dv_engine_derive_step(sc, &MODELS[s->integrator], &s->timestep, &s->solref_timeconst, why, size,
+                        keys);
+}
+
 static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
-  return dv_engine_check_step(sc, "mujoco", ((const mujoco_settings *)block)->timestep, issue);
+  char why[DV_DERIVED_BYTES];
+  const char *keys[4];
+  (void)issue;
+  derive(sc, block, why, sizeof why, keys);
+  dv_scenario_set_derived(sc, "mujoco", keys, why);
+  return 0;
 }
 
 static const dv_settings_section SETTINGS = {"mujoco", KEYS, sizeof KEYS / sizeof KEYS[0],
@@ -103,7 +135,8 @@ static double mujoco_half_thickness(const dv_scenario *sc) {
 static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02, NULL};
 
 /* MuJoCo raises the solref time constant to 2 timesteps */
-static const dv_engine_contact CONTACT = {"geom", "thin", "solref_timeconst", 0.25, 2.0, "friction"};
+static const dv_engine_contact CONTACT = {"geom", "thin", "solref_timeconst",
+                                          0.25,   2.0,    "friction"};
 
 #define LOST_CONTACT_TIME 0.05 /* s the lowest point may stay above the gap before lost_contact */
 
@@ -186,10 +219,9 @@ static const char *mujoco_version(void) {
 
 /* the MJCF model of the scene; returns its length, or -1 if it did not fit. The disk geom's
  * user value marks the thin disk for engine_mujoco_thin.c */
-static int write_model(const dv_scenario *sc, char *xml, size_t size) {
+static int write_model(const dv_scenario *sc, const mujoco_settings *s, char *xml, size_t size) {
   static const char *const MJ_INTEGRATORS[] = {"Euler", "RK4", "implicit"};
   static const char *const MJ_SOLVERS[] = {"PGS", "CG", "Newton"};
-  const mujoco_settings *s = settings_of(sc);
   const red_disk *k = &sc->disk;
   char size_attr[96];
   if (s->geom == GEOM_ELLIPSOID)
@@ -249,13 +281,17 @@ static void mujoco_free(void *p) {
   free(e);
 }
 
-/* the model compiled from the scenario */
+/* the model compiled from the scenario (settings it leaves to the scene, as in
+ * a scenario built in code, derived here) */
 static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
   mujoco_engine *e = calloc(1, sizeof *e), *result = NULL;
   mjVFS *vfs = calloc(1, sizeof *vfs); /* ~2 MB: not on the stack; empty when zeroed */
   load_call call = {vfs, NULL, ""};
   char xml[2048], msg[300];
-  const int len = write_model(sc, xml, sizeof xml);
+  mujoco_settings set = *settings_of(sc);
+  const mujoco_settings *s = &set;
+  derive(sc, &set, NULL, 0, NULL);
+  const int len = write_model(sc, s, xml, sizeof xml);
   int idx = -1;
   if (!e || !vfs) {
     dv_fail(err, DV_ESYSTEM, "out of memory");
@@ -281,7 +317,6 @@ static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
     goto cleanup;
   }
   e->disk = sc->disk;
-  const mujoco_settings *s = settings_of(sc);
   /* a cylinder with h = 0 has rho = r d: the thin disk */
   e->geom = (dv_geometry){s->geom == GEOM_ELLIPSOID ? DV_SHAPE_ELLIPSOID : DV_SHAPE_CYLINDER,
                           sc->disk.r, s->geom == GEOM_THIN ? 0.0 : s->half_thickness};

@@ -28,6 +28,9 @@ static void test_round_trip(void) {
   };
   dv_scenario sc;
   scenario(&sc);
+  /* the settings left to the scene derived from the first state, as a load does */
+  memcpy(sc.initial, states[0], sizeof sc.initial);
+  CHECK(dv_engine_derive_settings(&sc, NULL) == DV_OK, "derive settings");
   /* the body's geometry: the thin disk by default, a cylinder with h = 0 */
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc.disk.r,
                             dv_engine_half_thickness(&dv_engine_ode, &sc)};
