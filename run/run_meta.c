@@ -33,6 +33,19 @@ void *dv_run_meta_settings(const dv_engine_type *engine, const dv_scenario *sc) 
   return o;
 }
 
+/* the settings of engine sc derived from the scene, and why: {"keys": [...],
+ * "reason": "..."}; null when the scenario gave them all */
+static cJSON *derived(const dv_engine_type *engine, const dv_scenario *sc) {
+  const char *why = dv_scenario_derived(sc, engine->name);
+  if (!why[0] || !engine->settings) return cJSON_CreateNull();
+  cJSON *o = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(o, "keys");
+  for (size_t i = 0; i < engine->settings->nspecs; i++)
+    if (dv_scenario_is_derived(sc, engine->name, engine->settings->specs[i].key))
+      cJSON_AddItemToArray(keys, cJSON_CreateString(engine->settings->specs[i].key));
+  cJSON_AddStringToObject(o, "reason", why);
+  return o;
+}
+
 void *dv_io_json_number(double v) {
   return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
 }
@@ -60,6 +73,7 @@ int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_s
   cJSON_AddStringToObject(o, "engine", engine->name);
   cJSON_AddStringToObject(o, "version", engine->version());
   cJSON_AddItemToObject(o, "settings", dv_run_meta_settings(engine, sc));
+  cJSON_AddItemToObject(o, "derived", derived(engine, sc));
   cJSON *s = cJSON_AddObjectToObject(o, "run");
   cJSON_AddStringToObject(s, "outcome", dv_outcome_name(st->outcome));
   cJSON_AddStringToObject(s, "detail", st->detail);

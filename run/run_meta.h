@@ -16,7 +16,9 @@ void *dv_io_json_number(double v);
  * json (a cJSON *), which is deleted */
 int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *err);
 
-/* write path atomically: scenario, engine, version, settings, stats */
+/* write path atomically: scenario, engine, version, settings, the settings
+ * derived from the scene and why ("derived": {"keys", "reason"}, or null),
+ * stats */
 int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
                       const dv_engine_stats *stats, dv_error *err);
 
