@@ -30,6 +30,7 @@ install(FILES ${PROJECT_BINARY_DIR}/diskvalConfig.cmake ${PROJECT_BINARY_DIR}/di
 # pkg-config: relocatable, the prefix found from the .pc file's own
 # directory, so an install under any --prefix (or the .deb's /usr) is right
 file(RELATIVE_PATH DISKVAL_PC_UP /pfx/${CMAKE_INSTALL_LIBDIR}/pkgconfig /pfx)
+string(REGEX REPLACE "/$" "" DISKVAL_PC_UP "${DISKVAL_PC_UP}")
 foreach(d LIBDIR INCLUDEDIR DATADIR)
   if(IS_ABSOLUTE "${CMAKE_INSTALL_${d}}")
     set(DISKVAL_PC_${d} "${CMAKE_INSTALL_${d}}")
