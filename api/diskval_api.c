@@ -88,6 +88,11 @@ int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskv
                                 [RED_PH] = initial->phi,      [RED_PS] = initial->psi,
                                 [RED_X] = initial->x,         [RED_Y] = initial->y};
   memcpy(sc->initial, y, sizeof y);
+  const int status = dv_engine_derive_settings(sc, as_dv(err)); /* as a load derives them */
+  if (status < 0) {
+    free(s);
+    return status;
+  }
   *out = s;
   return DV_OK;
 }

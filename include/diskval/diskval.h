@@ -89,8 +89,7 @@ DISKVAL_API const char *diskval_version(void);
 DISKVAL_API int diskval_scenario_load(const char *path, const char *const *overrides, size_t n,
                                       diskval_scenario **out, diskval_error *err);
 
-/* a scenario built in code: every engine setting at its default, times in s (0 < output_dt <=
- * duration) */
+/* a scenario from code, engine settings derived as a load would; 0 < output_dt <= duration (s) */
 DISKVAL_API int diskval_scenario_new(const char *name, const diskval_disk *disk,
                                      const diskval_state *initial, double duration,
                                      double output_dt, diskval_scenario **out, diskval_error *err);

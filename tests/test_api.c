@@ -1,0 +1,99 @@
+/* test_api SCENARIOS_DIR: the public C API (include/diskval/diskval.h)
+ * through libdiskval: a scenario from a file and one built in code, runs,
+ * trajectories compared, a comparison's verdict, and the error convention. */
+#include <diskval/diskval.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_test.h"
+
+/* a rolling disk built in code: the reference and MuJoCo agree on theta */
+static void check_in_code(void) {
+  diskval_error err = {{0}};
+  const diskval_disk disk = {.radius = 0.1, .mass = 1.0, .gravity = 9.81};
+  const diskval_state y0 = {.theta = 1.2, .psi_dot = 30.0, .phi_dot = 2.0};
+  diskval_scenario *sc = NULL;
+  int s = diskval_scenario_new("in_code", &disk, &y0, 0.5, 0.01, &sc, &err);
+  CHECK(s == 0, "diskval_scenario_new: %s", err.msg);
+  if (s) return;
+  CHECK(strcmp(diskval_scenario_name(sc), "in_code") == 0, "name");
+  CHECK_NEAR(diskval_scenario_duration(sc), 0.5, 0, "duration");
+  diskval_trajectory *ref = NULL, *mj = NULL;
+  s = diskval_run(sc, "reduced", &ref, &err);
+  CHECK(s >= 0, "reduced: %s", err.msg);
+  s = diskval_run(sc, "mujoco", &mj, &err);
+  CHECK(s >= 0, "mujoco: %s", err.msg);
+  if (ref && mj) {
+    CHECK(diskval_trajectory_size(ref) == 51, "reference samples: %zu",
+          diskval_trajectory_size(ref));
+    diskval_sample first;
+    CHECK(diskval_trajectory_sample(ref, 0, &first) == 0, "sample 0");
+    CHECK_NEAR(first.state.theta, 1.2, 0, "theta(0)");
+    CHECK(diskval_trajectory_sample(ref, 51, &first) == -1, "sample out of range");
+    diskval_metrics m;
+    CHECK(diskval_compare_trajectories(mj, ref, &m, &err) == 0, "compare: %s", err.msg);
+    const double e = diskval_metric(&m, "theta_max_err");
+    CHECK(e >= 0 && e < 1e-2, "theta_max_err %g", e);
+    CHECK(isnan(diskval_metric(&m, "no_such_metric")), "unknown metric");
+    CHECK(m.n_window > 40, "window of %zu samples", m.n_window);
+  }
+  diskval_trajectory_free(ref);
+  diskval_trajectory_free(mj);
+  CHECK(diskval_scenario_set(sc, "mujoco", "timestep", "1e-4", &err) == 0, "set: %s", err.msg);
+  CHECK(diskval_scenario_set(sc, "mujoco", "no_such_key", "1", &err) < 0 && err.msg[0],
+        "an unknown key is refused");
+  diskval_scenario_free(sc);
+  const diskval_state flat = {.theta = 0.0};
+  sc = NULL;
+  CHECK(diskval_scenario_new("flat", &disk, &flat, 1, 0.1, &sc, &err) == DISKVAL_EINPUT && !sc,
+        "theta = 0 refused");
+  CHECK(diskval_scenario_new("x", &disk, &y0, 1, 2, &sc, &err) == DISKVAL_EINPUT, "output_dt");
+}
+
+/* a shipped scenario: MuJoCo's verdict, and errors by the convention */
+static void check_file(const char *dir) {
+  char path[1024];
+  snprintf(path, sizeof path, "%s/steady_circle.ini", dir);
+  diskval_error err = {{0}};
+  diskval_scenario *sc = NULL;
+  const char *set[] = {"scenario.duration=1"};
+  int s = diskval_scenario_load(path, set, 1, &sc, &err);
+  CHECK(s == 0, "load %s: %s", path, err.msg);
+  if (s) return;
+  CHECK_NEAR(diskval_scenario_duration(sc), 1.0, 0, "override");
+  diskval_comparison c;
+  s = diskval_compare(sc, "mujoco", &c, &err);
+  CHECK(s == 0, "diskval_compare: %s", err.msg);
+  if (s == 0) {
+    CHECK(c.pass == 1 && strcmp(c.verdict, "agrees") == 0, "verdict %s (%s)", c.verdict, c.decided);
+    CHECK(c.metrics.n >= 9 && strcmp(c.metrics.name[0], "theta_max_err") == 0, "metric names");
+    CHECK(c.metrics.value[0] <= c.limit[0], "theta_max_err %g > %g", c.metrics.value[0],
+          c.limit[0]);
+  }
+  diskval_trajectory *tr = NULL;
+  CHECK(diskval_run(sc, "warp", &tr, &err) == DISKVAL_EINPUT && !tr && strstr(err.msg, "warp"),
+        "unknown engine: %s", err.msg);
+  CHECK(diskval_compare(sc, "warp", &c, NULL) == DISKVAL_EINPUT, "NULL err is allowed");
+  diskval_scenario_free(sc);
+  sc = NULL;
+  CHECK(diskval_scenario_load("/nonexistent.ini", NULL, 0, &sc, &err) < 0 && !sc && err.msg[0],
+        "a missing file is an error");
+}
+
+/* run every check */
+int main(int argc, char **argv) {
+  CHECK(argc == 2, "usage: test_api SCENARIOS_DIR");
+  if (argc != 2) return TEST_RESULT();
+  CHECK(strcmp(diskval_version(), DV_PROJECT_VERSION) == 0, "version %s", diskval_version());
+  for (size_t i = 0;; i++) {
+    const char *name = diskval_engine_name(i);
+    if (!name) {
+      CHECK(i >= 4, "%zu engines", i);
+      break;
+    }
+  }
+  check_in_code();
+  check_file(argv[1]);
+  return TEST_RESULT();
+}
