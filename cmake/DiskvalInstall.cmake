@@ -42,9 +42,9 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/diskval.pc.in ${PROJECT_BINARY_DIR}/dis
 install(FILES ${PROJECT_BINARY_DIR}/diskval.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
         COMPONENT development)
 
-# a man page from --help, where help2man is installed (optional)
+# a man page from --help, where help2man is installed (optional: apt-get install help2man)
 find_program(HELP2MAN help2man)
-if(HELP2MAN AND NOT CMAKE_CROSSCOMPILING)
+if(HELP2MAN AND NOT CMAKE_CROSSCOMPILING AND NOT DV_SANITIZE) # not run under ASan at build time
   add_custom_command(OUTPUT ${PROJECT_BINARY_DIR}/diskval.1
     COMMAND ${HELP2MAN} --no-info --version-string=${PROJECT_VERSION}
             --name "validate physics engines against an exact rolling-disk reference"

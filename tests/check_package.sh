@@ -31,6 +31,9 @@ for f in bin/diskval include/diskval/diskval.h lib*/cmake/diskval/diskvalConfig.
   share/diskval/scenarios/steady_circle.ini; do
   compgen -G "$prefix/$f" >/dev/null || fail "not installed: $f"
 done
+if [ -f "$build/diskval.1" ]; then # built where help2man is installed
+  [ -f "$prefix/share/man/man1/diskval.1" ] || fail "not installed: share/man/man1/diskval.1"
+fi
 lib=$(compgen -G "$prefix/lib*/libdiskval.so" | head -1)
 [ -n "$lib" ] || fail "not installed: libdiskval.so"
 soname=$(readelf -d "$lib" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
