@@ -97,9 +97,9 @@ static const dv_setting_spec KEYS[] = {
  * more (nonuniform 0.41, 0.38; steady_circle 0.054, 0.052). Cost of a step
  * (./run.sh bench): Euler 3 us, RK4 9 us, implicit 4 us. */
 static const dv_step_model MODELS[] = {
-    {0.41, 2.0, "solref_timeconst", 3e-6},
-    {0.027, 2.0, "solref_timeconst", 9e-6},
-    {0.41, 2.0, "solref_timeconst", 4e-6},
+    {"mujoco", 0.41, 2.0, "solref_timeconst", 3e-6},
+    {"mujoco", 0.027, 2.0, "solref_timeconst", 9e-6},
+    {"mujoco", 0.41, 2.0, "solref_timeconst", 4e-6},
 };
 
 /* fill the timestep and time constant s leaves to the scene; why as dv_engine_derive_step */

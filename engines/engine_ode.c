@@ -93,8 +93,8 @@ static const dv_setting_spec KEYS[] = {
  * 0.0094, upright_stable 0.0016; QuickStep the same. Cost of a step
  * (./run.sh bench): dWorldStep 0.85 us, QuickStep 2.5 us. */
 static const dv_step_model MODELS[] = {
-    {2.3, 0.0, NULL, 0.85e-6},
-    {2.3, 0.0, NULL, 2.5e-6},
+    {"ode", 2.3, 0.0, NULL, 0.85e-6},
+    {"ode", 2.3, 0.0, NULL, 2.5e-6},
 };
 
 static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {

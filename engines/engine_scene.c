@@ -133,6 +133,19 @@ void dv_engine_scene_scales(const dv_scenario *sc, dv_scene_scales *out) {
     if (out->t[i] < out->t[out->shortest]) out->shortest = (dv_scale_id)i;
 }
 
+/* v inside the range of engine's key (the scenario's table) */
+static double in_range(const dv_scenario *sc, const char *engine, const char *key, double v) {
+  for (size_t i = 0; i < sc->nsections; i++) {
+    const dv_setting_spec *sp =
+        strcmp(sc->sections[i]->name, engine) ? NULL : dv_settings_find(sc->sections[i], key);
+    if (!sp) continue;
+    v = fmin(fmax(v, sp->lo), sp->hi);
+    if (sp->flags & DV_SETTING_OPEN_LO && v <= sp->lo) v = nextafter(sp->lo, INFINITY);
+    if (sp->flags & DV_SETTING_OPEN_HI && v >= sp->hi) v = nextafter(sp->hi, -INFINITY);
+  }
+  return v;
+}
+
 /* output_dt / k for the smallest whole k that makes it no longer than dt */
 static double fit_output(double dt, double output_dt) {
   if (!(output_dt > 0.0) || !(dt < output_dt)) return output_dt > 0.0 ? output_dt : dt;
@@ -202,8 +215,9 @@ void dv_engine_derive_step(const dv_scenario *sc, const dv_step_model *m, double
   step_choice ch = {0};
   if (derive_dt || derive_soft) choose(sc, m, &ch);
   if (derive_dt) {
-    const double want = ch.h / (m->soft_steps > 0.0 ? m->soft_steps : 1.0);
-    *timestep = fit_output(want, sc->output_dt);
+    const double want =
+        in_range(sc, m->engine, "timestep", ch.h / (m->soft_steps > 0.0 ? m->soft_steps : 1.0));
+    *timestep = in_range(sc, m->engine, "timestep", fit_output(want, sc->output_dt));
     snprintf(what, sizeof what, "timestep %.3g s", *timestep);
     if (keys) keys[nkeys++] = "timestep";
     if (*timestep < 0.99 * want && sc->output_dt < want)
@@ -214,7 +228,7 @@ void dv_engine_derive_step(const dv_scenario *sc, const dv_step_model *m, double
     *timestep = sc->output_dt;
   }
   if (derive_soft) {
-    *softness = fmax(ch.h, m->soft_steps * *timestep);
+    *softness = in_range(sc, m->engine, m->soft_key, fmax(ch.h, m->soft_steps * *timestep));
     snprintf(what + strlen(what), sizeof what - strlen(what), "%s%s %.3g s", what[0] ? ", " : "",
              m->soft_key, *softness);
     if (keys) keys[nkeys++] = m->soft_key;

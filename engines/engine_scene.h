@@ -59,12 +59,13 @@ void dv_engine_scene_scales(const dv_scenario *sc, dv_scene_scales *out);
  * growth, fall), D the duration, c each engine's constant, calibrated as the
  * largest over the shipped scenarios (the engine files list the numbers).
  * The step is the h that makes this DV_SCENE_ACCURACY, but
- *  - no longer than T / DV_SCENE_STEPS_PER_SCALE (it resolves the scene), and
  *  - no shorter than a run can afford: DV_SCENE_WALL_PER_SIM s of wall time
  *    per simulated second and DV_SCENE_WALL_PER_RUN s per run, at the
- *    engine's measured cost of a step;
+ *    engine's measured cost of a step, and
+ *  - no longer than T / DV_SCENE_STEPS_PER_SCALE: a step that misses the
+ *    scene is no use, so this one holds even where it costs more than the cap;
  * then shortened to output_dt / k for a whole k, so every sample falls on a
- * step. */
+ * step, and kept inside the key's range. */
 #define DV_SCENE_ACCURACY 1e-3       /* rad: theta's distance from the reference over the scene */
 #define DV_SCENE_STEPS_PER_SCALE 100 /* steps at least in the shortest time scale */
 #define DV_SCENE_WALL_PER_SIM 0.5    /* s of wall time per simulated second at most */
@@ -72,6 +73,7 @@ void dv_engine_scene_scales(const dv_scenario *sc, dv_scene_scales *out);
 
 /* a contact engine's error model: theta error ~ c (h / T) (D / T) */
 typedef struct dv_step_model {
+  const char *engine;   /* whose [engines.NAME] keys take the values (kept in their ranges) */
   double c;             /* calibrated constant */
   double soft_steps;    /* > 0: h is the contact time constant, which the library keeps at
                          * soft_steps timesteps or more (MuJoCo: 2); 0: h is the timestep */
