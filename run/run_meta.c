@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "io_file.h"
+#include "io_json.h"
 
 /* every key of engine's table in sc, by name */
 static void add_settings(cJSON *o, const dv_scenario *sc, const char *engine) {
@@ -47,7 +48,7 @@ static cJSON *derived(const dv_engine_type *engine, const dv_scenario *sc) {
 }
 
 void *dv_io_json_number(double v) {
-  return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
+  return dv_io_json_double(v); /* cJSON's own 15-digit text does not always read back */
 }
 
 int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *err) {
