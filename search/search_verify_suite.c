@@ -26,8 +26,23 @@ static void verify_task(size_t k, void *result, void *ctx) {
   dv_verify_case *c = result;
   dv_error err = {{0}};
   const double t0 = dv_clock_now();
-  c->status = dv_search_verify(j->paths[k / j->nengines], j->sets, j->nsets,
-                               j->engines[k % j->nengines]->name, &c->v, &err);
+  const dv_engine_type *engine = j->engines[k % j->nengines];
+  const dv_engine_type *own[DV_VERIFY_SUITE_MAX_ENGINES + 1];
+  dv_scenario sc;
+  c->status = dv_engine_load_scenario(j->paths[k / j->nengines], j->sets, j->nsets, &sc, &err);
+  int named = 1; /* a scenario that names its engines verifies only those */
+  if (!c->status && sc.engines[0] &&
+      !dv_engine_parse_list(sc.engines, own, DV_VERIFY_SUITE_MAX_ENGINES + 1, NULL)) {
+    named = 0;
+    for (size_t i = 0; own[i]; i++) named |= own[i] == engine;
+  }
+  if (!c->status && !named) {
+    c->status = DV_EVENT;
+    snprintf(err.msg, sizeof err.msg, "the scenario names its engines: %s", sc.engines);
+  } else if (!c->status) {
+    c->status =
+        dv_search_verify(j->paths[k / j->nengines], j->sets, j->nsets, engine->name, &c->v, &err);
+  }
   c->wall_s = dv_clock_now() - t0;
   snprintf(c->message, sizeof c->message, "%s", err.msg);
 }
@@ -52,13 +67,21 @@ int dv_search_verify_suite(const char *const *paths, const char *const *names, s
 
 /* the one line that says how a case ended */
 static void describe(const dv_verify_case *c, char *text, size_t size) {
+  char order[32] = "none (flat)";
+  if (!isnan(c->v.order)) snprintf(order, sizeof order, "%.3g", c->v.order);
   if (c->status < 0)
     snprintf(text, size, "error: %s", c->message);
+  else if (c->status == DV_EVENT)
+    snprintf(text, size, "skipped: %s", c->message);
   else
-    snprintf(text, size, "%s: extrapolated discrepancy %.3g rad (floor %g), order %s%.3g%s%s",
-             dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR,
-             isnan(c->v.order) ? "none " : "", isnan(c->v.order) ? 0.0 : c->v.order,
+    snprintf(text, size, "%s: extrapolated discrepancy %.3g rad (floor %g), order %s%s%s",
+             dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR, order,
              c->v.cause[0] ? ", cause: " : "", c->v.cause);
+}
+
+/* a case that did not fail: converged, or skipped */
+static int fine(const dv_verify_case *c) {
+  return c->status == DV_EVENT || (c->status == DV_OK && c->v.verdict == DV_CONVERGES);
 }
 
 /* verify.md: a row per case */
@@ -90,8 +113,10 @@ static int write_json(const char *dir, const dv_verify_case *cases, size_t n, dv
     cJSON_AddStringToObject(e, "scenario", c->scenario);
     cJSON_AddStringToObject(e, "engine", c->engine);
     cJSON_AddStringToObject(e, "verdict",
-                            c->status < 0 ? "error" : dv_search_convergence_name(c->v.verdict));
-    cJSON_AddStringToObject(e, "detail", c->status < 0 ? c->message : c->v.cause);
+                            c->status < 0           ? "error"
+                            : c->status == DV_EVENT ? "skipped"
+                                                    : dv_search_convergence_name(c->v.verdict));
+    cJSON_AddStringToObject(e, "detail", c->status != DV_OK ? c->message : c->v.cause);
     cJSON_AddItemToObject(e, "steps", cJSON_CreateDoubleArray(c->v.step, DV_VERIFY_LEVELS));
     cJSON_AddItemToObject(e, "errors", cJSON_CreateDoubleArray(c->v.error, DV_VERIFY_LEVELS));
     cJSON_AddItemToObject(e, "order", dv_io_json_number(c->v.order));
@@ -108,8 +133,7 @@ static int write_junit(const char *path, const dv_verify_case *cases, size_t n, 
   int status = dv_io_open(&out, path, err);
   if (status) return status;
   size_t failures = 0;
-  for (size_t k = 0; k < n; k++)
-    failures += cases[k].status < 0 || cases[k].v.verdict != DV_CONVERGES;
+  for (size_t k = 0; k < n; k++) failures += !fine(&cases[k]);
   fprintf(out.fp,
           "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
           "<testsuite name=\"diskval verify\" tests=\"%zu\" failures=\"%zu\">\n",
@@ -121,7 +145,9 @@ static int write_junit(const char *path, const dv_verify_case *cases, size_t n, 
     dv_report_escape_put(out.fp, "  <testcase classname=\"", c->scenario, 1, "\" name=\"");
     dv_report_escape_put(out.fp, "", c->engine, 1, "\"");
     fprintf(out.fp, " time=\"%.3f\">", c->wall_s);
-    if (c->status < 0 || c->v.verdict != DV_CONVERGES)
+    if (c->status == DV_EVENT)
+      dv_report_escape_put(out.fp, "<skipped message=\"", text, 1, "\"/>");
+    else if (!fine(c))
       dv_report_escape_put(out.fp, "<failure message=\"", text, 1, "\"/>");
     else
       dv_report_escape_put(out.fp, "<system-out>", text, 0, "</system-out>");

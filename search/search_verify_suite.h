@@ -11,11 +11,14 @@
 #include "dv_engine.h"
 #include "search_verify.h"
 
+#define DV_VERIFY_SUITE_MAX_ENGINES 8
+
 /* one scenario x engine */
 typedef struct dv_verify_case {
   char scenario[64];
   char engine[32];
-  int status; /* of dv_search_verify: DV_OK, or < 0 with message */
+  int status; /* of dv_search_verify: DV_OK, < 0 with message; DV_EVENT: skipped, the
+               * scenario names other engines */
   char message[512];
   double wall_s;
   dv_verification v;
