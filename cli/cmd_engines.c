@@ -1,5 +1,6 @@
 /* dv_cli_engines: diskval engines: every engine, its library version and
  * its settings table (key, default, range or choices, unit, what it is). */
+#include <math.h>
 #include <stdio.h>
 
 #include "cli.h"
@@ -23,7 +24,10 @@ static void print_setting(const dv_setting_spec *sp) {
   } else {
     char range[96];
     dv_setting_range_text(sp, range, sizeof range);
-    printf("%-10g %s", sp->def, range);
+    if (isnan(sp->def)) /* the engine derives it from the scene */
+      printf("%-10s %s", "(scene)", range);
+    else
+      printf("%-10g %s", sp->def, range);
   }
   printf("%s%s%s%s\n", sp->unit[0] || sp->doc[0] ? "  " : "", sp->unit,
          sp->unit[0] && sp->doc[0] ? ", " : "", sp->doc);
