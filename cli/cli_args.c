@@ -13,7 +13,6 @@
 
 #define HELP_ID (-2) /* getopt_long's val for --help */
 #define SET_ID (-3)  /* and for --set */
-#define BAD(...) (dv_cli_usage_error(__VA_ARGS__), DV_CLI_BAD)
 
 int dv_cli_list_push(dv_cli_list *list, const char *item) {
   if (list->n == list->cap) {
@@ -47,12 +46,13 @@ static int take(const dv_cli_command *cmd, const dv_cli_option *o, const char *t
       *(const char **)o->value = text;
       return 0;
     case DV_CLI_LIST:
-      return dv_cli_list_push(o->value, text) ? BAD(cmd->name, "out of memory") : 0;
+      return dv_cli_list_push(o->value, text) ? dv_cli_usage_error(cmd->name, "out of memory") : 0;
     case DV_CLI_REAL:
     case DV_CLI_INT:
       if (parse_number(text, o->lo, o->hi, o->kind == DV_CLI_INT, &v))
-        return BAD(cmd->name, "--%s: '%s' is not a %s in [%g, %g]", o->name, text,
-                   o->kind == DV_CLI_INT ? "whole number" : "finite number", o->lo, o->hi);
+        return dv_cli_usage_error(cmd->name, "--%s: '%s' is not a %s in [%g, %g]", o->name, text,
+                                  o->kind == DV_CLI_INT ? "whole number" : "finite number", o->lo,
+                                  o->hi);
       if (o->kind == DV_CLI_INT)
         *(int *)o->value = (int)v;
       else
@@ -65,7 +65,7 @@ static int take(const dv_cli_command *cmd, const dv_cli_option *o, const char *t
 int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *out) {
   memset(out, 0, sizeof *out);
   struct option *longs = calloc(cmd->noptions + 3, sizeof *longs);
-  if (!longs) return BAD(cmd->name, "out of memory");
+  if (!longs) return dv_cli_usage_error(cmd->name, "out of memory");
   for (size_t i = 0; i < cmd->noptions; i++)
     longs[i] = (struct option){
         cmd->options[i].name, cmd->options[i].kind == DV_CLI_FLAG ? no_argument : required_argument,
@@ -78,29 +78,32 @@ int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *
   for (int c; status == DV_CLI_RUN && (c = getopt_long(argc, argv, ":h", longs, NULL)) != -1;) {
     if (c == 'h' || c == HELP_ID) {
       fputs(cmd->help, stdout);
-      status = fflush(stdout) || ferror(stdout) ? DV_CLI_BAD : DV_CLI_DONE;
+      status = fflush(stdout) || ferror(stdout) ? DV_EXIT_ERROR : DV_EXIT_OK;
     } else if (c == SET_ID) {
       const char *eq = strchr(optarg, '='), *dot = strchr(optarg, '.');
       if (!eq || !dot || dot > eq)
-        status = BAD(cmd->name, "--set '%s': expected section.key=value", optarg);
+        status = dv_cli_usage_error(cmd->name, "--set '%s': expected section.key=value", optarg);
       else if (dv_cli_list_push(&out->sets, optarg))
-        status = BAD(cmd->name, "out of memory");
+        status = dv_cli_usage_error(cmd->name, "out of memory");
     } else if (c == ':') {
-      status = BAD(cmd->name, "%s needs a value", argv[optind - 1]);
+      status = dv_cli_usage_error(cmd->name, "%s needs a value", argv[optind - 1]);
     } else if (c == '?') {
-      status = BAD(cmd->name, "unknown option '%s'", argv[optind - 1]);
+      status = dv_cli_usage_error(cmd->name, "unknown option '%s'", argv[optind - 1]);
     } else if (take(cmd, &cmd->options[c], optarg)) {
-      status = DV_CLI_BAD;
+      status = DV_EXIT_ERROR;
     }
   }
   free(longs);
   /* getopt_long has moved the positional arguments to the end */
   for (; status == DV_CLI_RUN && optind < argc; optind++)
-    if (dv_cli_list_push(&out->args, argv[optind])) status = BAD(cmd->name, "out of memory");
+    if (dv_cli_list_push(&out->args, argv[optind]))
+      status = dv_cli_usage_error(cmd->name, "out of memory");
   if (status == DV_CLI_RUN && out->args.n < cmd->min_args)
-    status = BAD(cmd->name, "%s", cmd->min_args == 1 ? "no scenario given" : "too few arguments");
+    status = dv_cli_usage_error(cmd->name, "%s",
+                                cmd->min_args == 1 ? "no scenario given" : "too few arguments");
   if (status == DV_CLI_RUN && out->args.n > cmd->max_args)
-    status = BAD(cmd->name, "unexpected argument '%s'", out->args.items[cmd->max_args]);
+    status =
+        dv_cli_usage_error(cmd->name, "unexpected argument '%s'", out->args.items[cmd->max_args]);
   if (status != DV_CLI_RUN) dv_cli_args_free(cmd, out);
   return status;
 }

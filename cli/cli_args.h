@@ -46,10 +46,10 @@ typedef struct dv_cli_args {
   dv_cli_list args; /* positional arguments */
 } dv_cli_args;
 
-enum { DV_CLI_RUN = 0, DV_CLI_DONE = 1, DV_CLI_BAD = -1 };
+enum { DV_CLI_RUN = -1 };
 
-/* parse argv (argv[0] is the command's name); DV_CLI_RUN, DV_CLI_DONE after
- * --help, or DV_CLI_BAD after printing the one-line error */
+/* parse argv (argv[0] is the command's name): DV_CLI_RUN to go on, else the
+ * exit status to end with (0 after --help, 2 after the one-line error) */
 int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *out);
 
 /* free what dv_cli_parse allocated in out and in the command's list options */

@@ -57,7 +57,7 @@ int dv_cli_attribute(int argc, char **argv) {
   const dv_cli_command cmd = {"attribute", HELP, options, 1, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   int code = DV_EXIT_OK;
   dv_attribution at;
   dv_error err = {{0}};

@@ -48,7 +48,7 @@ int dv_cli_best(int argc, char **argv) {
   const dv_cli_command cmd = {"best", HELP, options, 2, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   int code;
   dv_search *s = calloc(1, sizeof *s);
   dv_error err = {{0}};

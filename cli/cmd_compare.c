@@ -25,7 +25,7 @@ int dv_cli_compare(int argc, char **argv) {
   const dv_cli_command cmd = {"compare", HELP, options, 2, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_scenario sc;
   dv_error err = {{0}};

@@ -37,7 +37,7 @@ int dv_cli_engines(int argc, char **argv) {
   const dv_cli_command cmd = {"engines", HELP, NULL, 0, 0, 0};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   dv_cli_args_free(&cmd, &a);
   for (const dv_engine_type *const *e = dv_engines; *e; e++) {
     printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());

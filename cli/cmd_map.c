@@ -41,7 +41,7 @@ typedef struct cell {
 
 typedef struct map {
   const dv_vary *c, *spin;
-  const dv_engine_type *engines[DV_MAX_ENGINES + 1];
+  const dv_engine_type *engines[DV_MAX_ENGINES + 2]; /* the reference, the engines, NULL */
   size_t nengines;
   double duration;
 } map;
@@ -150,9 +150,8 @@ static int write_outputs(const char *dir, const map *mp, const cell *cells, dv_e
 
 /* the default engines: the thin-disk reference and every contact engine */
 static void default_engines(map *mp) {
-  mp->engines[mp->nengines++] = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
-  for (const dv_engine_type *const *e = dv_engines; *e && mp->nengines < DV_MAX_ENGINES; e++)
-    if ((*e)->role == DV_ENGINE_CONTACT) mp->engines[mp->nengines++] = *e;
+  mp->engines[0] = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  dv_cli_engine_list(NULL, mp->engines + 1, NULL);
 }
 
 /* the command once its options are read */
@@ -205,7 +204,7 @@ int dv_cli_map(int argc, char **argv) {
   const dv_cli_command cmd = {"map", HELP, options, 6, 0, 0};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   dv_vary c, spin;
   map mp = {&c, &spin, {NULL}, 0, duration};
   const int code = run_map(&mp, cspec, sspec, engines, out, jobs);

@@ -83,7 +83,7 @@ int dv_cli_simulate(int argc, char **argv) {
   const dv_cli_command cmd = {"simulate", HELP, options, 3, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path);
   dv_cli_args_free(&cmd, &a);
   return code;

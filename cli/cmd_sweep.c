@@ -122,7 +122,7 @@ int dv_cli_sweep(int argc, char **argv) {
   const dv_cli_command cmd = {"sweep", HELP, options, 4, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   dv_sweep s = {0}, ref = {0};
   const int code = sweep(a.args.items[0], &a.sets, engine, &specs, out, jobs, &s, &ref);
   dv_search_sweep_free(&s);

@@ -39,7 +39,7 @@ int dv_cli_verify(int argc, char **argv) {
   const dv_cli_command cmd = {"verify", HELP, options, 1, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
-  if (parsed != DV_CLI_RUN) return parsed == DV_CLI_DONE ? DV_EXIT_OK : DV_EXIT_ERROR;
+  if (parsed != DV_CLI_RUN) return parsed;
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_error err = {{0}};
   int code = DV_EXIT_OK;

@@ -19,6 +19,10 @@ int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
   return 0;
 }
 
+int dv_run_traj_keep(void *traj, const dv_sample *s) {
+  return dv_run_traj_push(traj, s);
+}
+
 void dv_run_traj_free(dv_traj *tr) {
   if (!tr) return;
   free(tr->s);

@@ -30,6 +30,7 @@ typedef struct dv_traj {
 } dv_traj;
 
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s); /* 0, or -1 out of memory */
+int dv_run_traj_keep(void *traj, const dv_sample *s);  /* a run's sink: push into a dv_traj */
 void dv_run_traj_free(dv_traj *tr);                    /* NULL-safe */
 
 typedef struct dv_metrics {

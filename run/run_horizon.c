@@ -5,11 +5,6 @@
 
 #include "run_trajectory.h"
 
-/* sink: keep every sample */
-static int keep(void *ctx, const dv_sample *s) {
-  return dv_run_traj_push(ctx, s);
-}
-
 int dv_run_horizon(const dv_scenario *sc, const dv_traj *ref, double *horizon,
                    double spread[DV_NMETRICS], dv_error *err) {
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
@@ -20,7 +15,7 @@ int dv_run_horizon(const dv_scenario *sc, const dv_traj *ref, double *horizon,
     nudged.initial[RED_TH] += sign * DV_HORIZON_NUDGE;
     dv_traj tr = {0};
     dv_engine_stats st;
-    const int status = dv_run_collect(thin, &nudged, keep, &tr, &st, err);
+    const int status = dv_run_collect(thin, &nudged, dv_run_traj_keep, &tr, &st, err);
     if (status < 0) return dv_run_traj_free(&tr), status;
     size_t i = 0;
     for (; i < tr.n && i < ref->n && fabs(tr.s[i].t - ref->s[i].t) < 1e-9; i++)

@@ -15,15 +15,11 @@ double dv_run_distance_rolled(const dv_traj *tr, double t_end) {
 
 /* the limit the scenario gives for metric, with where it came from; 0 when none */
 static int given(const dv_scenario *sc, const char *engine, dv_metric_id metric, dv_limit *out) {
-  for (int own = 1; own >= 0; own--)
-    for (size_t i = 0; i < sc->ntolerances; i++) {
-      const dv_tolerance *t = &sc->tolerances[i];
-      if (t->metric != metric || (own ? strcmp(t->engine, engine) : t->engine[0] != '\0')) continue;
-      out->value = t->limit;
-      snprintf(out->why, sizeof out->why, "[tolerance%s%s]", own ? "." : "", own ? engine : "");
-      return 1;
-    }
-  return 0;
+  int own;
+  out->value = dv_scenario_tolerance(sc, engine, metric, &own);
+  if (own < 0) return 0;
+  snprintf(out->why, sizeof out->why, "[tolerance%s%s]", own ? "." : "", own ? engine : "");
+  return 1;
 }
 
 void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,

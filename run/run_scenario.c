@@ -13,11 +13,6 @@
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
-/* sink: keep every sample */
-static int keep(void *ctx, const dv_sample *s) {
-  return dv_run_traj_push(ctx, s);
-}
-
 /* did the matched reference end where the thick disk reaches upright */
 static int crossed_upright(const dv_traj *tr) {
   return tr->n > 0 && fabs(cos(tr->s[tr->n - 1].y[RED_TH])) < 1e-9;
@@ -126,7 +121,7 @@ static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_
 static int run_into(const dv_engine_type *type, const dv_scenario *sc, dv_traj *tr,
                     dv_engine_stats *st, double *wall, dv_error *err) {
   const double t0 = dv_clock_now();
-  const int status = dv_run_collect(type, sc, keep, tr, st, err);
+  const int status = dv_run_collect(type, sc, dv_run_traj_keep, tr, st, err);
   if (wall) *wall = dv_clock_now() - t0;
   return status;
 }

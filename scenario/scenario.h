@@ -126,8 +126,10 @@ int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char
 void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,
                              const char *why);
 
-/* the limit on metric for engine: [tolerance.ENGINE], else [tolerance], else INFINITY */
-double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric);
+/* the limit on metric for engine: [tolerance.ENGINE], else [tolerance], else INFINITY;
+ * *own (NULL: not asked) is 1, 0 or -1 for those three */
+double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric,
+                             int *own);
 
 /* 0 when name may name a scenario (DV_SCENARIO_NAME_CHARS), else -1 with what set */
 int dv_scenario_check_name(const char *name, char *what, size_t size);

@@ -84,12 +84,16 @@ void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *co
   snprintf(sc->derived[i], sizeof sc->derived[i], "%s", why ? why : "");
 }
 
-double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric) {
+double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric,
+                             int *own) {
   double limit = INFINITY;
+  if (own) *own = -1;
   for (int pass = 0; pass < 2; pass++) /* the scenario's, then the engine's own */
     for (size_t i = 0; i < sc->ntolerances; i++) {
       const dv_tolerance *t = &sc->tolerances[i];
-      if (t->metric == metric && !strcmp(t->engine, pass ? engine : "")) limit = t->limit;
+      if (t->metric != metric || strcmp(t->engine, pass ? engine : "")) continue;
+      limit = t->limit;
+      if (own) *own = pass;
     }
   return limit;
 }

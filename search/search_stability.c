@@ -24,7 +24,7 @@ typedef struct task {
 
 /* the scenario's theta_max_err limit for engine, its own first */
 static double theta_tolerance(const dv_scenario *sc, const char *engine) {
-  const double tol = dv_scenario_tolerance(sc, engine, DV_THETA_MAX_ERR);
+  const double tol = dv_scenario_tolerance(sc, engine, DV_THETA_MAX_ERR, NULL);
   return isinf(tol) ? DEFAULT_TOL : tol;
 }
 
