@@ -86,8 +86,7 @@ static char *read_line(char *buf, int size, void *stream) {
   const char *text = c->raw;
   size_t n = (size_t)got;
   if (c->line == 1 && n >= 3 && !memcmp(text, "\xef\xbb\xbf", 3)) text += 3, n -= 3;
-  if (strlen(text) != n)
-    return fail_at(c, c->line, "syntax", "a NUL byte inside the line"), NULL;
+  if (strlen(text) != n) return fail_at(c, c->line, "syntax", "a NUL byte inside the line"), NULL;
   if (n + 1 > (size_t)size)
     return fail_at(c, c->line, "syntax", "line longer than %d characters", size - 2), NULL;
   memcpy(buf, text, n + 1);
