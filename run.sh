@@ -9,8 +9,8 @@ cd "$(dirname "$0")"
 
 PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-dev libcjson-dev
           libode-dev libmujoco-dev libplplot-dev libopenmpi-dev openmpi-bin libdouble-conversion-dev)
-# the tests also check the report's XML and render its page in a real browser
-TEST_PACKAGES=(libxml2-utils chromium valgrind clang libclang-rt-14-dev time)
+# the tests also check the report's XML and render its page in a real browser, read JSON (jq)
+TEST_PACKAGES=(libxml2-utils chromium valgrind clang libclang-rt-14-dev time jq)
 BUILD_DIR=${BUILD_DIR:-build}
 CMAKE_FLAGS=()
 if [ "${2:-}" = --sanitize ]; then
@@ -54,6 +54,9 @@ case "${1:-run}" in
     "$BUILD_DIR/bench/bench_engines"
     "$BUILD_DIR/bench/bench_sweep" scenarios tests/data
     bash bench/bench_mpi.sh "$BUILD_DIR/cli/diskval" .
+    bash bench/bench_output.sh baseline "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/plain_gsl_disk"
+    bash bench/bench_harness.sh "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/bare_mujoco" \
+      "$BUILD_DIR/bench/bare_ode" .
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI

@@ -5,7 +5,15 @@
 # rows) into files; PAIRS runs of each (default 9), alternating which goes
 # first. Prints the median wall times, their ratio (AFTER / BEFORE) and the
 # ratio of the file sizes.
+#
+# bench_output.sh baseline DISKVAL PLAIN_GSL_DISK [PAIRS]: the reference at
+# its defaults against a plain GSL rk8pd driver stepping onto every output
+# (bench/plain_gsl_disk.c), at equal theta accuracy: 2000 s with output every
+# 1 s, and 20 s every 1 ms (a uniform disk, theta 1, spin -12 rad/s).
 set -u
+if [ "${1:-}" = baseline ]; then
+  exec bash "$(dirname "$0")/bench_output_baseline.sh" "${@:2}"
+fi
 before=$1 after=$2 src=$3 pairs=${4:-9}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

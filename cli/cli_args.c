@@ -11,8 +11,9 @@
 #include "cli.h"
 #include "cli_args.h"
 
-#define HELP_ID (-2) /* getopt_long's val for --help */
-#define SET_ID (-3)  /* and for --set */
+#define HELP_ID (-2)  /* getopt_long's val for --help */
+#define SET_ID (-3)   /* and for --set */
+#define QUIET_ID (-4) /* and for --quiet */
 
 int dv_cli_list_push(dv_cli_list *list, const char *item) {
   if (list->n == list->cap) {
@@ -64,7 +65,7 @@ static int take(const dv_cli_command *cmd, const dv_cli_option *o, const char *t
 
 int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *out) {
   memset(out, 0, sizeof *out);
-  struct option *longs = calloc(cmd->noptions + 3, sizeof *longs);
+  struct option *longs = calloc(cmd->noptions + 4, sizeof *longs);
   if (!longs) return dv_cli_usage_error(cmd->name, "out of memory");
   for (size_t i = 0; i < cmd->noptions; i++)
     longs[i] = (struct option){
@@ -72,6 +73,7 @@ int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *
         NULL, (int)i};
   longs[cmd->noptions] = (struct option){"help", no_argument, NULL, HELP_ID};
   longs[cmd->noptions + 1] = (struct option){"set", required_argument, NULL, SET_ID};
+  longs[cmd->noptions + 2] = (struct option){"quiet", no_argument, NULL, QUIET_ID};
   int status = DV_CLI_RUN;
   opterr = 0;
   optind = 0; /* glibc: start afresh, so a process may parse more than once */
@@ -85,6 +87,8 @@ int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *
         status = dv_cli_usage_error(cmd->name, "--set '%s': expected section.key=value", optarg);
       else if (dv_cli_list_push(&out->sets, optarg))
         status = dv_cli_usage_error(cmd->name, "out of memory");
+    } else if (c == QUIET_ID) {
+      out->quiet = 1;
     } else if (c == ':') {
       status = dv_cli_usage_error(cmd->name, "%s needs a value", argv[optind - 1]);
     } else if (c == '?') {

@@ -1,8 +1,8 @@
 /* cli_args: one option parser for every diskval command (glibc getopt_long).
  *
  * A command describes its options in a table; the parser fills the caller's
- * variables, takes --help and --set for every command, and refuses with one
- * line on stderr and exit status 2: an unknown option, a missing value, a
+ * variables, takes --help, --set and --quiet for every command, and refuses
+ * with one line on stderr and exit status 2: an unknown option, a missing value, a
  * number that is not wholly a finite number in range ("1e-3x", "nan", ""),
  * and more or fewer positional arguments than the command takes.
  */
@@ -44,6 +44,7 @@ typedef struct dv_cli_command {
 typedef struct dv_cli_args {
   dv_cli_list sets; /* --set section.key=value, in order */
   dv_cli_list args; /* positional arguments */
+  int quiet;        /* --quiet: no progress line or long-run warning (run_progress.h) */
 } dv_cli_args;
 
 enum { DV_CLI_RUN = -1 };

@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "exec_mpi.h"
+#include "io_temp.h"
 #include "dv_engine.h"
 #include "scenario.h"
 #include "red_solver.h"
@@ -78,6 +79,7 @@ int main(int argc, char **argv) {
                   {"attribute", dv_cli_attribute}, {"map", dv_cli_map},
                   {"engines", dv_cli_engines},     {"verify", dv_cli_verify}};
   gsl_set_error_handler_off();
+  dv_io_temp_clean_on_signals(); /* a run ended by SIGINT or SIGTERM leaves no temporary */
   dv_exec_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(HELP, argc < 2 ? stderr : stdout);
@@ -86,7 +88,8 @@ int main(int argc, char **argv) {
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
     if (!strcmp(argv[1], commands[i].name)) {
       int code = commands[i].run(argc - 1, argv + 1);
-      if (fflush(stdout) || ferror(stdout)) /* e.g. > /dev/full: the output is lost */
+      /* e.g. > /dev/full: the output is lost (said once: a failed command has said why) */
+      if ((fflush(stdout) || ferror(stdout)) && code != DV_EXIT_ERROR)
         code = dv_cli_error(argv[1], "cannot write the output: %s", strerror(errno));
       dv_exec_mpi_finalize();
       return code;

@@ -14,7 +14,8 @@ static const char HELP[] =
     "Split a contact engine's max theta error against the thin disk into shares,\n"
     "each by a measured difference:\n"
     "  geometry     error with the engine's stand-in shape minus error with the exact\n"
-    "               thin disk (0 when the scenario already uses the thin disk)\n"
+    "               thin disk (n/a when the scenario already uses the thin disk;\n"
+    "               negative where the stand-in's geometry cancels other error)\n"
     "  time         Richardson over dt, dt/2, dt/4 (thin disk): e(dt) - e(0), with the\n"
     "               observed order; 0 where the errors do not fall with the step\n"
     "  contact      at dt/4, e minus e with a stiffer contact and 10x friction\n"
@@ -31,8 +32,11 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
     double v;
     const char *how;
   } rows[] = {
-      {"geometry", at->geometry,
-       at->has_stand_in ? "stand-in against the exact thin disk" : "exact thin disk: none"},
+      {"geometry", at->has_stand_in ? at->geometry : NAN,
+       !at->has_stand_in  ? "n/a: the scenario uses the exact thin disk, no stand-in"
+       : at->geometry < 0 ? "stand-in against the exact thin disk; negative: its geometry "
+                            "cancels part of the engine's other error"
+                          : "stand-in against the exact thin disk"},
       {"time", at->time,
        isnan(at->order) ? "errors flat over dt, dt/2, dt/4: none"
                         : "Richardson over dt, dt/2, dt/4"},
@@ -40,8 +44,11 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
       {"rest", at->rest, "what the others leave"},
   };
   for (size_t i = 0; i < 4; i++)
-    printf("%-10s %12.3e %7.1f%%  %s\n", rows[i].name, rows[i].v,
-           e > 0 ? 100.0 * rows[i].v / e : 0.0, rows[i].how);
+    if (isnan(rows[i].v)) /* not applicable: no number, not a zero */
+      printf("%-10s %12s %8s  %s\n", rows[i].name, "n/a", "n/a", rows[i].how);
+    else
+      printf("%-10s %12.3e %7.1f%%  %s\n", rows[i].name, rows[i].v,
+             e > 0 ? 100.0 * rows[i].v / e : 0.0, rows[i].how);
   printf("(thin disk: %.3e at dt %g, %.3e at dt/2, %.3e at dt/4; ", at->e.dt[0], at->timestep,
          at->e.dt[1], at->e.dt[2]);
   if (isnan(at->order))

@@ -4,7 +4,9 @@
 
 #include "cli.h"
 #include "cli_args.h"
+#include "io_lock.h"
 #include "report_suite_run.h"
+#include "run_progress.h"
 #include "run_scenario.h"
 
 static const char HELP[] =
@@ -14,6 +16,7 @@ static const char HELP[] =
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
     "DIR/<scenario>/ (default DIR: report): every trajectory as CSV, the plots,\n"
     "report.json and report.md. Prints one line per engine.\n"
+    "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 int dv_cli_compare(int argc, char **argv) {
@@ -26,22 +29,24 @@ int dv_cli_compare(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("compare", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_scenario sc;
   dv_error err = {{0}};
   dv_report_explain explain;
   dv_cli_explainer(&a.sets, &explain);
-  int code;
+  int code, lock = -1;
   if (dv_cli_engine_list(list, engines, &err))
-    code = dv_cli_usage_error("compare", "%s", err.msg);
+    code = dv_cli_error("compare", "%s", err.msg);
   else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
-  else if (dv_io_make_dirs(out, &err))
+  else if (dv_io_make_dirs(out, &err) || dv_io_lock_dir(out, &lock, &err))
     code = dv_cli_error("compare", "%s", err.msg);
   else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &explain, &err)) == DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.name, err.msg);
   else
     printf("report: %s/%s/report.md\n", out, sc.name);
+  dv_io_unlock_dir(out, lock);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

@@ -7,6 +7,7 @@
 #include "dv_engine.h"
 #include "run_meta.h"
 #include "io_file.h"
+#include "run_progress.h"
 #include "run_trajectory.h"
 
 static const char HELP[] =
@@ -23,6 +24,8 @@ static const char HELP[] =
     "                  with FILE.json beside it: engine, versions, settings, outcome, stats\n"
     "  --forces FILE   the contact force along the run (references: the force rolling needs)\n"
     "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
+    "  --quiet         no progress line (shown when stderr is a terminal and the CSV is\n"
+    "                  not) and no warning before a run longer than a minute\n"
     "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
 
 /* the command once its options are read */
@@ -31,8 +34,17 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
   if (!engine_name) return dv_cli_usage_error("simulate", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_cli_unknown_engine("simulate", engine_name);
-  if (forces_path && strcmp(out_path, "-") && !strcmp(forces_path, out_path))
-    return dv_cli_usage_error("simulate", "--out and --forces name the same file '%s'", out_path);
+  char meta_path[1100];
+  snprintf(meta_path, sizeof meta_path, "%s.json", out_path);
+  const int to_stdout = !strcmp(out_path, "-"),
+            forces_to_stdout = forces_path && !strcmp(forces_path, "-");
+  if (forces_path &&
+      (to_stdout ? forces_to_stdout : !forces_to_stdout && dv_io_same_file(forces_path, out_path)))
+    return dv_cli_usage_error("simulate", "--out '%s' and --forces '%s' name the same file",
+                              out_path, forces_path);
+  if (forces_path && !to_stdout && !forces_to_stdout && dv_io_same_file(forces_path, meta_path))
+    return dv_cli_usage_error("simulate", "--forces '%s' is the file --out writes beside '%s'",
+                              forces_path, out_path);
   dv_scenario sc;
   dv_error err = {{0}};
   if (dv_engine_load_scenario(scenario, sets->items, sets->n, &sc, &err)) {
@@ -84,6 +96,7 @@ int dv_cli_simulate(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("simulate", a.quiet, !strcmp(out_path, "-"));
   const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path);
   dv_cli_args_free(&cmd, &a);
   return code;

@@ -9,33 +9,42 @@
 
 #include "cli.h"
 #include "cli_args.h"
+#include "exec_mpi.h"
+#include "io_lock.h"
 #include "report_suite.h"
 #include "report_suite_run.h"
+#include "run_progress.h"
 #include "run_scenario.h"
 #include "search_stability.h"
 #include "search_verify_suite.h"
 
 static const char HELP[] =
     "usage: diskval suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N] [--engines LIST]\n"
-    "                     [--stability | --verify]\n"
+    "                     [--timeout S] [--stability | --verify]\n"
     "\n"
     "Compare every scenario (the *.ini files of each DIR, and each FILE) as diskval\n"
     "compare does, N at a time in separate processes (default: the number of cores),\n"
     "then write DIR/index.html, DIR/summary.json and the JUnit XML (default\n"
     "DIR/junit.xml). Every scenario file is checked before anything is written.\n"
+    "A scenario still running after S seconds (--timeout, default 600; 0: no limit) is\n"
+    "ended and reported as an error, \"timed out after S s\". One run at a time writes\n"
+    "into DIR: a second one is refused.\n"
     "--stability also finds, per scenario and engine, the largest timestep that stays\n"
     "finite and within the scenario's theta tolerance (bisection), and the failure\n"
     "above it: DIR/stability.html, .md and .json, linked from index.html.\n"
     "--verify instead refines each contact engine's step and contact softness on every\n"
     "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
     "a failure wherever an engine does not converge to the reference.\n"
+    "--quiet: no progress line on a terminal (scenarios done, time left), no warning\n"
+    "before a suite longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 typedef struct suite_opts {
   const char *out, *junit, *engines;
   int jobs;
-  int stability; /* also the largest stable timesteps and failure modes */
-  int verify;    /* instead: do the engines converge to the reference */
+  int stability;  /* also the largest stable timesteps and failure modes */
+  int verify;     /* instead: do the engines converge to the reference */
+  double timeout; /* s of wall time a scenario may take (0: no limit) */
 } suite_opts;
 
 static int by_name(const void *a, const void *b) {
@@ -131,12 +140,12 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
 
 /* run the loaded scenarios and write the suite's files */
 static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_type *const *engines,
-               const dv_scenario *scs, size_t n, int *codes) {
+               const dv_scenario *scs, size_t n, int *codes, dv_error *causes) {
   dv_error err = {{0}};
-  if (dv_io_make_dirs(o->out, &err)) return dv_cli_error("suite", "%s", err.msg);
   dv_report_explain explain;
   dv_cli_explainer(sets, &explain);
-  const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, &explain, codes, &err);
+  const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, o->timeout, &explain,
+                                          codes, causes, &err);
   if (ran == DV_SUITE_RUN_WORKER) return DV_EXIT_OK; /* an MPI worker rank: rank 0 reports */
   if (ran == DV_EVENT) {
     dv_cli_error("suite", "%s", err.msg);
@@ -157,6 +166,8 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
   const int written = dv_report_suite_write(o->out, dirs, n, o->junit ? o->junit : junit, &err);
   free(dirs);
   if (written) return dv_cli_error("suite", "%s", err.msg);
+  for (size_t i = 0; i < n; i++)
+    if (codes[i] == DV_EXIT_ERROR) printf("%s: error: %s\n", scs[i].name, causes[i].msg);
   printf("%zu scenarios: %s; report: %s/index.html\n", n,
          code == DV_EXIT_OK     ? "all pass"
          : code == DV_EXIT_FAIL ? "tolerances failed"
@@ -166,7 +177,7 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
 }
 
 int dv_cli_suite(int argc, char **argv) {
-  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0};
+  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0, 600.0};
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &o.out, 0, 0},
       {"junit", DV_CLI_TEXT, &o.junit, 0, 0},
@@ -174,31 +185,43 @@ int dv_cli_suite(int argc, char **argv) {
       {"jobs", DV_CLI_INT, &o.jobs, 1, 1024},
       {"stability", DV_CLI_FLAG, &o.stability, 0, 0},
       {"verify", DV_CLI_FLAG, &o.verify, 0, 0},
+      {"timeout", DV_CLI_REAL, &o.timeout, 0, 1e9},
   };
-  const dv_cli_command cmd = {"suite", HELP, options, 6, 1, (size_t)-1};
+  const dv_cli_command cmd = {"suite", HELP, options, 7, 1, (size_t)-1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("suite", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_cli_list files = {0};
   dv_scenario *scs = NULL;
   int *codes = NULL;
+  dv_error *causes = NULL;
+  int lock = -1;
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
-  if (dv_cli_engine_list(o.engines, engines, &err))
-    code = dv_cli_usage_error("suite", "%s", err.msg);
+  if (dv_cli_engine_list(o.engines, engines, &err)) code = dv_cli_error("suite", "%s", err.msg);
   if (!code) code = list_files(&a.args, &files);
-  if (!code && (!(scs = calloc(files.n, sizeof *scs)) || !(codes = calloc(files.n, sizeof *codes))))
+  if (!code &&
+      (!(scs = calloc(files.n, sizeof *scs)) || !(codes = calloc(files.n, sizeof *codes)) ||
+       !(causes = calloc(files.n, sizeof *causes))))
     code = dv_cli_error("suite", "out of memory");
   if (!code) code = load_all(&files, &a.sets, scs);
+  /* one run at a time in --out: it removes what dead runs left there (under
+   * mpirun, rank 0 holds the lock for all the ranks) */
+  if (!code && (dv_io_make_dirs(o.out, &err) ||
+                (dv_exec_mpi_rank() == 0 && dv_io_lock_dir(o.out, &lock, &err))))
+    code = dv_cli_error("suite", "%s", err.msg);
   if (!code && o.verify)
     code = verify(&o, &files, &a.sets, engines, scs);
   else if (!code)
-    code = run(&o, &a.sets, engines, scs, files.n, codes);
+    code = run(&o, &a.sets, engines, scs, files.n, codes, causes);
+  dv_io_unlock_dir(o.out, lock);
   for (size_t i = 0; i < files.n; i++) free((char *)files.items[i]);
   free(files.items);
   free(scs);
   free(codes);
+  free(causes);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

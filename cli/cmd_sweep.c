@@ -1,4 +1,5 @@
 /* dv_cli_sweep: diskval sweep: speed against error over a grid of settings. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,6 +9,7 @@
 #include "exec_mpi.h"
 #include "io_file.h"
 #include "report_suite_run.h"
+#include "run_progress.h"
 #include "search_sweep.h"
 
 static const char HELP[] =
@@ -21,7 +23,9 @@ static const char HELP[] =
     "sweep.csv (pareto = 1 where no point is both cheaper and more accurate),\n"
     "sweep.json (with the fitted order of convergence of each curve),\n"
     "work_precision.svg (with the reference's integrators over rtol 1e-6..1e-13) and,\n"
-    "when a timestep varies, error_vs_timestep.svg.\n";
+    "when a timestep varies, error_vs_timestep.svg.\n"
+    "--quiet: no progress line on a terminal (points done, time left), no warning\n"
+    "before a sweep longer than a minute.\n";
 
 /* every varied value is a valid scenario value before anything runs */
 static int check_values(const char *scenario, const dv_cli_list *sets, const dv_vary *v,
@@ -73,6 +77,35 @@ static void print_points(const dv_sweep *s) {
   }
 }
 
+/* per curve: the order where the errors fall, and the accuracy floor with its cause */
+static void print_curves(const dv_sweep *s) {
+  for (size_t k = 0; k < s->n; k++) {
+    char label[96];
+    dv_step_fit fit;
+    dv_search_sweep_curve_label(s, k, label, sizeof label);
+    int seen = 0;
+    for (size_t j = 0; j < k && !seen; j++) {
+      char other[96];
+      dv_search_sweep_curve_label(s, j, other, sizeof other);
+      seen = !strcmp(other, label);
+    }
+    if (seen || dv_search_sweep_curve_fit(s, k, &fit)) continue;
+    printf("%s: order ", label);
+    printf(isnan(fit.order) ? "none (no falling errors)" : "%.2f over %zu points", fit.order,
+           fit.nfalling);
+    if (!isnan(fit.floor)) {
+      const char *cause = "not attributed";
+      for (size_t f = 0; f < s->nfloors; f++)
+        if (!strcmp(s->floors[f].curve, label)) cause = s->floors[f].cause;
+      printf(
+          "; accuracy floor %.3g rad: the errors stop falling at steps <= %.4g (%zu points); "
+          "cause: %s",
+          fit.floor, fit.floor_step, fit.nfloor, cause);
+    }
+    printf("\n");
+  }
+}
+
 /* the command once its options are read; s and ref are the caller's */
 static int sweep(const char *scenario, const dv_cli_list *sets, const char *engine_name,
                  const dv_cli_list *specs, const char *out, int jobs, dv_sweep *s, dv_sweep *ref) {
@@ -100,9 +133,12 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
   if (with_ref && reference_curves(scenario, sets, jobs, ref, &err) < 0)
     return dv_cli_error("sweep", "reference: %s", err.msg);
   if (dv_exec_mpi_rank() != 0) return DV_EXIT_OK; /* rank 0 writes */
+  if (!s->interrupted && dv_search_sweep_floor_causes(scenario, sets->items, sets->n, s, &err))
+    return dv_cli_error("sweep", "%s", err.msg);
   if (dv_search_sweep_write(out, s, with_ref ? ref : NULL, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   print_points(s);
+  print_curves(s);
   printf("sweep: %s/sweep.csv, %s/work_precision.svg\n", out, out);
   if (s->interrupted)
     return dv_cli_error("sweep", "stopped early: the points not run are marked missing");
@@ -123,6 +159,7 @@ int dv_cli_sweep(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("sweep", a.quiet, 0);
   dv_sweep s = {0}, ref = {0};
   const int code = sweep(a.args.items[0], &a.sets, engine, &specs, out, jobs, &s, &ref);
   dv_search_sweep_free(&s);

@@ -6,6 +6,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "dv_engine.h"
+#include "run_progress.h"
 #include "run_scenario.h"
 #include "search_verify.h"
 
@@ -18,6 +19,7 @@ static const char HELP[] =
     "discrepancy at dt -> 0. 'converges to the reference' when that is at most\n"
     "1e-4 rad; 'converges elsewhere' (with the dominant cause from attribution)\n"
     "when it is above; 'does not converge' when the errors do not fall.\n"
+    "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 every engine converges to the reference, 1 one does not,\n"
     "2 bad input or a run that fails.\n";
 
@@ -40,10 +42,11 @@ int dv_cli_verify(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("verify", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
-  if (dv_cli_engine_list(list, engines, &err)) code = dv_cli_usage_error("verify", "%s", err.msg);
+  if (dv_cli_engine_list(list, engines, &err)) code = dv_cli_error("verify", "%s", err.msg);
   for (size_t i = 0; code != DV_EXIT_ERROR && engines[i]; i++) {
     dv_verification v;
     if (dv_search_verify(a.args.items[0], a.sets.items, a.sets.n, engines[i]->name, &v, &err))

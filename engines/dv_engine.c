@@ -26,6 +26,15 @@ double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario 
   return engine->half_thickness ? engine->half_thickness(sc) : 0.0;
 }
 
+int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {
+  const dv_engine_contact *k = engine->contact;
+  if (!k) return 0;
+  const dv_setting_spec *geom = dv_settings_find(engine->settings, k->geom_key);
+  const char *shape =
+      dv_setting_choice(geom, (size_t)dv_scenario_get(sc, engine->name, k->geom_key));
+  return shape && strcmp(shape, k->thin_choice) != 0;
+}
+
 /* every engine's settings table, NULL-terminated */
 static void tables(const dv_settings_section **out) {
   size_t n = 0;
@@ -65,7 +74,13 @@ int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_
   for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
        tok = strtok_r(NULL, ", ", &save)) {
     const dv_engine_type *e = dv_engine_find(tok);
-    if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s' (see diskval engines)", tok);
+    if (!e) {
+      char names[256] = "";
+      for (const dv_engine_type *const *k = dv_engines; *k; k++)
+        snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
+                 k == dv_engines ? "" : ", ", (*k)->name);
+      return dv_fail(err, DV_EINPUT, "unknown engine '%s' (one of: %s)", tok, names);
+    }
     if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
     engines[n++] = e;
   }

@@ -137,6 +137,9 @@ const dv_engine_type *dv_engine_of_role(dv_engine_role role);
 /* the half-thickness of engine's body in sc (0: thin) */
 double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* does engine simulate a stand-in shape in sc, not the exact thin disk (0 for references) */
+int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc);
+
 /* sc, loaded against every engine's settings table (scenario.h) */
 int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
                             dv_scenario *sc, dv_error *err);

@@ -37,6 +37,15 @@ void dv_geometry_contact_vector(const dv_geometry *g, const double R[9], double 
   }
 }
 
+/* rho.z: -|E u| for the ellipsoid, -(r sin(theta) + h |cos(theta)|) for the cylinder */
+double dv_geometry_contact_height(const dv_geometry *g, const double R[9]) {
+  const double c = R[8];
+  if (g->shape == DV_SHAPE_ELLIPSOID)
+    return -sqrt(g->radius * g->radius * (R[6] * R[6] + R[7] * R[7]) +
+                 g->half_thickness * g->half_thickness * c * c);
+  return -g->radius * sqrt(fmax(0.0, 1.0 - c * c)) - g->half_thickness * fabs(c);
+}
+
 void dv_pose_from_state(const dv_geometry *g, const double y[RED_NSTATE], dv_pose *p) {
   const double th = y[RED_TH], ph = y[RED_PH], ps = y[RED_PS];
   const double s = sin(th), c = cos(th), sp = sin(ph), cp = cos(ph);

@@ -34,6 +34,9 @@ typedef struct dv_pose {
 /* contact vector from the centre to the lowest point of the body (m) */
 void dv_geometry_contact_vector(const dv_geometry *geom, const double R[9], double rho[3]);
 
+/* the z component of that vector: the lowest point's height over the centre's (m) */
+double dv_geometry_contact_height(const dv_geometry *geom, const double R[9]);
+
 /* pose and velocities of a body rolling without slip in state y */
 void dv_pose_from_state(const dv_geometry *geom, const double y[RED_NSTATE], dv_pose *pose);
 

@@ -26,6 +26,10 @@ void dv_reference_stats(const red_integrator *in, int event, const char *detail,
   out->contacts_max = 1;
   out->outcome = event >= 0 ? DV_OUTCOME_EVENT : DV_OUTCOME_COMPLETED;
   if (event >= 0) snprintf(out->detail, sizeof out->detail, "%s", detail);
+  if (red_integrator_stalled(in)[0]) { /* the progress guard ended it */
+    out->outcome = DV_OUTCOME_ERROR;
+    snprintf(out->detail, sizeof out->detail, "%s", red_integrator_stalled(in));
+  }
 }
 
 const dv_reduced_settings *dv_reference_settings(const dv_scenario *sc) {

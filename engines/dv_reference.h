@@ -11,6 +11,7 @@ typedef struct dv_reduced_settings {
   int integrator;     /* index into red_steppers */
   double rtol, atol;  /* of the integrator */
   double theta_limit; /* rad; every run ends where theta < limit or > pi - limit */
+  int max_steps;      /* step budget of a run (red_solver.h's progress guard) */
 } dv_reduced_settings;
 
 /* [engines.matched]: the geometry-matched reference, table in engine_matched.c */

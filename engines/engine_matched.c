@@ -30,16 +30,24 @@ static void matched_free(void *p) {
   free(e);
 }
 
+/* the half-thickness matched: the key's, else the disk's own (a scenario built in code
+ * and not derived yet) */
+static double half_thickness_of(const dv_scenario *sc) {
+  const double h = dv_matched_settings_of(sc)->half_thickness;
+  return isnan(h) ? 0.5 * sc->thickness : h;
+}
+
 static void *matched_alloc(const dv_scenario *sc, dv_error *err) {
   const dv_reduced_settings *r = dv_reference_settings(sc);
   const dv_matched_settings *s = dv_matched_settings_of(sc);
   matched_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
-  red_rolling_init(&e->rr, &sc->disk, s->half_thickness, s->friction, r->theta_limit);
+  red_rolling_init(&e->rr, &sc->disk, half_thickness_of(sc), s->friction, r->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
   e->in = red_integrator_alloc(&e->rr.sys, red_steppers[r->integrator], r->rtol, r->atol, err);
   if (!e->in) return matched_free(e), NULL;
+  red_integrator_set_max_steps(e->in, r->max_steps);
   return e;
 }
 
@@ -76,17 +84,25 @@ static void matched_stats(const void *p, dv_engine_stats *out) {
 #define AT(field) offsetof(dv_matched_settings, field)
 
 static const dv_setting_spec KEYS[] = {
-    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, 0.002, 0.0, 1.0, NULL, NULL, "m",
-     "half-thickness of the cylinder to match (0: the thin disk)"},
+    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, NAN, 0.0, 1.0, NULL, NULL, "m",
+     "of the cylinder to match (0: the thin disk); default: [disk] thickness / 2"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "",
      "friction coefficient that ends the validity window"},
 };
 
+/* the disk's own thickness unless given */
+static int matched_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
+  dv_matched_settings *s = block;
+  (void)issue;
+  if (isnan(s->half_thickness)) s->half_thickness = 0.5 * sc->thickness;
+  return 0;
+}
+
 static const dv_settings_section SETTINGS = {"matched", KEYS, sizeof KEYS / sizeof KEYS[0],
-                                             sizeof(dv_matched_settings), NULL};
+                                             sizeof(dv_matched_settings), matched_check};
 
 static double matched_half_thickness(const dv_scenario *sc) {
-  return dv_matched_settings_of(sc)->half_thickness;
+  return half_thickness_of(sc);
 }
 
 static int matched_tighten(dv_scenario *sc, dv_error *err) {

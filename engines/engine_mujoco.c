@@ -25,11 +25,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_format.h"
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "engine_mujoco_model.h"
 #include "engine_mujoco_thin.h"
 #include "engine_scene.h"
+#include "engine_shape.h"
 
 /* [engines.mujoco]: the defaults are the most accurate affordable settings
  * measured (README, "Engine settings"), not MuJoCo's own; the timestep and
@@ -80,9 +83,9 @@ static const dv_setting_spec KEYS[] = {
     {"solimp_width", NUM(solimp_width), 0, 0, 0.001, 0.0, 1.0, NULL, NULL, "m", ""},
     {"friction", NUM(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "", "sliding coefficient"},
     {"geom", PICK(geom), 0, 0, GEOM_THIN, 0, 2, GEOMS, NULL, "",
-     "the thin disk's rim contact, or a stand-in"},
+     "default: thin, or cylinder for a [disk] thickness > 0; else a stand-in"},
     {"half_thickness", NUM(half_thickness), 0, 0, 5e-4, 1e-6, 1.0, NULL, NULL, "m",
-     "cylinder half-length or ellipsoid semi-axis"},
+     "cylinder half-length or ellipsoid semi-axis (default: [disk] thickness / 2 if > 0)"},
 };
 
 /* The error model of engine_scene.h per integrator, h the contact time
@@ -102,16 +105,20 @@ static const dv_step_model MODELS[] = {
     {"mujoco", 0.41, 2.0, "solref_timeconst", 4e-6},
 };
 
-/* fill the timestep and time constant s leaves to the scene; why as dv_engine_derive_step */
+static const dv_shape_keys SHAPE = {"mujoco", "geom", GEOM_CYLINDER, GEOM_THIN, "half_thickness"};
+
+/* fill the timestep, time constant and shape s leaves to the scene; why as
+ * dv_engine_derive_step and dv_engine_derive_shape */
 static void derive(const dv_scenario *sc, mujoco_settings *s, char *why, size_t size,
                    const char **keys) {
   dv_engine_derive_step(sc, &MODELS[s->integrator], &s->timestep, &s->solref_timeconst, why, size,
                         keys);
+  dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, size, keys);
 }
 
 static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   char why[DV_DERIVED_BYTES];
-  const char *keys[4];
+  const char *keys[6];
   (void)issue;
   derive(sc, block, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "mujoco", keys, why);
@@ -128,8 +135,9 @@ static const mujoco_settings *settings_of(const dv_scenario *sc) {
 /* the thin disk and the smooth ellipsoid are compared with the thin disk; the cylinder with
  * its match */
 static double mujoco_half_thickness(const dv_scenario *sc) {
-  const mujoco_settings *s = settings_of(sc);
-  return s->geom == GEOM_CYLINDER ? s->half_thickness : 0.0;
+  mujoco_settings s = *settings_of(sc);
+  dv_engine_derive_shape(sc, &SHAPE, &s.geom, &s.half_thickness, NULL, 0, NULL);
+  return s.geom == GEOM_CYLINDER ? s.half_thickness : 0.0;
 }
 
 static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6, 0.02, NULL};
@@ -258,6 +266,12 @@ static int write_model(const dv_scenario *sc, const mujoco_settings *s, char *xm
   return n > 0 && (size_t)n < size ? n : -1;
 }
 
+int dv_mujoco_model_xml(const dv_scenario *sc, char *xml, size_t size) {
+  mujoco_settings set = *settings_of(sc);
+  derive(sc, &set, NULL, 0, NULL);
+  return write_model(sc, &set, xml, size);
+}
+
 /* mj_loadXML's arguments and result, for trapped() */
 typedef struct load_call {
   mjVFS *vfs;
@@ -379,11 +393,13 @@ static int check_state(mujoco_engine *e) {
     return end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_ENERGY, "energy %g J ran away (limit %g J)",
                    energy, e->e_max);
   /* n.z = cos(theta), n = R ez */
-  if (fabs(p.R[8]) > cos(e->theta_limit))
+  if (fabs(p.R[8]) > cos(e->theta_limit)) {
+    char limit[DV_FORMAT_SIZE];
+    dv_format_double(p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, limit, sizeof limit);
     return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE,
-                   "theta reached %s limit %g rad at t = %g s",
-                   p.R[8] > 0.0 ? "the lower" : "the upper",
-                   p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, d->time);
+                   "theta reached %s limit %s rad at t = %g s",
+                   p.R[8] > 0.0 ? "the lower" : "the upper", limit, d->time);
+  }
   dv_pose_lowest_point(&e->geom, &p, low, &slip);
   if (low[2] <= e->gap)
     e->off_since = -1.0;

@@ -30,11 +30,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_format.h"
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
 #include "engine_ode_thin.h"
 #include "engine_scene.h"
+#include "engine_shape.h"
 
 #define ODE_MAX_CONTACTS 4
 #define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
@@ -78,9 +80,9 @@ static const dv_setting_spec KEYS[] = {
     {"soft_erp", NUM(soft_erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "", "contact"},
     {"soft_cfm", NUM(soft_cfm), 0, 0, 1e-8, 0.0, 1.0, NULL, NULL, "", "contact"},
     {"geom", PICK(geom), 0, 0, 0, 0, 1, GEOMS, NULL, "",
-     "thin: the exact disk, one contact; cylinder: a stand-in"},
+     "thin: the exact disk, one contact (default, or cylinder for a [disk] thickness > 0)"},
     {"half_thickness", NUM(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL, "m",
-     "cylinder half-length (geom = cylinder)"},
+     "cylinder half-length (default: [disk] thickness / 2 if > 0)"},
 };
 
 /* The error model of engine_scene.h per stepper: the theta error is first
@@ -97,12 +99,15 @@ static const dv_step_model MODELS[] = {
     {"ode", 2.3, 0.0, NULL, 2.5e-6},
 };
 
+static const dv_shape_keys SHAPE = {"ode", "geom", 1, 0, "half_thickness"};
+
 static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   ode_settings *s = block;
   char why[DV_DERIVED_BYTES];
-  const char *keys[4];
+  const char *keys[6];
   (void)issue;
   dv_engine_derive_step(sc, &MODELS[s->stepper], &s->timestep, NULL, why, sizeof why, keys);
+  dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "ode", keys, why);
   return 0;
 }
@@ -112,8 +117,9 @@ static const dv_settings_section SETTINGS = {"ode", KEYS, sizeof KEYS / sizeof K
 
 /* the thin disk is compared with the thin reference; the cylinder with its match */
 static double ode_half_thickness(const dv_scenario *sc) {
-  const ode_settings *s = dv_scenario_settings(sc, SETTINGS.name);
-  return s->geom == 1 ? s->half_thickness : 0.0;
+  ode_settings s = *(const ode_settings *)dv_scenario_settings(sc, SETTINGS.name);
+  dv_engine_derive_shape(sc, &SHAPE, &s.geom, &s.half_thickness, NULL, 0, NULL);
+  return s.geom == 1 ? s.half_thickness : 0.0;
 }
 
 static const dv_engine_search SEARCH = {"ode", "stepper", "timestep", 1e-7, 0.02, NULL};
@@ -132,8 +138,11 @@ typedef struct ode_engine {
   long k;                    /* steps since reset: time = k timestep */
   double prev_y[RED_NSTATE]; /* last canonical state, for unwrapping */
   double e0;                 /* energy at reset, J */
+  double e_max;              /* runaway above this energy, J */
   double airborne;           /* s the lowest point has been off the ground */
   double theta_limit;        /* rad: the run ends at an event outside (limit, pi - limit) */
+  double cos_limit;          /* cos(theta_limit), the per-step test of n.z */
+  dContact contact;          /* every contact's surface, made once */
   int ncontacts;             /* contacts of the last collision */
   int status;                /* < 0 once the run failed */
   int broken;                /* an ODE error jumped out: the world is only destroyed */
@@ -302,11 +311,18 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
   e->set = *(const ode_settings *)dv_scenario_settings(sc, SETTINGS.name);
   /* a scenario built in code leaves the step to the scene */
   dv_engine_derive_step(sc, &MODELS[e->set.stepper], &e->set.timestep, NULL, NULL, 0, NULL);
+  dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
   e->disk = sc->disk;
   /* a cylinder with h = 0 is the thin disk: rho = r d */
   e->geom =
       (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, e->set.geom == 1 ? e->set.half_thickness : 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
+  e->cos_limit = cos(e->theta_limit);
+  e->contact.surface.mode = dContactSoftERP | dContactSoftCFM;
+  if (e->set.friction_model == 0) e->contact.surface.mode |= dContactApprox1;
+  e->contact.surface.mu = e->set.friction;
+  e->contact.surface.soft_erp = e->set.soft_erp;
+  e->contact.surface.soft_cfm = e->set.soft_cfm;
   if (ode_guarded(e, ode_build, NULL, err) < 0) return ode_free(e), NULL;
   return e;
 }
@@ -316,15 +332,8 @@ static int ode_collide(ode_engine *e, int joints) {
   dContactGeom cg[ODE_MAX_CONTACTS];
   const int n = dCollide(e->shape, e->plane, ODE_MAX_CONTACTS, cg, sizeof cg[0]);
   for (int i = 0; joints && i < n; i++) {
-    dContact c;
-    memset(&c, 0, sizeof c);
-    c.surface.mode = dContactSoftERP | dContactSoftCFM;
-    if (e->set.friction_model == 0) c.surface.mode |= dContactApprox1;
-    c.surface.mu = e->set.friction;
-    c.surface.soft_erp = e->set.soft_erp;
-    c.surface.soft_cfm = e->set.soft_cfm;
-    c.geom = cg[i];
-    dJointAttach(dJointCreateContact(e->world, e->group, &c), e->body, NULL);
+    e->contact.geom = cg[i];
+    dJointAttach(dJointCreateContact(e->world, e->group, &e->contact), e->body, NULL);
   }
   return e->ncontacts = n;
 }
@@ -346,6 +355,7 @@ static int ode_place(ode_engine *e, void *arg, dv_error *err) {
   dBodySetTorque(e->body, 0.0, 0.0, 0.0);
   ode_read_pose(e, &p);
   e->e0 = dv_pose_energy(&e->disk, &p);
+  e->e_max = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   ode_collide(e, 0);
   if (!ode_pose_finite(&p) || !isfinite(e->e0))
     return ode_failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
@@ -384,23 +394,22 @@ static int ode_step(ode_engine *e, dv_error *err) {
   if (!ode_pose_finite(&p))
     return ode_failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
   /* like the references: a disk lying down ends the run (n.z = cos theta) */
-  if (fabs(p.R[8]) > cos(e->theta_limit)) {
-    snprintf(e->st.detail, sizeof e->st.detail, "theta reached %s limit %g rad at t = %g s",
-             p.R[8] > 0.0 ? "the lower" : "the upper",
-             p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, t);
+  if (fabs(p.R[8]) > e->cos_limit) {
+    char limit[DV_FORMAT_SIZE];
+    dv_format_double(p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, limit, sizeof limit);
+    snprintf(e->st.detail, sizeof e->st.detail, "theta reached %s limit %s rad at t = %g s",
+             p.R[8] > 0.0 ? "the lower" : "the upper", limit, t);
     e->st.outcome = DV_OUTCOME_EVENT;
     e->status = DV_EVENT;
     return DV_EVENT;
   }
   const double energy = dv_pose_energy(&e->disk, &p);
-  const double limit = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
+  const double limit = e->e_max;
   if (!(energy <= limit))
     return ode_failed(e, DV_FAILURE_ENERGY, err,
                       "runaway energy at t = %g s: %g J > %g J (E0 = %g J)", t, energy, limit,
                       e->e0);
-  double rho[3];
-  dv_geometry_contact_vector(&e->geom, p.R, rho);
-  const double height = p.pos[2] + rho[2];
+  const double height = p.pos[2] + dv_geometry_contact_height(&e->geom, p.R);
   if (height < -SUNK_DEPTH * e->disk.r)
     return ode_failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
   e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + dt : 0.0;

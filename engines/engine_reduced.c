@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sundials/sundials_version.h>
 
+#include "dv_format.h"
 #include "dv_engine.h"
 #include "red_reference.h"
 #include "dv_reference.h"
@@ -46,6 +47,7 @@ static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
   e->event = -1;
   e->in = red_integrator_alloc(&e->ref.sys, red_steppers[s->integrator], s->rtol, s->atol, err);
   if (!e->in) return reduced_free(e), NULL;
+  red_integrator_set_max_steps(e->in, s->max_steps);
   return e;
 }
 
@@ -67,10 +69,11 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
 
 static void reduced_stats(const void *p, dv_engine_stats *out) {
   const reduced_engine *e = p;
-  char detail[96];
-  snprintf(detail, sizeof detail, "theta reached %s limit %g rad",
-           e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper",
-           e->event == RED_EVENT_THETA_LOW ? e->ref.theta_limit : M_PI - e->ref.theta_limit);
+  char detail[96], limit[DV_FORMAT_SIZE];
+  dv_format_double(e->event == RED_EVENT_THETA_LOW ? e->ref.theta_limit : M_PI - e->ref.theta_limit,
+                   limit, sizeof limit);
+  snprintf(detail, sizeof detail, "theta reached %s limit %s rad",
+           e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper", limit);
   dv_reference_stats(e->in, e->event, detail, out);
 }
 
@@ -85,10 +88,14 @@ static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) 
   const dv_reduced_settings *s = block;
   const double theta = sc->initial[RED_TH];
   if (theta > s->theta_limit && theta < M_PI - s->theta_limit) return 0;
+  char value[DV_FORMAT_SIZE], lo[DV_FORMAT_SIZE], hi[DV_FORMAT_SIZE];
+  dv_format_double(theta, value, sizeof value);
+  dv_format_double(s->theta_limit, lo, sizeof lo);
+  dv_format_double(M_PI - s->theta_limit, hi, sizeof hi);
   issue->section = "initial";
   issue->key = "theta";
-  snprintf(issue->what, sizeof issue->what, "%.15g is outside (%.15g, %.15g), the lying-down limits", theta,
-           s->theta_limit, M_PI - s->theta_limit);
+  snprintf(issue->what, sizeof issue->what, "%s is outside (%s, %s), the lying-down limits", value,
+           lo, hi);
   return -1;
 }
 
@@ -103,6 +110,8 @@ static const dv_setting_spec KEYS[] = {
     {"atol", DV_SETTING_REAL, AT(atol), 0, OPEN, 1e-14, 0.0, 1.0, NULL, NULL, "", "absolute"},
     {"theta_limit", DV_SETTING_REAL, AT(theta_limit), 0, OPEN, 0.01, 0.0, M_PI / 2, NULL, NULL,
      "rad", "every run ends where theta < limit or > pi - limit"},
+    {"max_steps", DV_SETTING_INT, AT(max_steps), 0, 0, (double)RED_DEFAULT_MAX_STEPS, 1, 1e9, NULL,
+     NULL, "", "step budget of a reference run: past it the run ends with an error"},
 };
 
 static const dv_settings_section SETTINGS = {"reduced", KEYS, sizeof KEYS / sizeof KEYS[0],
@@ -118,8 +127,8 @@ static int reduced_tighten(dv_scenario *sc, dv_error *err) {
 }
 
 /* the reference's own accuracy: its integrator and rtol */
-const dv_engine_search dv_reference_search = {"reduced", "integrator", "rtol", 1e-14, 1e-3,
-                                               "rtol=1e-6..1e-13:8"};
+const dv_engine_search dv_reference_search = {"reduced", "integrator", "rtol",
+                                              1e-14,     1e-3,         "rtol=1e-6..1e-13:8"};
 
 const dv_engine_type dv_engine_reduced = {
     .name = "reduced",

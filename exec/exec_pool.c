@@ -2,6 +2,8 @@
 #define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "exec_pool.h"
 
+#include "dv_clock.h"
+
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -17,9 +19,11 @@ typedef struct pool {
   size_t n, size;
   dv_exec_task_fn work;
   void *ctx;
-  char *results; /* the caller's */
-  char *slots;   /* shared with the tasks' processes, n * size bytes */
-  pid_t *pids;   /* task k's process while it runs, else 0 */
+  char *results;            /* the caller's */
+  char *slots;              /* shared with the tasks' processes, n * size bytes */
+  pid_t *pids;              /* task k's process while it runs, else 0 */
+  double *started;          /* when task k's process was made (dv_clock_now) */
+  unsigned char *timed_out; /* task k was killed at the time limit */
   const dv_exec_options *opt;
   sigset_t caller_mask; /* restored in every task's process and at the end */
   int running;
@@ -45,7 +49,8 @@ static void run_child(const pool *p, size_t k) {
 /* task k has ended: take its result if it arrived */
 static void finish(pool *p, size_t k, int ran) {
   if (ran) memcpy(p->results + k * p->size, p->slots + k * p->size, p->size);
-  if (p->opt->done) p->opt->done[k] = (unsigned char)ran;
+  if (p->opt->done)
+    p->opt->done[k] = ran ? DV_EXEC_ARRIVED : p->timed_out[k] ? DV_EXEC_TIMED_OUT : DV_EXEC_LOST;
   if (p->opt->on_result) p->opt->on_result(k, ran, p->ctx);
 }
 
@@ -67,6 +72,32 @@ static void reap(pool *p) {
 static void forward(const pool *p, int sig) {
   for (size_t k = 0; k < p->n; k++)
     if (p->pids[k] > 0) kill(p->pids[k], sig);
+}
+
+/* kill the tasks past the time limit; the seconds until the next one's
+ * limit (-1: none runs under a limit) */
+static double enforce_timeout(pool *p) {
+  if (!(p->opt->timeout > 0.0)) return -1.0;
+  const double now = dv_clock_now();
+  double next = -1.0;
+  for (size_t k = 0; k < p->n; k++) {
+    if (p->pids[k] <= 0 || p->timed_out[k]) continue;
+    const double left = p->started[k] + p->opt->timeout - now;
+    if (left <= 0.0) {
+      kill(p->pids[k], SIGKILL); /* reaped, and reported, as any ended task */
+      p->timed_out[k] = 1;
+    } else if (next < 0.0 || left < next) {
+      next = left;
+    }
+  }
+  return next;
+}
+
+/* wait for a signal of wanted, at most seconds (< 0: for ever); the signal or -1 */
+static int wait_signal(const sigset_t *wanted, double seconds) {
+  if (seconds < 0.0) return sigwaitinfo(wanted, NULL);
+  const struct timespec ts = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
+  return sigtimedwait(wanted, NULL, &ts);
 }
 
 /* fork a process per task, up to jobs at a time, until all ended or a stop */
@@ -97,12 +128,14 @@ static int run_forked(pool *p) {
         finish(p, next, 0); /* no process at all: the task is not run */
       } else {
         p->pids[next] = pid;
+        p->started[next] = dv_clock_now();
         p->running++;
       }
       next++;
     }
-    if (p->running == 0) break;                 /* all ended, or stopped */
-    const int sig = sigwaitinfo(&wanted, NULL); /* a task's end, or a stop */
+    if (p->running == 0) break; /* all ended, or stopped */
+    /* a task's end, a stop, or the next time limit */
+    const int sig = wait_signal(&wanted, enforce_timeout(p));
     if (sig == SIGINT || sig == SIGTERM) {
       stop = sig;
       forward(p, sig);
@@ -131,14 +164,18 @@ int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *r
   pool p = {.n = n, .size = size, .work = work, .ctx = ctx, .results = results, .opt = opt};
   p.slots = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   p.pids = calloc(n ? n : 1, sizeof *p.pids);
+  p.started = calloc(n ? n : 1, sizeof *p.started);
+  p.timed_out = calloc(n ? n : 1, sizeof *p.timed_out);
   int status = DV_EXEC_NOMEM;
-  if (p.slots != MAP_FAILED && p.pids) {
+  if (p.slots != MAP_FAILED && p.pids && p.started && p.timed_out) {
     if (opt->done) memset(opt->done, 0, n);
     memcpy(p.slots, results, n * size); /* a task starts from the caller's "not run" */
     status = run_forked(&p);
   }
   if (p.slots != MAP_FAILED) munmap(p.slots, bytes);
   free(p.pids);
+  free(p.started);
+  free(p.timed_out);
   return status;
 }
 

@@ -11,6 +11,10 @@
  * no task is started after that, the signal is passed on to the running
  * tasks' processes (a kill may reach only the parent), and the pool returns
  * DV_EXEC_INTERRUPTED once they have ended; done[] says which finished.
+ *
+ * With a timeout, a task's process that runs longer is killed (SIGKILL) and
+ * its done[k] says DV_EXEC_TIMED_OUT; the others go on. Under MPI there is
+ * no time limit.
  */
 #ifndef DV_POOL_H
 #define DV_POOL_H
@@ -27,10 +31,18 @@ typedef enum dv_exec_status {
   DV_EXEC_INTERRUPTED = 2, /* stopped by SIGINT or SIGTERM; results not arrived untouched */
 } dv_exec_status;
 
+/* how task k ended, in done[k] */
+typedef enum dv_exec_end {
+  DV_EXEC_LOST = 0,      /* no result: not run, its process died or could not be made */
+  DV_EXEC_ARRIVED = 1,   /* its result arrived */
+  DV_EXEC_TIMED_OUT = 2, /* no result: killed at the time limit */
+} dv_exec_end;
+
 typedef struct dv_exec_options {
   int jobs;                    /* processes at a time (below 1: one) */
   dv_exec_result_fn on_result; /* may be NULL: called as each task ends */
-  unsigned char *done;         /* may be NULL: n flags, done[k] = 1 once task k's result arrived */
+  unsigned char *done;         /* may be NULL: n dv_exec_end, one per task */
+  double timeout;              /* s of wall time a task may run (<= 0: no limit) */
 } dv_exec_options;
 
 /* run tasks 0..n-1; results[k * size] receives task k's result. A dv_exec_status. */

@@ -2,11 +2,15 @@
 #include "io_file.h"
 
 #include <errno.h>
+#include <libgen.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "io_temp.h"
 
 /* vsnprintf that refuses to cut a path short */
 int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...) {
@@ -16,6 +20,15 @@ int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...) {
   va_end(ap);
   if (len >= 0 && (size_t)len < size) return DV_OK;
   return dv_fail(err, DV_EINPUT, "path too long: %.200s...", buf);
+}
+
+/* the temporaries of path that runs killed while writing it left behind */
+static void remove_stale_of(const char *path) {
+  char dir[1024], base[1024], prefix[1040];
+  snprintf(dir, sizeof dir, "%s", path);
+  snprintf(base, sizeof base, "%s", path);
+  snprintf(prefix, sizeof prefix, "%s.tmp.", basename(base));
+  dv_io_temp_remove_stale(dirname(dir), prefix);
 }
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
@@ -36,9 +49,11 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
     return DV_OK;
   }
   snprintf(out->path, sizeof out->path, "%s", path);
-  snprintf(out->tmp_path, sizeof out->tmp_path, "%s.tmp.XXXXXX", path);
+  remove_stale_of(path);
+  if (dv_io_temp_template(out->tmp_path, sizeof out->tmp_path, path, err)) return DV_EINPUT;
   int fd = mkstemp(out->tmp_path);
   if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
+  dv_io_temp_track(out->tmp_path);
   const mode_t mask = umask(0);
   umask(mask);
   fchmod(fd, 0666 & ~mask); /* mkstemp makes it private; outputs are for reading */
@@ -46,6 +61,7 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   if (!out->fp) {
     close(fd);
     unlink(out->tmp_path);
+    dv_io_temp_forget(out->tmp_path);
     return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
   }
   return DV_OK;
@@ -76,8 +92,10 @@ int dv_io_commit(dv_io_file *out, dv_error *err) {
   if (bad || close_bad || rename(out->tmp_path, out->path)) {
     const int e = errno;
     unlink(out->tmp_path);
+    dv_io_temp_forget(out->tmp_path);
     return dv_fail(err, DV_ESYSTEM, "%s: write failed: %s", out->path, strerror(e));
   }
+  dv_io_temp_forget(out->tmp_path);
   return DV_OK;
 }
 
@@ -85,7 +103,7 @@ void dv_io_abort(dv_io_file *out) {
   if (!out || !out->fp) return;
   if (out->fp != stdout) {
     fclose(out->fp);
-    if (!out->direct) unlink(out->tmp_path);
+    if (!out->direct) unlink(out->tmp_path), dv_io_temp_forget(out->tmp_path);
   }
   out->fp = NULL;
 }
@@ -111,4 +129,24 @@ int dv_io_make_dirs(const char *path, dv_error *err) {
   if (access(buf, W_OK | X_OK))
     return dv_fail(err, DV_ESYSTEM, "%s: cannot write into it: %s", buf, strerror(errno));
   return DV_OK;
+}
+
+/* path with its directory resolved (symbolic links, ".", ".."): the file
+ * itself need not exist; 0, or -1 when the directory cannot be resolved */
+static int canonical(const char *path, char *out, size_t size) {
+  char dir[4096], base[4096], real[PATH_MAX];
+  if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir) return -1;
+  snprintf(base, sizeof base, "%s", path);
+  if (!realpath(dirname(dir), real)) return -1;
+  const int len = snprintf(out, size, "%s/%s", real, basename(base));
+  return len >= 0 && (size_t)len < size ? 0 : -1;
+}
+
+int dv_io_same_file(const char *a, const char *b) {
+  struct stat sa, sb;
+  if (stat(a, &sa) == 0 && stat(b, &sb) == 0) /* a device (/dev/null) may take both */
+    return S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  char ca[PATH_MAX + 256], cb[PATH_MAX + 256];
+  if (canonical(a, ca, sizeof ca) || canonical(b, cb, sizeof cb)) return !strcmp(a, b);
+  return !strcmp(ca, cb);
 }

@@ -1,7 +1,9 @@
 /* dv_io_file: files that appear whole or not at all, and the paths to them.
  *
  * Output goes to a temporary file beside the target and is renamed over it
- * on commit; abort (or a failed write) removes it. "-" means stdout; an
+ * on commit; abort (or a failed write), SIGINT, SIGTERM or SIGHUP (with
+ * dv_io_temp_clean_on_signals) remove it, and opening a path removes the
+ * temporaries of that path left by dead runs (io_temp.h). "-" means stdout; an
  * existing device or pipe (/dev/null) is written in place, never replaced.
  * A path that does not fit its buffer is an error, never cut short.
  */
@@ -16,7 +18,7 @@
 typedef struct dv_io_file {
   FILE *fp;
   char path[1024];     /* final name, "" for stdout */
-  char tmp_path[1040]; /* temporary name while writing */
+  char tmp_path[1060]; /* temporary name while writing: PATH.tmp.PID.XXXXXX (io_temp.h) */
   int direct;          /* a device or pipe: written in place */
 } dv_io_file;
 
@@ -30,6 +32,10 @@ int dv_io_open_in(dv_io_file *out, const char *dir, const char *name, dv_error *
 /* format a path into buf (size bytes); DV_EINPUT when it does not fit */
 int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
+
+/* a and b name the same file: the same regular file when both exist, else
+ * the same path once their directories are resolved ("x", "./x", "d/../x") */
+int dv_io_same_file(const char *a, const char *b);
 
 /* mkdir -p */
 int dv_io_make_dirs(const char *path, dv_error *err);

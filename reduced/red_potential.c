@@ -1,6 +1,7 @@
 /* red_potential: effective potential and turning points of theta. Checked by
  * tests/test_potential against the extremes of integrated trajectories. */
 #include "red_potential.h"
+#include "red_gsl_words.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -89,7 +90,7 @@ int red_theta_range(const red_disk *dk, const double y[RED_NSTATE], double theta
   if (status == GSL_SUCCESS && (kin > 1e-13 * scale || dU < -1e-9 * scale))
     status = turning_point(&fn, th + ((kin > 1e-13 * scale) ? 0.0 : 1e-9), M_PI - theta_limit,
                            &range[1], &hi_hit);
-  if (status) return dv_fail(err, DV_ENUMERIC, "turning points: %s", gsl_strerror(status));
+  if (status) return dv_fail(err, DV_ENUMERIC, "turning points: %s", red_gsl_words(status));
   *falls = lo_hit || hi_hit;
   return DV_OK;
 }

@@ -2,23 +2,29 @@
 #include "red_rolling.h"
 #include "red_vec3.h"
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_roots.h>
 #include <math.h>
 #include <string.h>
 
 const char *const red_rolling_event_names[] = {"theta_low", "theta_high", "normal_force",
                                                "friction", "upright"};
 
+/* the upright line: |cos theta| and |theta'| / sqrt(g / r) below this */
+#define UPRIGHT_LINE 1e-9
+
 typedef struct frame {
-  double s, c, sign;               /* sin, cos of theta; sign(cos theta) */
+  double s, c, sign;               /* sin, cos of theta; the side in [-1, 1] (see header) */
   double n[3], t[3], d[3], rho[3]; /* unit vectors and contact vector */
 } frame;
 
-static void make_frame(const red_rolling *rr, const double *st, frame *f) {
+/* the frame with rho = r d - h side n */
+static void frame_on_side(const red_rolling *rr, const double *st, double side, frame *f) {
   const double sp = sin(st[RR_PH]), cp = cos(st[RR_PH]);
   f->s = sin(st[RR_TH]);
   f->c = cos(st[RR_TH]);
-  f->sign = f->c >= 0.0 ? 1.0 : -1.0;
+  f->sign = side;
   const double n[3] = {f->s * cp, f->s * sp, f->c}, t[3] = {sp, -cp, 0.0};
   const double d[3] = {f->c * cp, f->c * sp, -f->s};
   for (int i = 0; i < 3; i++) {
@@ -29,6 +35,15 @@ static void make_frame(const red_rolling *rr, const double *st, frame *f) {
   }
 }
 
+/* how the disk touches the ground */
+enum { ON_CORNER = 0, ON_LINE_BALANCED, ON_LINE_TIPPING };
+
+static double contact_side(const red_rolling *rr, const double *st, int *how);
+
+static void make_frame(const red_rolling *rr, const double *st, frame *f) {
+  frame_on_side(rr, st, contact_side(rr, st, NULL), f);
+}
+
 /* theta', phi', psi' from omega */
 static void angle_rates(const frame *f, const double w[3], double rates[3]) {
   const double wn = red_dot(w, f->n), s2 = f->s * f->s;
@@ -37,11 +52,13 @@ static void angle_rates(const frame *f, const double w[3], double rates[3]) {
   rates[2] = (wn - w[2] * f->c) / s2;
 }
 
-int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3], double force[3]) {
+/* omega' and F with the contact on the given side */
+static int dynamics_on_side(const red_rolling *rr, const double *st, double side, double wdot[3],
+                            double force[3]) {
   const red_disk *dk = &rr->disk;
   const double *w = st + RR_WX, m = dk->m;
   frame f;
-  make_frame(rr, st, &f);
+  frame_on_side(rr, st, side, &f);
   if (!(f.s > 0.0)) return -1;
   double rates[3], ndot[3], rdot[3];
   angle_rates(&f, w, rates);
@@ -79,15 +96,91 @@ int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3]
   return isfinite(wdot[0] + wdot[1] + wdot[2]) ? 0 : -1;
 }
 
+typedef struct side_probe {
+  const red_rolling *rr;
+  const double *st;
+  int status;
+} side_probe;
+
+/* theta'' = -(omega'.t + omega.t'), t' = phi' (cos phi, sin phi, 0), with the contact on side */
+static double tilt_acceleration(double side, void *p) {
+  side_probe *q = p;
+  const double *st = q->st, *w = st + RR_WX;
+  double wdot[3], rates[3];
+  frame f;
+  frame_on_side(q->rr, st, side, &f);
+  if (dynamics_on_side(q->rr, st, side, wdot, NULL)) {
+    q->status = -1;
+    return 0.0;
+  }
+  angle_rates(&f, w, rates);
+  const double tdot[3] = {rates[1] * cos(st[RR_PH]), rates[1] * sin(st[RR_PH]), 0.0};
+  return -(red_dot(wdot, f.t) + red_dot(w, tdot));
+}
+
+/* the side where theta'' = 0, between the corners' a (side 1) and b (side -1) */
+static double balancing_side(side_probe *q, double a, double b) {
+  if (a == 0.0) return 1.0;
+  if (b == 0.0) return -1.0;
+  gsl_function fn = {tilt_acceleration, q};
+  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  double side = 0.0;
+  if (!s || gsl_root_fsolver_set(s, &fn, -1.0, 1.0)) {
+    if (s) gsl_root_fsolver_free(s);
+    return 0.0; /* the straight-rolling balance, by symmetry */
+  }
+  for (int iter = 0; iter < 100 && !q->status; iter++) {
+    if (gsl_root_fsolver_iterate(s)) break;
+    side = gsl_root_fsolver_root(s);
+    const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
+    if (gsl_root_test_interval(lo, hi, 1e-16, 0.0) == GSL_SUCCESS) break;
+  }
+  gsl_root_fsolver_free(s);
+  return side;
+}
+
+/* Where the disk rests on a rim corner: sign(cos theta). Exactly upright
+ * (theta = pi/2 and theta' = 0 to UPRIGHT_LINE) a thick disk stands on the
+ * line across its rim: the contact force acts at rho = r d - h side n, side
+ * in [-1, 1], wherever keeps theta'' = 0; where no point of the line can,
+ * the disk tips onto the corner that way, smoothly (no impact). *how (may
+ * be NULL) is one of ON_*. */
+static double contact_side(const red_rolling *rr, const double *st, int *how) {
+  const double c = cos(st[RR_TH]), sign = c >= 0.0 ? 1.0 : -1.0;
+  int ignored;
+  if (!how) how = &ignored;
+  *how = ON_CORNER;
+  if (!(rr->h > 0.0) || fabs(c) > UPRIGHT_LINE) return sign;
+  const double *w = st + RR_WX, t[3] = {sin(st[RR_PH]), -cos(st[RR_PH]), 0.0};
+  if (fabs(red_dot(w, t)) > UPRIGHT_LINE * sqrt(rr->disk.g / rr->disk.r)) return sign;
+  side_probe q = {rr, st, 0};
+  const double a = tilt_acceleration(1.0, &q), b = tilt_acceleration(-1.0, &q);
+  if (q.status) return sign;
+  *how = ON_LINE_TIPPING;
+  if (a < 0.0 && b < 0.0) return 1.0; /* tips towards cos theta > 0 */
+  if (a > 0.0 && b > 0.0) return -1.0;
+  *how = ON_LINE_BALANCED;
+  if (a >= 0.0 && b <= 0.0) return balancing_side(&q, a, b);
+  *how = ON_CORNER;
+  return sign;
+}
+
+int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3], double force[3]) {
+  return dynamics_on_side(rr, st, contact_side(rr, st, NULL), wdot, force);
+}
+
 static int rolling_rhs(double t, const double *st, double *out, void *p) {
   const red_rolling *rr = p;
   frame f;
   double rates[3], v[3];
-  if (red_rolling_dynamics(rr, st, out + RR_WX, NULL)) return -1;
-  make_frame(rr, st, &f);
+  int how;
+  const double side = contact_side(rr, st, &how);
+  if (dynamics_on_side(rr, st, side, out + RR_WX, NULL)) return -1;
+  frame_on_side(rr, st, side, &f);
   angle_rates(&f, st + RR_WX, rates);
   red_cross(st + RR_WX, f.rho, v); /* v_G = -omega x rho */
-  out[RR_TH] = rates[0];
+  /* on the upright line theta stays pi/2: a theta' within UPRIGHT_LINE is rounding */
+  out[RR_TH] = how == ON_LINE_BALANCED ? 0.0 : rates[0];
   out[RR_PH] = rates[1];
   out[RR_PS] = rates[2];
   out[RR_X] = -v[0];
@@ -99,7 +192,7 @@ static double frequency(const double *st, void *p) {
   const red_rolling *rr = p;
   frame f;
   double rates[3];
-  make_frame(rr, st, &f);
+  frame_on_side(rr, st, 1.0, &f); /* rates need no contact */
   angle_rates(&f, st + RR_WX, rates);
   return sqrt(rr->disk.g / rr->disk.r) + fabs(rates[0]) + fabs(rates[1]) + fabs(rates[2]);
 }
@@ -124,8 +217,12 @@ static double friction_margin(double t, const double *st, void *p) {
   return rr->mu * F[2] - hypot(F[0], F[1]);
 }
 
+/* cos theta; tipping off the upright line its sign is the corner's, which
+ * it has where it leaves the line: leaving the line is no impact */
 static double upright(double t, const double *st, void *p) {
-  return cos(st[RR_TH]);
+  int how;
+  const double side = contact_side(p, st, &how);
+  return how == ON_LINE_TIPPING ? side * UPRIGHT_LINE : cos(st[RR_TH]);
 }
 
 void red_rolling_init(red_rolling *rr, const red_disk *disk, double h, double mu,
@@ -150,7 +247,7 @@ void red_rolling_from_state(const red_rolling *rr, const double y[RED_NSTATE], d
   st[RR_PS] = y[RED_PS];
   st[RR_X] = y[RED_X];
   st[RR_Y] = y[RED_Y];
-  make_frame(rr, st, &f);
+  frame_on_side(rr, st, 1.0, &f); /* omega is not set yet: n and t need no contact */
   for (int i = 0; i < 3; i++)
     st[RR_WX + i] = y[RED_VPH] * (i == 2) - y[RED_VTH] * f.t[i] + y[RED_VPS] * f.n[i];
 }
@@ -159,7 +256,7 @@ void red_rolling_to_state(const double *st, double y[RED_NSTATE]) {
   const red_rolling dummy = {{1.0, 1.0, 1.0, 1.0, 0.0}, 0.0, 0.0, 0.0, {0}};
   frame f;
   double rates[3];
-  make_frame(&dummy, st, &f);
+  frame_on_side(&dummy, st, 1.0, &f);
   angle_rates(&f, st + RR_WX, rates);
   y[RED_TH] = st[RR_TH];
   y[RED_VTH] = rates[0];

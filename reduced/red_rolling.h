@@ -17,9 +17,16 @@
  * rho' = r d' - h sign n', d' = -theta' n - cos(theta) phi' t, n' = omega x n.
  * At h = 0 this is the thin disk of red_disk.h (tests/test_rolling).
  *
+ * Exactly upright (cos theta and theta' zero to 1e-9) a thick disk stands on
+ * the line across its rim, not on a corner: the contact force acts at
+ * rho = r d - h s n with s in [-1, 1] chosen so that theta'' = 0, and the
+ * disk stays upright (rolling straight: constant spin, the thin disk's
+ * motion). Where no point of the line balances it (turning too fast), it
+ * tips smoothly onto the corner on that side.
+ *
  * State (8): theta, phi, psi, omega (world, 3), x, y. The run ends where
- * theta reaches the lying-down limits, where a thick disk reaches upright
- * (switching rim corners is an impact), or where the rolling model stops
+ * theta reaches the lying-down limits, where a thick disk crosses upright
+ * with theta' != 0 (switching rim corners is an impact), or where the rolling model stops
  * describing the physics: the normal force F.ez would turn negative, or
  * the friction needed |F_h| would exceed mu F.ez.
  */

@@ -4,10 +4,12 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "red_solver.h"
+#include "red_gsl_words.h"
 
 struct red_integrator {
   const red_system *sys;
@@ -23,6 +25,10 @@ struct red_integrator {
   int status;      /* error inside the root finder's callback */
   size_t locating; /* event being located */
   dv_error *err;
+  long max_steps, steps; /* the budget, and the steps taken since the start */
+  int short_steps;       /* steps in a row shorter than min_step */
+  double min_step;       /* s */
+  char stalled[200];     /* why the progress guard ended the run, or "" */
 };
 
 red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_type *type,
@@ -35,7 +41,16 @@ red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_ty
   in->type = type;
   in->stepper = type->alloc(sys, rtol, atol, err);
   if (!in->stepper) return free(in), NULL;
+  in->max_steps = RED_DEFAULT_MAX_STEPS;
   return in;
+}
+
+void red_integrator_set_max_steps(red_integrator *in, long max_steps) {
+  in->max_steps = max_steps > 0 ? max_steps : RED_DEFAULT_MAX_STEPS;
+}
+
+const char *red_integrator_stalled(const red_integrator *in) {
+  return in->stalled;
 }
 
 void red_integrator_free(red_integrator *in) {
@@ -60,6 +75,11 @@ int red_integrator_reset(red_integrator *in, double t0, double t_end, const doub
   memcpy(in->y0, y0, in->sys->dim * sizeof(double));
   in->event = -1;
   in->done = 0;
+  in->steps = 0;
+  in->short_steps = 0;
+  in->stalled[0] = '\0';
+  const double scale = in->sys->frequency ? 1.0 / in->sys->frequency(y0, in->sys->params) : 0.0;
+  in->min_step = RED_MIN_STEP_FRACTION * (scale > 0.0 && isfinite(scale) ? scale : t_end - t0);
   eval_events(in->sys, t0, y0, in->g);
   return in->type->reset(in->stepper, t0, y0, err);
 }
@@ -91,8 +111,26 @@ static int locate(red_integrator *in, double ta, double tb, double *t_root) {
   *t_root = gsl_root_fsolver_root(s);
   gsl_root_fsolver_free(s);
   if (in->status) return in->status;
-  if (status) return dv_fail(in->err, DV_ENUMERIC, "event location: %s", gsl_strerror(status));
+  if (status) return dv_fail(in->err, DV_ENUMERIC, "event location: %s", red_gsl_words(status));
   return DV_OK;
+}
+
+/* the progress guard (red_solver.h): a stalled run is an error, not a hang */
+static int check_progress(red_integrator *in, double t0, double t1, double t_max, dv_error *err) {
+  in->steps++;
+  if (t1 < t_max) /* a step cut short at an output or at the end says nothing */
+    in->short_steps = t1 - t0 < in->min_step ? in->short_steps + 1 : 0;
+  if (in->short_steps >= RED_MAX_SHORT_STEPS)
+    snprintf(in->stalled, sizeof in->stalled,
+             "no progress: %d steps in a row shorter than %.3g s (%g of the scene's time scale) "
+             "at t = %.9g s",
+             in->short_steps, in->min_step, RED_MIN_STEP_FRACTION, t1);
+  else if (in->steps >= in->max_steps && t1 < in->t_end)
+    snprintf(in->stalled, sizeof in->stalled,
+             "step budget spent: %ld steps reached t = %.9g s of %.9g s", in->steps, t1, in->t_end);
+  else
+    return DV_OK;
+  return dv_fail(err, DV_ENUMERIC, "%s %s", in->type->name, in->stalled);
 }
 
 /* one internal step, then the earliest event inside it */
@@ -117,7 +155,7 @@ static int step_once(red_integrator *in, double t_max, dv_error *err) {
   }
   memcpy(in->g, g, sizeof g);
   in->t_step = t1;
-  return DV_OK;
+  return in->event < 0 ? check_progress(in, t0, t1, t_max, err) : DV_OK;
 }
 
 int red_integrator_advance(red_integrator *in, double t_out, double *t, double *y, int *event,

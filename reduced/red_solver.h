@@ -81,6 +81,20 @@ typedef struct red_integrator red_integrator;
 red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_type *stepper,
                                      double rtol, double atol, dv_error *err);
 
+/* Progress guard: a run that stalls ends with DV_ENUMERIC, never hangs. It
+ * stalls when it takes RED_MAX_SHORT_STEPS steps in a row shorter than
+ * RED_MIN_STEP_FRACTION of the scene's time scale (1 / sys->frequency at the
+ * start, else t_end - t0), or when it has taken max_steps steps. */
+#define RED_DEFAULT_MAX_STEPS 1000000L
+#define RED_MIN_STEP_FRACTION 1e-8
+#define RED_MAX_SHORT_STEPS 1000
+
+/* the step budget of the runs that follow (<= 0: RED_DEFAULT_MAX_STEPS) */
+void red_integrator_set_max_steps(red_integrator *in, long max_steps);
+
+/* why the run stalled (the progress guard), or "" */
+const char *red_integrator_stalled(const red_integrator *in);
+
 /* start again from y0 at t0; no internal step goes beyond t_end */
 int red_integrator_reset(red_integrator *in, double t0, double t_end, const double *y0,
                          dv_error *err);

@@ -2,6 +2,7 @@
  * Checked by tests/test_steady (steady circles stay steady, upright above
  * and below the critical spin). */
 #include "red_steady.h"
+#include "red_gsl_words.h"
 
 #include <gsl/gsl_deriv.h>
 #include <gsl/gsl_eigen.h>
@@ -94,7 +95,7 @@ int red_linear_stability(const red_disk *dk, const double y[RED_NSTATE],
   }
   if (w) gsl_eigen_nonsymm_free(w);
   if (ev) gsl_vector_complex_free(ev);
-  if (status) return dv_fail(err, DV_ENUMERIC, "eigenvalues: %s", gsl_strerror(status));
+  if (status) return dv_fail(err, DV_ENUMERIC, "eigenvalues: %s", red_gsl_words(status));
   *stable = re_max <= 1e-6 * fmax(big, 1e-300);
   return DV_OK;
 }

@@ -52,8 +52,11 @@ static void *ark_alloc(const red_system *sys, double rtol, double atol, dv_error
 
 static int ark_flag(ark_stepper *s, int flag, const char *what, dv_error *err) {
   if (flag >= 0) return DV_OK;
-  return dv_fail(err, DV_ENUMERIC, "ARKODE %s: %s%s%s", what, ERKStepGetReturnFlagName(flag),
-                 s->msg[0] ? ": " : "", s->msg);
+  char *name = ERKStepGetReturnFlagName(flag); /* malloc'd by SUNDIALS */
+  const int status = dv_fail(err, DV_ENUMERIC, "ARKODE %s: %s%s%s", what,
+                             name ? name : "unknown flag", s->msg[0] ? ": " : "", s->msg);
+  free(name);
+  return status;
 }
 
 static int ark_reset(void *p, double t0, const double *y0, dv_error *err) {

@@ -73,8 +73,11 @@ static void *alloc_bdf(const red_system *sys, double rtol, double atol, dv_error
 
 static int cv_flag(cv_stepper *s, int flag, const char *what, dv_error *err) {
   if (flag >= 0) return DV_OK;
-  return dv_fail(err, DV_ENUMERIC, "CVODE %s: %s%s%s", what, CVodeGetReturnFlagName(flag),
-                 s->msg[0] ? ": " : "", s->msg);
+  char *name = CVodeGetReturnFlagName(flag); /* malloc'd by SUNDIALS */
+  const int status = dv_fail(err, DV_ENUMERIC, "CVODE %s: %s%s%s", what,
+                             name ? name : "unknown flag", s->msg[0] ? ": " : "", s->msg);
+  free(name);
+  return status;
 }
 
 static int cv_reset(void *p, double t0, const double *y0, dv_error *err) {

@@ -2,7 +2,11 @@
  *
  * GSL's evolve takes free steps; dense output is the Hermite interpolant
  * (gsl_poly_dd_hermite_init) through y and y' at the last four step ends,
- * degree 7, so its error (~h^8) matches the 8th-order method. */
+ * degree 7, so its error (~h^8) matches the 8th-order method. That needs
+ * steps bounded by the motion's frequency (KAPPA below). Where the outputs are
+ * further apart than that bound makes worth it, the steps are free instead,
+ * and an output inside a step the interpolant does not cover is one step of
+ * the method from the step's start: no interpolation error there either. */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_poly.h>
@@ -10,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "red_gsl_words.h"
 #include "red_solver.h"
 
 #define NODES 4
@@ -31,8 +36,12 @@ typedef struct gsl_stepper {
   double step_fraction; /* h <= step_fraction / frequency */
   double y[RED_MAX_DIM];
   long rhs_evals;
-  int nodes;                         /* history length, <= NODES */
-  double tn[NODES];                  /* node times, oldest first */
+  gsl_odeiv2_step *onto; /* the method again, for one step onto an uncovered output */
+  double last_query;     /* the last output asked inside a step, s */
+  double query_gap;      /* the spacing of the outputs asked, s (0: none yet) */
+  int uncovered;         /* steps longer than the bound among the interpolant's last NODES - 1 */
+  int nodes;             /* history length, <= NODES */
+  double tn[NODES];      /* node times, oldest first */
   double yn[RED_MAX_DIM][NODES];     /* y at the nodes, per component */
   double fn[RED_MAX_DIM][NODES];     /* y' at the nodes */
   double dd[RED_MAX_DIM][2 * NODES]; /* divided differences */
@@ -79,6 +88,7 @@ static void gsl_free_stepper(void *p) {
   gsl_stepper *s = p;
   if (!s) return;
   if (s->driver) gsl_odeiv2_driver_free(s->driver);
+  if (s->onto) gsl_odeiv2_step_free(s->onto);
   free(s);
 }
 
@@ -90,7 +100,8 @@ static void *alloc_with(const gsl_odeiv2_step_type *type, const red_system *sys,
   s->step_fraction = fmin(0.5, KAPPA * pow(rtol, 0.125));
   s->gsys = (gsl_odeiv2_system){gsl_rhs, NULL, sys->dim, s};
   s->driver = gsl_odeiv2_driver_alloc_y_new(&s->gsys, type, 1e-4, atol, rtol);
-  if (!s->driver) {
+  s->onto = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, sys->dim);
+  if (!s->driver || !s->onto) {
     gsl_free_stepper(s);
     dv_fail(err, DV_ESYSTEM, "GSL could not allocate the %s stepper", type->name);
     return NULL;
@@ -117,32 +128,63 @@ static int gsl_reset(void *p, double t0, const double *y0, dv_error *err) {
   s->h = 1e-4; /* small first steps keep the low-degree start of the interpolant accurate */
   memcpy(s->y, y0, s->sys->dim * sizeof(double));
   s->nodes = 0;
+  s->last_query = t0;
+  s->query_gap = 0.0;
+  s->uncovered = 0;
   return push_node(s, NULL, err);
+}
+
+/* Free steps of the proposed length s->h, plus one step onto each output,
+ * cost less than bounded ones: 1/h + 1/gap < 1/h_max (steps per second) */
+static int free_step_pays(const gsl_stepper *s, double h_max) {
+  return s->query_gap > 0.0 && s->query_gap * (s->h - h_max) > s->h * h_max;
 }
 
 static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
   gsl_stepper *s = p;
+  double h_max = INFINITY;
   if (s->sys->frequency) {
-    const double h_max = s->step_fraction / s->sys->frequency(s->y, s->sys->params);
-    if (s->h > h_max) s->h = h_max;
+    h_max = s->step_fraction / s->sys->frequency(s->y, s->sys->params);
+    if (s->h > h_max && !free_step_pays(s, h_max)) s->h = h_max;
   }
   int status =
       gsl_odeiv2_evolve_apply(s->evolve, s->control, s->step, &s->gsys, &s->t, t_max, &s->h, s->y);
   if (status != GSL_SUCCESS)
     return dv_fail(err, DV_ENUMERIC, "GSL %s failed at t = %.17g: %s", s->step->type->name, s->t,
-                   gsl_strerror(status));
+                   red_gsl_words(status));
   *t = s->t;
+  if (s->evolve->last_step > h_max)
+    s->uncovered = NODES - 1;
+  else if (s->uncovered > 0)
+    s->uncovered--;
   /* rk8pd and msadams leave y' at the step's end in dydt_out */
   return push_node(s, s->evolve->dydt_out, err);
 }
 
+/* y at t inside the last step: one step of the method from the step's start
+ * (shorter than the step it took, so within its tolerance) */
+static int step_onto(gsl_stepper *s, double t, double *y, dv_error *err) {
+  const size_t n = s->sys->dim, k = (size_t)s->nodes - 2;
+  double yerr[RED_MAX_DIM], f[RED_MAX_DIM];
+  for (size_t i = 0; i < n; i++) {
+    y[i] = s->yn[i][k];
+    f[i] = s->fn[i][k];
+  }
+  gsl_odeiv2_step_reset(s->onto);
+  if (gsl_odeiv2_step_apply(s->onto, s->tn[k], t - s->tn[k], y, yerr, f, NULL, &s->gsys))
+    return dv_fail(err, DV_ENUMERIC, "state left the domain at t = %.17g", t);
+  return DV_OK;
+}
+
 static int gsl_dense(void *p, double t, double *y, dv_error *err) {
   gsl_stepper *s = p;
-  (void)err;
   if (t == s->t) {
     memcpy(y, s->y, s->sys->dim * sizeof(double));
     return DV_OK;
   }
+  s->query_gap = fabs(t - s->last_query);
+  s->last_query = t;
+  if (s->uncovered) return step_onto(s, t, y, err);
   if (!s->dd_valid) {
     for (size_t i = 0; i < s->sys->dim; i++)
       gsl_poly_dd_hermite_init(s->dd[i], s->z, s->tn, s->yn[i], s->fn[i], (size_t)s->nodes);

@@ -10,7 +10,9 @@
  *     "duration": s, "output_dt": s,
  *     "reference": {"engine": "reduced", "integrator": NAME, "rtol": x,
  *                   "outcome": "completed"|"event", "detail": TEXT, "t_end": s,
- *                   "version": TEXT, "horizon": s | null (predictable to the end)},
+ *                   "version": TEXT, "horizon": s | null (predictable to the end),
+ *                   "wall_s": s, its run's wall-clock time,
+ *                   "horizon_wall_s": s, the nudged runs' that find the horizon},
  *     "pass": bool,                       every engine passed
  *     "engines": {
  *       ENGINE: {
@@ -18,7 +20,9 @@
  *         "path_hausdorff", "energy_drift", "slip_max":  numbers, against the
  *                                  geometry-matched reference (the thin disk
  *                                  for a thin or ellipsoid stand-in),
- *         "wall_per_sim_s": s per simulated s (the only timing field),
+ *         "wall_per_sim_s": s per simulated s; null for a run shorter than
+ *                           one output_dt,
+ *         "wall_s": s, the run's wall-clock time (the timing fields: wall_*),
  *         "steps": n,
  *         "outcome": "agrees"|"exceeds tolerance"|"diverged"|"lost contact"
  *                    |"ended by event"|"error"|"not judged",
@@ -39,19 +43,34 @@
  *                                   (geometry, time step, contact softness and
  *                                   slip, the rest, with its share), or ""
  *         "reference_half_thickness": m,   of its matched reference
+ *         "reference_note": TEXT,   why that reference is not the one for its
+ *                                   geometry (a thick one that crossed upright
+ *                                   falls back to the thin disk), or ""
+ *         "reference": {"engine": "matched" | "reduced", "half_thickness": m,
+ *                       "integrator": NAME, "rtol": x, "outcome": TEXT, "t_end": s,
+ *                       "wall_s": s (its own run; 0: the thin one above)}:
+ *                                   the reference this engine was judged against
  *         "vs_thin": {METRIC: value, ...}, the same metrics against the thin disk
- *         "geometry_share": {"theta_max_err": x, "path_max_err": y},
+ *         "geometry_share": {"theta_max_err": x, "path_max_err": y, "why": TEXT},
  *                                   1 - vs_matched / vs_thin: the share of the
- *                                   discrepancy the stand-in's geometry explains
+ *                                   discrepancy the stand-in's geometry explains;
+ *                                   null with why "n/a: ..." where the engine was
+ *                                   not compared with its own geometry's
+ *                                   reference; why says it where a share is
+ *                                   negative (the geometry cancels other error)
  *         "version": TEXT, "settings": {KEY: value, ...}
  *       }, ...
  *     },
  *     "plots": ["theta.svg", ...]
  *   }
+ * A scenario whose run failed (an error, a time limit, a crash) has an error
+ * report instead, report.md and report.json {"scenario", "file", "pass":
+ * false, "error": CAUSE, "engines": {}} (report_suite_dir.h).
  * Suite, in OUT/: index.html, summary.json ({"pass": bool, "scenarios":
  * [{"scenario", "dir", "pass", "engines": {ENGINE: {"pass", "outcome",
- * "theta_max_err", "path_max_err", "wall_per_sim_s", "failures"}}}]}), and
- * the JUnit XML (one test case per scenario x engine).
+ * "theta_max_err", "path_max_err", "wall_per_sim_s", "failures", "limits",
+ * "reference"}}}]}), and the JUnit XML (a test suite per scenario, a test
+ * case per engine with its numbers as properties: report_suite.h).
  */
 #ifndef DV_REPORT_H
 #define DV_REPORT_H

@@ -22,6 +22,7 @@
 
 #include <plplot.h>
 
+#include "io_temp.h"
 #include "report_plot_internal.h"
 
 const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg",
@@ -68,11 +69,13 @@ typedef struct curve {
 /* one plot: its title and curves, the thin reference first */
 typedef struct figure {
   plot_kind kind;
-  char title[256];
+  char title[512];
   size_t ncurves;
   curve c[DV_PLOT_MAX_SERIES + 1];
-  double limit;   /* error plot: the theta limit, log10 (NAN: none) */
-  double horizon; /* error plot: the horizon, s (NAN: none) */
+  double limit;        /* error plot: the theta limit, log10 (NAN: none) */
+  double horizon;      /* error plot: the horizon, s (NAN: none) */
+  double window_end;   /* s, where the comparison stopped (NAN: none) */
+  double window_at[2]; /* path plot: the reference's contact point there (NAN: none) */
 } figure;
 
 void dvp_escape(char *out, size_t size, const char *text, const char *suffix) {
@@ -138,29 +141,51 @@ static int curve_has_data(const curve *c) {
   return 0;
 }
 
-/* set up the curves of one plot; -1 out of memory */
+/* the thin reference's contact point at the end of the window, on the path
+ * plot, when its run goes on after it */
+static void window_point(figure *f, const dv_traj *thin) {
+  f->window_at[0] = f->window_at[1] = NAN;
+  if (!thin || thin->n == 0 || !(f->window_end < thin->s[thin->n - 1].t)) return;
+  for (size_t i = 0; i < thin->n && thin->s[i].t <= f->window_end; i++) {
+    f->window_at[0] = thin->s[i].contact[0];
+    f->window_at[1] = thin->s[i].contact[1];
+  }
+}
+
+/* set up the curves of one plot, leaving out those without data (the title
+ * names them); -1 out of memory */
 static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
   memset(f, 0, sizeof *f);
   f->kind = kind;
   f->limit = kind == PLOT_ERROR && in->theta_limit > 0.0 ? log10(in->theta_limit) : NAN;
   f->horizon = kind == PLOT_ERROR && isfinite(in->horizon) ? in->horizon : NAN;
-  char name[160];
+  f->window_end = in->window_end > 0.0 && isfinite(in->window_end) ? in->window_end : NAN;
+  if (kind == PLOT_PATH) window_point(f, in->thin);
+  char name[160], missing[256] = "";
   dvp_escape(name, sizeof name, in->title, "");
-  snprintf(f->title, sizeof f->title, "%s: %s", name, kinds[kind].what);
-  if (kind != PLOT_ERROR) {
-    curve *c = &f->c[f->ncurves++];
-    c->colour = COL_FG;
-    if (fill_curve(c, kind, in->thin, NULL)) return -1;
-    dvp_escape(c->label, sizeof c->label, "reference (thin disk)",
-               curve_has_data(c) ? "" : " (no data)");
+  for (size_t k = 0; k <= in->nseries; k++) {
+    if (k == 0 && kind == PLOT_ERROR) continue; /* the thin reference has no error */
+    const dv_plot_series *s = k ? &in->series[k - 1] : NULL;
+    curve *c = &f->c[f->ncurves];
+    c->colour =
+        s ? (PLINT)(COL_SERIES + (dv_report_plot_engine_colour(s->label) - 1) % DVP_NPALETTE)
+          : COL_FG;
+    if (fill_curve(c, kind, s ? s->traj : in->thin, s ? s->reference : NULL)) return -1;
+    const char *label = s ? s->label : "reference (thin disk)";
+    if (curve_has_data(c)) {
+      dvp_escape(c->label, sizeof c->label, label, "");
+      f->ncurves++;
+      continue;
+    }
+    free(c->x), free(c->y);
+    memset(c, 0, sizeof *c);
+    const size_t used = strlen(missing);
+    snprintf(missing + used, sizeof missing - used, "%s%s", used ? ", " : "", label);
   }
-  for (size_t k = 0; k < in->nseries; k++) {
-    const dv_plot_series *s = &in->series[k];
-    curve *c = &f->c[f->ncurves++];
-    c->colour = (PLINT)(COL_SERIES + k);
-    if (fill_curve(c, kind, s->traj, s->reference)) return -1;
-    dvp_escape(c->label, sizeof c->label, s->label, curve_has_data(c) ? "" : " (no data)");
-  }
+  char note[300] = "";
+  if (missing[0]) dvp_escape(note, sizeof note, missing, ")");
+  snprintf(f->title, sizeof f->title, "%s: %s%s%s", name, kinds[kind].what,
+           note[0] ? " (no data: " : "", note);
   return 0;
 }
 
@@ -255,14 +280,26 @@ static void draw_ends(const curve *c) {
   plpoin(1, &c->x[last], &c->y[last], 5);
 }
 
-/* a legend right of the viewport, one line per curve */
-static void draw_legend(const figure *f) {
+/* the points of f's curves, for placing its legend; the longest label's length */
+static size_t legend_points(const figure *f, dvp_points *pts) {
+  size_t longest = 0;
+  for (size_t k = 0; k < f->ncurves; k++) {
+    pts[k] = (dvp_points){f->c[k].x, f->c[k].y, f->c[k].n};
+    if (strlen(f->c[k].label) > longest) longest = strlen(f->c[k].label);
+  }
+  return longest;
+}
+
+/* a legend inside the viewport, one line per curve, where it hides the fewest points */
+static void draw_legend(const figure *f, const double r[4]) {
   PLINT opt[DV_PLOT_MAX_SERIES + 1], tcol[DV_PLOT_MAX_SERIES + 1], lcol[DV_PLOT_MAX_SERIES + 1];
   PLINT lstyle[DV_PLOT_MAX_SERIES + 1];
   PLFLT lwidth[DV_PLOT_MAX_SERIES + 1];
   const char *text[DV_PLOT_MAX_SERIES + 1];
   const PLINT n = (PLINT)f->ncurves;
   if (n == 0) return;
+  dvp_points pts[DV_PLOT_MAX_SERIES + 1];
+  const size_t longest = legend_points(f, pts);
   for (PLINT k = 0; k < n; k++) {
     opt[k] = PL_LEGEND_LINE;
     tcol[k] = COL_FG;
@@ -272,10 +309,11 @@ static void draw_legend(const figure *f) {
     text[k] = f->c[k].label;
   }
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.02, 0.0, 0.05, COL_BG, COL_FG, 1, n, 1, n,
-           opt, 0.8, 0.65, 2.0, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol, lstyle, lwidth, NULL,
-           NULL, NULL, NULL);
+  const PLINT where = dvp_legend_corner(pts, (size_t)n, r, n, 1, longest);
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, where, DVP_LEGEND_OFFSET,
+           DVP_LEGEND_OFFSET, DVP_LEGEND_LINE, COL_BG, COL_FG, 1, n, 1, n, opt, 0.8,
+           DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
+           lstyle, lwidth, NULL, NULL, NULL, NULL);
 }
 
 void dvp_decade_label(PLINT axis, PLFLT value, char *label, PLINT length, PLPointer data) {
@@ -297,12 +335,41 @@ static void draw_limits(const figure *f, const double r[4]) {
   pllsty(1);
 }
 
+/* where the comparison stopped, when the run goes on after it: a dash-dotted
+ * line over time (labelled at the bottom), a diamond on the reference's path */
+static void draw_window_end(const figure *f, const double r[4], double t_last) {
+  if (f->kind == PLOT_PATH) {
+    if (!dvp_plottable(f->window_at[0]) || !dvp_plottable(f->window_at[1])) return;
+    plstring(1, &f->window_at[0], &f->window_at[1], DVP_DIAMOND);
+    const int left = f->window_at[0] > 0.5 * (r[0] + r[1]); /* the label stays in the frame */
+    const double gap = (left ? -0.02 : 0.02) * (r[1] - r[0]);
+    plptex(f->window_at[0] + gap, f->window_at[1] - 0.04 * (r[3] - r[2]), 1, 0, left ? 1.0 : 0.0,
+           DVP_WINDOW_END);
+    return;
+  }
+  if (!(f->window_end > r[0] && f->window_end < t_last - 1e-9 * fabs(t_last))) return;
+  pllsty(4);
+  pljoin(f->window_end, r[2], f->window_end, r[3]);
+  pllsty(1);
+  plptex(f->window_end, r[2] + 0.05 * (r[3] - r[2]), 0, 1, -0.05, DVP_WINDOW_END);
+}
+
+/* the latest time drawn: the end of the run */
+static double last_time(const figure *f) {
+  double t = -INFINITY;
+  for (size_t k = 0; k < f->ncurves; k++)
+    for (size_t i = 0; i < f->c[k].n; i++)
+      if (point_ok(&f->c[k], i)) t = fmax(t, f->c[k].x[i]);
+  return t;
+}
+
 /* draw figure f (a figure *) on the current, initialised stream */
 static void draw_figure(const void *arg) {
   const figure *f = arg;
   const int logy = f->kind == PLOT_ERROR;
   double r[4];
   const int any = data_range(f, r);
+  const double t_last = last_time(f); /* the path plot's x is no time: unused there */
   if (!any) {
     r[0] = 0, r[1] = 1;
     r[2] = logy ? -16 : 0, r[3] = logy ? 0 : 1;
@@ -317,8 +384,11 @@ static void draw_figure(const void *arg) {
   /* small variations about a large value need long tick labels: more room */
   const int narrow = !logy && r[3] - r[2] < 1e-3 * fmax(fabs(r[2]), fabs(r[3]));
   pladv(0);
-  plvpor(narrow ? 0.16 : 0.12, 0.68, 0.12, 0.88);
+  plvpor(narrow ? 0.16 : 0.12, DVP_VIEWPORT_RIGHT, 0.12, 0.88);
   plsyax(8, 0);
+  dvp_points pts[DV_PLOT_MAX_SERIES + 1];
+  const size_t longest = legend_points(f, pts);
+  dvp_legend_make_room(pts, f->ncurves, r, (int)f->ncurves, 1, longest);
   if (f->kind == PLOT_PATH) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(COL_GRID);
@@ -340,8 +410,9 @@ static void draw_figure(const void *arg) {
   plwidth(1.0);
   plcol0(COL_FG);
   draw_limits(f, r);
+  draw_window_end(f, r, t_last);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
-  draw_legend(f);
+  draw_legend(f, r);
 }
 
 int dvp_have_svg(void) {
@@ -376,7 +447,9 @@ int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error 
   const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
   const int dirlen = slash ? (int)(slash + 1 - path) : 0; /* with its '/' */
   if (!*base) return dv_fail(err, DV_EINPUT, "%s: no file name", path);
-  if (snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.XXXXXX", dirlen, path, base) >= (int)sizeof tmp)
+  char prefix[PATH_MAX];
+  if (snprintf(prefix, sizeof prefix, "%.*s.%s", dirlen, path, base) >= (int)sizeof prefix ||
+      dv_io_temp_template(tmp, sizeof tmp, prefix, NULL))
     return dv_fail(err, DV_ESYSTEM, "%s: path too long", path);
   if (strstr(tmp, "%n")) /* PLplot would read it as a file family pattern */
     return dv_fail(err, DV_ESYSTEM, "%s: PLplot cannot write a path containing %%n", path);

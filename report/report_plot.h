@@ -7,6 +7,13 @@
  *   path.svg         contact paths, equal aspect, start and end marked
  *   energy.svg       (E(t) - E(0)) / |E(0)| per engine and reference
  *
+ * Each engine has its colour (dv_report_plot_engine_colour), the thin
+ * reference is black. A series without a drawable point is left out and the
+ * title says "(no data: NAME, ...)". Where the compared window ends before the
+ * run does, a dash-dotted line marks it over time ("window end"), and a
+ * diamond the reference's contact point there on the path. Legends are inside
+ * the frame, in the corner where they hide the fewest points.
+ *
  * and, separately, dv_report_plot_xy: one generic x-y plot (see below).
  */
 #ifndef DV_PLOT_H
@@ -20,7 +27,7 @@
 #define DV_PLOT_MAX_SERIES 8
 
 typedef struct dv_plot_series {
-  const char *label;        /* legend text, e.g. "mujoco" */
+  const char *label;        /* the engine's name, e.g. "mujoco": legend text and colour */
   const dv_traj *traj;      /* the engine's samples */
   const dv_traj *reference; /* what its error is measured against (same times) */
 } dv_plot_series;
@@ -32,7 +39,14 @@ typedef struct dv_plot_input {
   dv_plot_series series[DV_PLOT_MAX_SERIES];
   double theta_limit; /* rad, drawn on the error plot (0 or NAN: none) */
   double horizon;     /* s, the reference's predictability horizon, marked there (INFINITY: none) */
+  double window_end;  /* s, where the comparison stopped; marked when the runs go on
+                         after it (0 or NAN: none) */
 } dv_plot_input;
+
+/* the colour (dv_plot_curve.colour) of an engine in every plot: 0 (black) for
+ * the thin-disk reference, a palette colour of its own for each other engine
+ * of the registry, a stable one for any other name */
+int dv_report_plot_engine_colour(const char *name);
 
 /* the names of the files dv_report_plot_scenario writes, NULL-terminated */
 extern const char *const dv_report_plot_files[];
@@ -43,9 +57,10 @@ int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *
 /* ---- generic x-y plot ------------------------------------------------------
  *
  * dv_report_plot_xy draws up to DV_PLOT_MAX_CURVES curves into one SVG file, with a
- * legend right of the plot listing every curve in the order given (a curve
- * with nothing drawable is listed as "label (no data)"). Uses: work-precision
- * diagrams (log-log, Pareto points marked), error against time step, U(theta),
+ * legend inside the frame (in the corner where it hides the fewest points)
+ * listing every labelled curve in the order given; a curve with nothing
+ * drawable is left out of it and named in the title, "(no data: label)".
+ * Uses: work-precision diagrams (log-log, Pareto points marked), error against time step, U(theta),
  * phase planes (a black reference level set under coloured trajectories).
  *
  * flags:
@@ -90,11 +105,11 @@ typedef struct dv_plot_curve {
   const int *marked;   /* optional, n flags: marked points drawn with a larger distinct
                           symbol (e.g. Pareto points) */
   int style;           /* DV_CURVE_* */
-  int colour;          /* 0 black (references), >= 1 the palette of the other plots:
-                          colour k is series k - 1's colour of dv_report_plot_scenario
-                          (1 blue, 2 orange, 3 green, 4 red, 5 purple, 6 brown,
-                          7 pink, 8 grey, 9 olive, 10 cyan, 11 navy, 12 dark green,
-                          13 ochre, 14 maroon, 15 magenta, 16 teal; 17 is 1 again) */
+  int colour;          /* 0 black (references), >= 1 the palette of the other plots;
+                          an engine's is dv_report_plot_engine_colour (1 blue, 2 orange,
+                          3 green, 4 red, 5 purple, 6 brown, 7 pink, 8 grey, 9 olive,
+                          10 cyan, 11 navy, 12 dark green, 13 ochre, 14 maroon,
+                          15 magenta, 16 teal; 17 is 1 again) */
 } dv_plot_curve;
 
 /* one SVG at path (written under a temporary name in path's directory and renamed) */

@@ -27,6 +27,31 @@ enum {
 #define DVP_PAGE_H 500       /* px */
 #define DVP_PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
 
+#define DVP_VIEWPORT_RIGHT 0.95     /* of the page: the legend is inside the frame */
+#define DVP_LEGEND_OFFSET 0.02      /* legend from the frame's corner, of the viewport */
+#define DVP_LEGEND_LINE 0.05        /* length of a legend's line sample, of the viewport */
+#define DVP_LEGEND_SCALE 0.8        /* legend text, of the default character height */
+#define DVP_LEGEND_SPACING 2.0      /* between legend lines, in character heights */
+#define DVP_DIAMOND "\xe2\x97\x86"  /* U+25C6 black diamond: the window's end on a path */
+#define DVP_WINDOW_END "window end" /* the label of where the comparison stopped */
+
+/* the points of one curve, in plot coordinates */
+typedef struct dvp_points {
+  const double *x, *y;
+  size_t n;
+} dvp_points;
+
+/* pllegend's position for a legend of nlines lines, in ncolumns, whose longest
+ * text has longest bytes: inside the current viewport (window r: x0, x1, y0,
+ * y1), in the corner where it would hide the fewest points of pts[0..npts) */
+PLINT dvp_legend_corner(const dvp_points *pts, size_t npts, const double r[4], int nlines,
+                        int ncolumns, size_t longest);
+
+/* widen the window r (before plwind, the viewport set) so a legend of that
+ * size fits in a corner without hiding any point: the top is raised */
+void dvp_legend_make_room(const dvp_points *pts, size_t npts, double r[4], int nlines, int ncolumns,
+                          size_t longest);
+
 /* copy text into out with PLplot's escape character doubled, then suffix */
 void dvp_escape(char *out, size_t size, const char *text, const char *suffix);
 

@@ -32,7 +32,8 @@ typedef struct xy_curve {
 } xy_curve;
 
 typedef struct xy_figure {
-  const char *title, *xlabel, *ylabel;
+  const char *xlabel, *ylabel;
+  char title[768];  /* the caller's, then "(no data: ...)" naming the curves left out */
   int flags, marks; /* marks: a drawn point is marked */
   size_t n;
   xy_curve c[DV_PLOT_MAX_CURVES];
@@ -70,7 +71,7 @@ static int fill_curve(xy_curve *c, const dv_plot_curve *in, int flags) {
     c->y[i] = axis_value(in->y[i], flags & DV_PLOT_LOGY);
     c->any |= point_ok(c, i);
   }
-  dvp_escape(c->label, sizeof c->label, in->label, c->any ? "" : " (no data)");
+  dvp_escape(c->label, sizeof c->label, in->label, "");
   return 0;
 }
 
@@ -129,15 +130,39 @@ static void draw_marks(const xy_curve *c) {
   plschr(0, 1.0);
 }
 
-/* a legend right of the viewport: every curve, then the marks if any */
-static void draw_legend(const xy_figure *f) {
+/* the points of f's curves, for placing its legend; its lines into *nlines and
+ * its longest text's length */
+static size_t legend_points(const xy_figure *f, dvp_points *pts, int *nlines) {
+  size_t longest = f->marks ? strlen(MARK_TEXT) : 0;
+  *nlines = f->marks;
+  for (size_t k = 0; k < f->n; k++) {
+    const xy_curve *c = &f->c[k];
+    pts[k] = (dvp_points){c->x, c->y, c->n};
+    if (!c->any || !c->label[0]) continue;
+    ++*nlines;
+    if (strlen(c->label) > longest) longest = strlen(c->label);
+  }
+  return longest;
+}
+
+/* the legend's columns for nlines lines: two for more than 8 (up to 17 lines) */
+static int legend_columns(int nlines) {
+  return nlines > 8 ? 2 : 1;
+}
+
+/* a legend inside the frame: every labelled curve with data, then the marks if any */
+static void draw_legend(const xy_figure *f, const double r[4]) {
   enum { M = DV_PLOT_MAX_CURVES + 1 };
   PLINT opt[M], tcol[M], lcol[M], lstyle[M], scol[M], snum[M];
   PLFLT lwidth[M], sscale[M];
   const char *text[M], *sym[M];
+  dvp_points pts[DV_PLOT_MAX_CURVES];
+  int nlines;
+  const size_t longest = legend_points(f, pts, &nlines);
   PLINT n = 0;
-  for (size_t k = 0; k < f->n; k++, n++) {
+  for (size_t k = 0; k < f->n; k++) {
     const xy_curve *c = &f->c[k];
+    if (!c->any || !c->label[0]) continue;
     opt[n] = c->style == DV_CURVE_LINE     ? PL_LEGEND_LINE
              : c->style == DV_CURVE_POINTS ? PL_LEGEND_SYMBOL
                                            : PL_LEGEND_LINE | PL_LEGEND_SYMBOL;
@@ -148,7 +173,7 @@ static void draw_legend(const xy_figure *f) {
     sscale[n] = DOT_SCALE;
     snum[n] = 3;
     sym[n] = DOT;
-    text[n] = c->label;
+    text[n++] = c->label;
   }
   if (f->marks) {
     opt[n] = PL_LEGEND_SYMBOL;
@@ -161,12 +186,13 @@ static void draw_legend(const xy_figure *f) {
     text[n++] = MARK_TEXT;
   }
   if (n == 0) return;
-  const int many = n > 10; /* up to 17 lines: closer together */
+  const PLINT columns = legend_columns(n), rows = (n + columns - 1) / columns;
+  const PLINT where = dvp_legend_corner(pts, f->n, r, n, columns, longest);
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.02, 0.0, 0.05, DVP_COL_BG, DVP_COL_FG, 1, n,
-           1, n, opt, 0.8, many ? 0.7 : 0.8, many ? 1.8 : 2.0, 0.0, tcol, text, NULL, NULL, NULL,
-           NULL, lcol, lstyle, lwidth, scol, sscale, snum, sym);
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, where, DVP_LEGEND_OFFSET,
+           DVP_LEGEND_OFFSET, DVP_LEGEND_LINE, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
+           0.8, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
+           lstyle, lwidth, scol, sscale, snum, sym);
 }
 
 /* the options of one axis's box (y: labels parallel to it), its tick step in decades */
@@ -191,8 +217,12 @@ static void draw_figure(const void *arg) {
   /* small variations about a large value need long tick labels: more room */
   const int narrow = !logy && r[3] - r[2] < 1e-3 * fmax(fabs(r[2]), fabs(r[3]));
   pladv(0);
-  plvpor(narrow ? 0.16 : 0.12, 0.68, 0.12, 0.88);
+  plvpor(narrow ? 0.16 : 0.12, DVP_VIEWPORT_RIGHT, 0.12, 0.88);
   plsyax(8, 0);
+  dvp_points pts[DV_PLOT_MAX_CURVES];
+  int nlines;
+  const size_t longest = legend_points(f, pts, &nlines);
+  dvp_legend_make_room(pts, f->n, r, nlines, legend_columns(nlines), longest);
   if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(DVP_COL_GRID);
@@ -204,7 +234,7 @@ static void draw_figure(const void *arg) {
   const char *yopt = box_opts(logy, 1, r[3] - r[2], &ystep);
   if (xstep > 1 || ystep > 1) plslabelfunc(dvp_decade_label, NULL);
   plbox(xopt, xstep, 0, yopt, ystep, 0);
-  pllab(f->xlabel ? f->xlabel : "", "", f->title ? f->title : "");
+  pllab(f->xlabel ? f->xlabel : "", "", f->title);
   plmtex("l", narrow ? 8.0 : logy ? 5.5 : 5.0, 0.5, 0.5, f->ylabel ? f->ylabel : "");
   for (int black = 1; black >= 0; black--) /* black references wide, underneath */
     for (size_t k = 0; k < f->n; k++) {
@@ -218,7 +248,19 @@ static void draw_figure(const void *arg) {
   for (size_t k = 0; k < f->n; k++) draw_marks(&f->c[k]);
   plcol0(DVP_COL_FG);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
-  draw_legend(f);
+  draw_legend(f, r);
+}
+
+/* f's title: title, then "(no data: ...)" naming the labelled curves without a drawable point */
+static void title_with_missing(xy_figure *f, const char *title) {
+  size_t k = (size_t)snprintf(f->title, sizeof f->title, "%s", title ? title : "");
+  int named = 0;
+  for (size_t i = 0; i < f->n && k < sizeof f->title; i++) {
+    if (f->c[i].any || !f->c[i].label[0]) continue;
+    k += (size_t)snprintf(f->title + k, sizeof f->title - k, "%s%s",
+                          named++ ? ", " : " (no data: ", f->c[i].label);
+  }
+  if (named && k < sizeof f->title) snprintf(f->title + k, sizeof f->title - k, ")");
 }
 
 /* free the coordinates of f */
@@ -246,7 +288,6 @@ int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, c
   if (!dvp_have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
   xy_figure *f = calloc(1, sizeof *f);
   if (!f) return dv_fail(err, DV_ESYSTEM, "%s: out of memory", path);
-  f->title = title;
   f->xlabel = xlabel;
   f->ylabel = ylabel;
   f->flags = flags;
@@ -258,6 +299,7 @@ int dv_report_plot_xy(const char *path, const char *title, const char *xlabel, c
     else
       for (size_t i = 0; i < c->n && !f->marks; i++) f->marks = point_marked(c, i);
   }
+  if (status == DV_OK) title_with_missing(f, title);
   if (status == DV_OK) status = dvp_write_svg(path, draw_figure, f, err);
   free_figure(f);
   free(f);

@@ -12,18 +12,12 @@
 
 #include "io_file.h"
 #include "report_escape.h"
+#include "report_suite_internal.h"
 
 #define MAX_REPORT_BYTES (64L << 20) /* a larger report.json is taken as broken */
 #define PATH_CAP 4096
 
-/* one scenario: its parsed report, or why it has none usable */
-typedef struct entry {
-  const char *dir;      /* relative to out_dir */
-  const char *name;     /* the report's "scenario", else dir */
-  cJSON *report;        /* parsed report.json (may be set even on error) */
-  const cJSON *engines; /* its "engines" object, NULL on error */
-  char error[768];      /* "" when the report is usable */
-} entry;
+typedef dvs_entry entry;
 
 /* the page's only style: pass green, FAIL red, harness ERROR amber */
 static const char css[] =
@@ -33,22 +27,6 @@ static const char css[] =
     ".pass{background:#c8f0c8;color:#075207}.fail{background:#f6c4c4;color:#8b0000}"
     ".err{background:#ffe0a0;color:#7a4200}figure{display:inline-block;margin:.5em}"
     "img{max-width:560px;border:1px solid #ddd}section{border-top:2px solid #ccc}";
-
-/* member key of object o, NULL when absent or o is not an object */
-static const cJSON *item(const cJSON *o, const char *key) {
-  return cJSON_IsObject(o) ? cJSON_GetObjectItemCaseSensitive(o, key) : NULL;
-}
-
-/* string member key of o, "" when absent */
-static const char *text(const cJSON *o, const char *key) {
-  const cJSON *s = item(o, key);
-  return cJSON_IsString(s) && s->valuestring ? s->valuestring : "";
-}
-
-/* an engine passed only when its report says "pass": true */
-static int engine_pass(const cJSON *eng) {
-  return cJSON_IsTrue(item(eng, "pass"));
-}
 
 /* a scenario passed: usable report that says so, every engine passing */
 static int scenario_pass(const entry *e) {
@@ -104,6 +82,8 @@ static void load_entry(const char *out_dir, const char *dir, entry *e) {
   const cJSON *engines = item(e->report, "engines");
   if (!cJSON_IsObject(e->report))
     unusable(e, "not a JSON object", "");
+  else if (*text(e->report, "error")) /* an error report: the run's own cause */
+    snprintf(e->error, sizeof e->error, "%s", text(e->report, "error"));
   else if (!cJSON_IsObject(engines) || !engines->child)
     unusable(e, "no engines compared", "");
   else
@@ -122,6 +102,7 @@ static cJSON *copy_or_null(const cJSON *o, const char *key) {
 /* summary.json as text (caller frees), NULL when out of memory */
 static char *summary_text(const entry *es, size_t n, int pass) {
   static const char *const keys[] = {"outcome", "theta_max_err", "path_max_err", "wall_per_sim_s"};
+  static const char *const objects[] = {"limits", "reference"}; /* copied whole */
   cJSON *root = cJSON_CreateObject();
   cJSON_AddBoolToObject(root, "pass", pass);
   cJSON *list = cJSON_AddArrayToObject(root, "scenarios");
@@ -144,6 +125,11 @@ static char *summary_text(const entry *es, size_t n, int pass) {
       cJSON_AddItemToObject(
           o, "failures",
           cJSON_IsArray(failures) ? cJSON_Duplicate(failures, 1) : cJSON_CreateArray());
+      for (size_t k = 0; k < sizeof objects / sizeof *objects; k++) {
+        const cJSON *v = item(eng, objects[k]);
+        cJSON_AddItemToObject(o, objects[k],
+                              cJSON_IsObject(v) ? cJSON_Duplicate(v, 1) : cJSON_CreateNull());
+      }
     }
   }
   char *out = cJSON_Print(root); /* report strings are copied as they are: make it UTF-8 */
@@ -278,23 +264,14 @@ static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i)
   fputs(nlinks ? "</p>\n</section>\n" : "none</p>\n</section>\n", fp);
 }
 
-/* wall-clock seconds of engine eng: wall_per_sim_s x simulated window */
-static double wall_seconds(const cJSON *report, const cJSON *eng) {
-  const cJSON *rate = item(eng, "wall_per_sim_s"), *span = item(eng, "window_end");
-  if (!cJSON_IsNumber(span)) span = item(report, "duration");
-  if (!cJSON_IsNumber(rate) || !cJSON_IsNumber(span)) return 0.0;
-  const double w = rate->valuedouble * span->valuedouble;
-  return isfinite(w) && w > 0.0 ? w : 0.0;
-}
-
-/* engine runs, failing ones, errored scenarios and total wall seconds (if total) */
-static void tally(const entry *es, size_t n, int *runs, int *failing, int *errors, double *total) {
+/* engine runs, failing ones and errored scenarios */
+static void tally(const entry *es, size_t n, int *runs, int *failing, int *errors) {
   for (size_t i = 0; i < n; i++) {
     const cJSON *eng;
     *errors += es[i].error[0] != 0;
     cJSON_ArrayForEach(eng, es[i].engines) {
-      ++*runs, *failing += !engine_pass(eng);
-      if (total) *total += wall_seconds(es[i].report, eng);
+      ++*runs;
+      *failing += !engine_pass(eng);
     }
   }
 }
@@ -302,7 +279,7 @@ static void tally(const entry *es, size_t n, int *runs, int *failing, int *error
 /* index.html: title, summary table, one section per scenario */
 static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n, int pass) {
   int runs = 0, failing = 0, errors = 0;
-  tally(es, n, &runs, &failing, &errors, NULL);
+  tally(es, n, &runs, &failing, &errors);
   fprintf(fp,
           "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
           "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"
@@ -336,60 +313,6 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
           fp);
   for (size_t i = 0; i < n; i++) put_section(fp, out_dir, &es[i], i);
   fputs("</body>\n</html>\n", fp);
-}
-
-/* the <failure> of engine eng: its listed failures, else how it ended */
-static void put_failure(FILE *fp, const entry *e, const cJSON *eng) {
-  const cJSON *list = item(eng, "failures"), *first = NULL, *f;
-  cJSON_ArrayForEach(f, list) if (!first && cJSON_IsString(f)) first = f;
-  if (first) {
-    dv_report_escape_put(fp, "      <failure message=\"", first->valuestring, 1, "\">");
-    int nf = 0;
-    cJSON_ArrayForEach(f, list) if (cJSON_IsString(f))
-        dv_report_escape_put(fp, nf++ ? "\n" : "", f->valuestring, 0, "");
-  } else {
-    char why[1024];
-    snprintf(why, sizeof why, "%s: %s: %s%s%s", e->name, eng->string,
-             *text(eng, "outcome") ? text(eng, "outcome") : "failed",
-             *text(eng, "detail") ? ": " : "", text(eng, "detail"));
-    dv_report_escape_put(fp, "      <failure message=\"", why, 1, "\">");
-    dv_report_escape(fp, why, 0);
-  }
-  fputs("</failure>\n", fp);
-}
-
-/* the JUnit XML: one test case per scenario x engine, one per errored scenario */
-static void write_junit(FILE *fp, const entry *es, size_t n) {
-  int tests = 0, failures = 0, errors = 0;
-  double total = 0.0;
-  char counts[160];
-  tally(es, n, &tests, &failures, &errors, &total);
-  tests += errors; /* an errored scenario is a test case of its own */
-  snprintf(counts, sizeof counts, "tests=\"%d\" failures=\"%d\" errors=\"%d\" time=\"%.3f\">\n",
-           tests, failures, errors, total);
-  fprintf(fp, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"diskval\" %s",
-          counts);
-  fprintf(fp, "  <testsuite name=\"diskval\" %s", counts);
-  for (size_t i = 0; i < n; i++) {
-    const entry *e = &es[i];
-    const cJSON *eng;
-    if (e->error[0]) {
-      dv_report_escape_put(fp, "    <testcase classname=\"", e->name, 1, "\"");
-      dv_report_escape_put(fp, " name=\"", e->dir, 1, "\" time=\"0.000\">\n");
-      dv_report_escape_put(fp, "      <error message=\"", e->error, 1, "\">");
-      dv_report_escape_put(fp, "", e->error, 0, "</error>\n    </testcase>\n");
-    }
-    cJSON_ArrayForEach(eng, e->engines) {
-      dv_report_escape_put(fp, "    <testcase classname=\"", e->name, 1, "\"");
-      dv_report_escape_put(fp, " name=\"", eng->string, 1, "\"");
-      fprintf(fp, " time=\"%.3f\"%s", wall_seconds(e->report, eng),
-              engine_pass(eng) ? " />\n" : ">\n");
-      if (engine_pass(eng)) continue;
-      put_failure(fp, e, eng);
-      fputs("    </testcase>\n", fp);
-    }
-  }
-  fputs("  </testsuite>\n</testsuites>\n", fp);
 }
 
 /* load every report, then write the files: all opened before any is committed */
@@ -430,7 +353,7 @@ int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs,
   fputs(summary, outs[0].fp);
   fputc('\n', outs[0].fp);
   write_html(outs[1].fp, out_dir, es, n, pass);
-  if (junit_path) write_junit(outs[2].fp, es, n);
+  if (junit_path) dvs_write_junit(outs[2].fp, es, n);
   for (int k = 0; k < 3 && !status; k++)
     if (targets[k]) status = dv_io_commit(&outs[k], err);
 cleanup:

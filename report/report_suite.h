@@ -4,13 +4,16 @@
  * holding report.json (schema in dv_report.h) and the files it names. A
  * scenario whose report.json is missing, unreadable, not a JSON object or
  * without engines (e.g. the harness failed on it) is a harness error: it
- * still appears, and never stops the others.
+ * still appears, and never stops the others. An error report (one with an
+ * "error": CAUSE, report_suite_dir.h) is a harness error with that cause.
  *
  * Output, each file written atomically (dv_io_file.h):
  *   out_dir/summary.json
  *     {"pass": bool, "scenarios": [{"scenario", "dir", "pass", "engines":
  *     {ENGINE: {"pass", "outcome", "theta_max_err", "path_max_err",
- *     "wall_per_sim_s", "failures": [..]}}}]}: scenarios in the order given,
+ *     "wall_per_sim_s", "failures": [..], "limits": {..}, "reference": {..}}}}]}:
+ *     limits and reference copied from the report (null when it has none);
+ *     scenarios in the order given,
  *     engines in report order, a field the report lacks is null. An errored
  *     scenario has "pass": false, "engines": {}, "error": TEXT, and is named
  *     by its report if it has a name, else by its dir. A scenario passes when
@@ -25,12 +28,19 @@
  *     trajectory CSVs. A file is referenced only if it exists; a name with
  *     '/' never. URLs are percent-encoded.
  *   junit_path, unless NULL ("-": stdout; relative to the working directory)
- *     <testsuites><testsuite name="diskval" tests= failures= errors= time=>,
- *     per scenario x engine a <testcase classname=SCENARIO name=ENGINE
- *     time=S> with S = wall_per_sim_s x window_end (duration if absent),
- *     "%.3f"; a failing engine carries <failure message=FIRST>ALL</failure>
- *     (its outcome and detail when it lists no failure). An errored scenario
- *     is one test case, named after its dir, carrying <error>.
+ *     <testsuites tests= failures= errors= time=>, per scenario a
+ *     <testsuite name=SCENARIO ... time=> whose <properties> name its file
+ *     and reference, timed by its reference runs and its engines'; per
+ *     engine a <testcase classname=SCENARIO name=ENGINE time=S>, S its run's
+ *     wall_s (older reports: wall_per_sim_s x window_end), "%.6f", whose
+ *     <properties> give, passing or not, outcome, reference (engine,
+ *     half-thickness or thin disk, integrator and rtol), for every metric
+ *     METRIC, METRIC.limit, METRIC.margin ("%.6g", "none" when not judged)
+ *     and METRIC.limit_from, window_end, pointwise_end and decided; a
+ *     failing engine then carries <failure message=FIRST>ALL</failure> (its
+ *     outcome and detail when it lists no failure). An errored scenario is a
+ *     test suite of one test case, named after its dir, carrying <error>.
+ *     Valid against tests/fixtures/junit.xsd (what GitLab and Jenkins read).
  * All report text is HTML/XML-escaped and made valid UTF-8 (bad bytes and
  * control characters become '?'). Identical inputs give identical bytes: no
  * clock, no absolute paths; only the timing numbers vary with the reports.

@@ -1,8 +1,9 @@
 /* dv_suite: scenarios run into report directories, one process each.
  *
  * A scenario's directory OUT/<name>/ is built under a temporary name and
- * renamed into place when complete, replacing an older one: an interrupted or
- * failed run never leaves a half-written report. The scenarios are tasks of
+ * renamed into place when complete, replacing an older one: an interrupted
+ * run never leaves a half-written report, and a failed one leaves an error
+ * report with its cause (report_suite_dir.h), never an earlier report. The scenarios are tasks of
  * the exec pool (exec_pool.h): each runs in its own process (MuJoCo's and
  * ODE's error handlers are process-wide), at most jobs at a time, and one
  * that crashes is an error of its own; under mpirun the ranks share them.
@@ -32,7 +33,8 @@ typedef struct dv_report_explain {
 
 /* compare sc and write OUT/<name>/ (an engine that exceeds a limit gets its
  * cause from explain, when given); print a line per engine to stdout when
- * verbose. Returns a dv_suite_result. */
+ * verbose. Returns a dv_suite_result; DV_SUITE_ERROR with its cause in err
+ * and in OUT/<name>/ as an error report. */
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
                             const char *out_dir, int verbose, const dv_report_explain *explain,
                             dv_error *err);
@@ -40,14 +42,21 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
 /* dv_report_suite_run_all on an MPI worker rank: rank 0 has the results */
 #define DV_SUITE_RUN_WORKER 2
 
-/* run scenarios[0..n) in up to jobs processes; each one's dv_suite_result
- * into codes[] (DV_SUITE_ERROR for one that did not finish), a progress
- * line on stderr when it is a terminal. SIGINT or SIGTERM stops it: running
- * scenarios are ended, their temporary directories removed, finished
+/* run scenarios[0..n) in up to jobs processes, each for at most timeout
+ * seconds of wall time (<= 0: no limit; none under MPI); each one's
+ * dv_suite_result into codes[] and, for DV_SUITE_ERROR, its cause into
+ * causes[] and on stderr: a scenario over the time limit ("timed out after
+ * N s") or whose process died gets its error report too. The caller holds
+ * out_dir's lock (io_lock.h): temporaries that dead runs left there are
+ * removed first, those of the scenarios ended early at the end. Progress
+ * is counted on the progress line (run_progress.h). SIGINT or SIGTERM
+ * stops it: running scenarios are ended, their temporary directories
+ * removed, finished
  * reports kept; returns DV_EVENT then (err says how many finished), else
  * DV_OK, or DV_SUITE_RUN_WORKER. */
 int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n,
                             const dv_engine_type *const *engines, const char *out_dir, int jobs,
-                            const dv_report_explain *explain, int *codes, dv_error *err);
+                            double timeout, const dv_report_explain *explain, int *codes,
+                            dv_error *causes, dv_error *err);
 
 #endif

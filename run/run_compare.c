@@ -30,32 +30,6 @@ void dv_run_traj_free(dv_traj *tr) {
   tr->n = tr->cap = 0;
 }
 
-/* distance from p to the segment a-b */
-static double segment_distance(const double p[2], const double a[2], const double b[2]) {
-  const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
-  double u = len2 > 0.0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2 : 0.0;
-  u = fmin(1.0, fmax(0.0, u));
-  return hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy);
-}
-
-/* the largest distance from a vertex of a to the polyline b */
-static double directed(const double (*a)[2], size_t na, const double (*b)[2], size_t nb) {
-  double worst = 0.0;
-  for (size_t i = 0; i < na; i++) {
-    double best = INFINITY;
-    if (nb == 1) best = hypot(a[i][0] - b[0][0], a[i][1] - b[0][1]);
-    for (size_t j = 0; j + 1 < nb && best > worst; j++)
-      best = fmin(best, segment_distance(a[i], b[j], b[j + 1]));
-    if (best > worst) worst = best;
-  }
-  return worst;
-}
-
-double dv_run_hausdorff(const double (*a)[2], size_t na, const double (*b)[2], size_t nb) {
-  if (!na || !nb) return (na || nb) ? INFINITY : 0.0;
-  return fmax(directed(a, na, b, nb), directed(b, nb, a, na));
-}
-
 void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metrics *out) {
   size_t n = e->n < ref->n ? e->n : ref->n;
   while (n > 0 && (e->s[n - 1].t > t_end || ref->s[n - 1].t > t_end ||

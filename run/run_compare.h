@@ -22,6 +22,7 @@
 #include <stddef.h>
 
 #include "dv_engine.h"
+#include "run_hausdorff.h"
 
 /* a trajectory: samples in time order */
 typedef struct dv_traj {
@@ -46,8 +47,5 @@ void dv_run_compare(const dv_traj *engine, const dv_traj *reference, double t_en
  * over the momentum scale sqrt(2 E0 (A + m r^2)); NAN where they cannot be
  * evaluated (C = 0 in a contact engine, theta at 0 or pi) */
 double dv_run_invariant_drift(const red_disk *disk, const dv_traj *tr, double t_end);
-
-/* Hausdorff distance between two polylines of points (x, y), m */
-double dv_run_hausdorff(const double (*a)[2], size_t na, const double (*b)[2], size_t nb);
 
 #endif

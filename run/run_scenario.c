@@ -10,12 +10,19 @@
 #include "dv_reference.h"
 #include "run_horizon.h"
 #include "run_limits.h"
+#include "run_progress.h"
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
-/* did the matched reference end where the thick disk reaches upright */
-static int crossed_upright(const dv_traj *tr) {
-  return tr->n > 0 && fabs(cos(tr->s[tr->n - 1].y[RED_TH])) < 1e-9;
+/* did the matched reference end at an event where the thick disk crosses
+ * upright (standing on the upright line it runs on, red_rolling.h) */
+static int crossed_upright(const dv_traj *tr, const dv_engine_stats *st) {
+  return st->outcome == DV_OUTCOME_EVENT && tr->n > 0 &&
+         fabs(cos(tr->s[tr->n - 1].y[RED_TH])) < 1e-9;
+}
+
+double dv_run_cost_rate(double wall_s, double sim_s, double output_dt) {
+  return sim_s >= output_dt && sim_s > 0.0 ? wall_s / sim_s : NAN;
 }
 
 static void add_failure(dv_engine_result *r, const char *fmt, ...)
@@ -136,10 +143,13 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   if (n > DV_MAX_ENGINES) return dv_fail(err, DV_EINPUT, "at most %d engines", DV_MAX_ENGINES);
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
-  int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, NULL, err);
+  dv_run_progress_plan(sc, ref_sc, engines, n); /* a long comparison says so first */
+  int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, &c->thin_wall_s, err);
   if (status < 0) return status;
   c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
+  const double t_horizon = dv_clock_now();
   status = dv_run_horizon(ref_sc, &c->thin, &c->horizon, c->spread, err);
+  c->horizon_wall_s = dv_clock_now() - t_horizon;
   if (status < 0) return status;
   for (size_t i = 0; i < n; i++) {
     dv_engine_result *r = &c->r[c->n++];
@@ -155,13 +165,19 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       dv_scenario match = *ref_sc;
       status =
           dv_scenario_set_number(&match, matched->name, "half_thickness", r->half_thickness, err);
-      if (!status) status = run_into(matched, &match, &r->matched, &r->matched_stats, NULL, err);
+      if (!status)
+        status = run_into(matched, &match, &r->matched, &r->matched_stats, &r->matched_wall_s, err);
       if (status < 0) return status;
       ref = &r->matched;
       ref_end = INFINITY; /* the matched reference ends at its own validity limit */
-      if (crossed_upright(&r->matched)) {
+      if (crossed_upright(&r->matched, &r->matched_stats)) {
         /* a thick disk at upright switches rim corners: neither model holds;
          * the thin disk is the nearer description */
+        char note[sizeof r->reference_note];
+        snprintf(note, sizeof note,
+                 "compared with the thin disk: its own, the %s reference (h = %g m), ended: %.100s",
+                 matched->name, r->half_thickness, r->matched_stats.detail);
+        memcpy(r->reference_note, note, sizeof note);
         r->half_thickness = 0.0;
         dv_run_traj_free(&r->matched);
         ref = &c->thin;

@@ -33,6 +33,7 @@ typedef struct dv_engine_result {
   double half_thickness; /* of its reference: 0 for the thin disk */
   dv_traj matched;       /* that reference's samples when half_thickness > 0 */
   dv_engine_stats matched_stats;
+  double matched_wall_s;            /* wall-clock time of that reference's run, s */
   dv_metrics vs_ref, vs_thin;       /* against its own reference, and the thin disk */
   double tolerance[DV_NMETRICS];    /* limits (run_limits.h): never none */
   char limit_why[DV_NMETRICS][112]; /* where each limit came from */
@@ -40,6 +41,7 @@ typedef struct dv_engine_result {
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
   char decided[160];                /* which part decided the verdict, and why */
   char cause[96];                   /* an excess's dominant cause, from attribution ("": unknown) */
+  char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -50,6 +52,8 @@ typedef struct dv_comparison {
   const dv_scenario *sc;
   dv_traj thin; /* the thin-disk reference */
   dv_engine_stats thin_stats;
+  double thin_wall_s;         /* wall-clock time of the thin reference's run, s */
+  double horizon_wall_s;      /* of the nudged reference runs that find the horizon, s */
   double thin_valid_end;      /* where rolling stops describing the physics, s */
   double horizon;             /* s: the reference is predictable up to here (run_horizon.h) */
   double spread[DV_NMETRICS]; /* what a nudge of the reference alone moves each metric by */
@@ -69,5 +73,9 @@ void dv_run_comparison_free(dv_comparison *c);
 
 /* 1 for a metric that compares samples at equal times (judged up to the horizon) */
 int dv_run_metric_pointwise(dv_metric_id metric);
+
+/* wall-clock seconds per simulated second; NaN when the run simulated
+ * less than one output interval: a rate over next to nothing says nothing */
+double dv_run_cost_rate(double wall_s, double sim_s, double output_dt);
 
 #endif

@@ -6,6 +6,7 @@
 
 #include "dv_format.h"
 #include "red_solver.h"
+#include "run_progress.h"
 
 /* a row of n numbers into line: t to 12 significant digits (the grid time), the rest exact */
 static size_t format_row(char *line, double t, const double *v, int n) {
@@ -56,6 +57,7 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
   /* the first sample is read back from the engine: its own view of the start */
   if (!status) status = type->advance(engine, 0.0, &s, err);
   if (!status && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "out of memory");
+  dv_run_progress_run_begin(sc->name, type->name, sc->duration);
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
     status = type->advance(engine, t, &s, err);
@@ -64,8 +66,10 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
       break;
     }
     if (status >= 0 && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "output failed");
+    if (status >= 0) dv_run_progress_run_at(s.t);
     if (t >= sc->duration) break;
   }
+  dv_run_progress_run_end();
   type->stats(engine, stats);
   if (status == DV_ENUMERIC && stats->outcome < DV_OUTCOME_DIVERGED) {
     /* the engine did not see it: the harness's own check caught it */

@@ -1,8 +1,9 @@
 /* scenario: a scenario file, parsed (inih) and validated against a schema.
  *
  * Sections and keys (radians, SI units), see README "Scenario files":
- *   [scenario]   name, description, duration, output_dt, engines
- *   [disk]       radius, mass, A, C, gravity     (A, C default to a uniform disk)
+ *   [scenario]   name, description, duration, output_dt, engines, memory_budget
+ *   [disk]       radius, mass, thickness, A, C, gravity
+ *                (A, C default to a uniform disk of that thickness; thickness to 0, thin)
  *   [initial]    theta and phi, psi, x, y, theta_dot, phi_dot, psi_dot
  *                or theta + steady_circle_radius, or theta + steady_phi_dot
  *   [engines.NAME]   the settings of engine NAME, as its own table declares
@@ -28,6 +29,12 @@
 /* what a scenario name may hold: it names the report's directory, so it is
  * one path component of these characters, and not "." or ".." */
 #define DV_SCENARIO_NAME_CHARS "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._-+"
+
+/* the memory a run takes: DV_MEMORY_BASE_MIB MiB plus DV_MEMORY_PER_SAMPLE
+ * bytes a sample (duration / output_dt); an upper bound on the peak RSS of
+ * compare with four engines (tests/check_memory.sh, README "Reliability") */
+#define DV_MEMORY_PER_SAMPLE 1024
+#define DV_MEMORY_BASE_MIB 64
 
 typedef enum dv_init_mode {
   DV_INIT_STATE = 0,     /* the state is given key by key */
@@ -70,10 +77,12 @@ typedef struct dv_scenario {
   char path[1024];
   char name[64];
   char description[256];
-  char engines[64]; /* engines a comparison runs, e.g. "mujoco, ode" ("": the default) */
-  double duration;  /* s */
-  double output_dt; /* s */
+  char engines[64];     /* engines a comparison runs, e.g. "mujoco, ode" ("": the default) */
+  double duration;      /* s */
+  double output_dt;     /* s */
+  double memory_budget; /* GiB: a run whose samples would need more is refused */
   red_disk disk;
+  double thickness; /* m, [disk] thickness, full: 0 the thin disk, else what the engines model */
   dv_init_mode init_mode;
   double initial[RED_NSTATE];                  /* resolved initial state */
   double steady_circle_radius, steady_phi_dot; /* m, rad/s as given; NAN when not */
@@ -87,6 +96,7 @@ typedef struct dv_scenario {
    * line saying why, per section ("" when nothing was derived) */
   char derived[DV_MAX_ENGINE_SECTIONS][DV_DERIVED_BYTES];
   unsigned derived_keys[DV_MAX_ENGINE_SECTIONS]; /* bit i: the section's key i was derived */
+  unsigned given_keys[DV_MAX_ENGINE_SECTIONS];   /* bit i: the file, --set or code set key i */
 } dv_scenario;
 
 /* engines: NULL-terminated, at most DV_MAX_ENGINE_SECTIONS, each named after
@@ -122,6 +132,10 @@ const char *dv_scenario_derived(const dv_scenario *sc, const char *engine);
 /* 1 when [engines.ENGINE] key was derived (and not set since), else 0 */
 int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char *key);
 
+/* 1 when [engines.ENGINE] key was given (file, --set, dv_scenario_set*), else 0:
+ * a section's check derives only what was not */
+int dv_scenario_is_given(const dv_scenario *sc, const char *engine, const char *key);
+
 /* for a section's check: record why, naming the keys derived (NULL-terminated) */
 void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,
                              const char *why);
@@ -133,5 +147,9 @@ double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metri
 
 /* 0 when name may name a scenario (DV_SCENARIO_NAME_CHARS), else -1 with what set */
 int dv_scenario_check_name(const char *name, char *what, size_t size);
+
+/* the memory a run of sc takes, GiB (DV_MEMORY_BASE_MIB plus DV_MEMORY_PER_SAMPLE
+ * a sample); a load refuses more than sc->memory_budget. *samples: the count */
+double dv_scenario_memory_gib(const dv_scenario *sc, double *samples);
 
 #endif

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_format.h"
 #include "red_steady.h"
 
 const char *const dv_metric_names[DV_NMETRICS] = {
@@ -43,15 +44,26 @@ static int issue(dv_setting_issue *is, const char *section, const char *key, con
   return -1;
 }
 
+/* v as the shortest text that reads back to it, in buf (DV_FORMAT_SIZE bytes) */
+static const char *num(double v, char *buf) {
+  dv_format_double(v, buf, DV_FORMAT_SIZE);
+  return buf;
+}
+
 static int find_engine(const dv_scenario *sc, const char *name) {
   for (size_t i = 0; i < sc->nsections; i++)
     if (!strcmp(sc->sections[i]->name, name)) return (int)i;
   return -1;
 }
 
+double dv_scenario_memory_gib(const dv_scenario *sc, double *samples) {
+  *samples = floor(sc->duration / sc->output_dt) + 1.0;
+  return (DV_MEMORY_BASE_MIB * 1048576.0 + *samples * DV_MEMORY_PER_SAMPLE) / 1073741824.0;
+}
+
 /* [scenario]: a name that is one path component, known engines, sample count */
 static int check_scenario(dv_scenario *sc, void *block, dv_setting_issue *is) {
-  char list[64], names[128] = "", what[200];
+  char list[64], names[128] = "", what[200], a[DV_FORMAT_SIZE], b[DV_FORMAT_SIZE];
   if (dv_scenario_check_name(sc->name, what, sizeof what))
     return issue(is, "scenario", "name", "%s", what);
   snprintf(list, sizeof list, "%s", sc->engines);
@@ -64,31 +76,46 @@ static int check_scenario(dv_scenario *sc, void *block, dv_setting_issue *is) {
     if (find_engine(sc, tok) < 0 || count == sc->nsections)
       return issue(is, "scenario", "engines", "'%s': at most %zu of %s", tok, sc->nsections, names);
   if (sc->output_dt > sc->duration)
-    return issue(is, "scenario", "output_dt", "%g s is longer than the duration %g s",
-                 sc->output_dt, sc->duration);
+    return issue(is, "scenario", "output_dt", "%s s is longer than the duration %s s",
+                 num(sc->output_dt, a), num(sc->duration, b));
   if (sc->duration / sc->output_dt > 1e7)
     return issue(is, "scenario", "output_dt", "more than 1e7 samples (duration / output_dt)");
+  /* refused before any work: a run keeps every sample in memory */
+  double samples;
+  const double need_gib = dv_scenario_memory_gib(sc, &samples);
+  if (need_gib > sc->memory_budget)
+    return issue(is, "scenario", "output_dt",
+                 "%.0f samples need about %.3g GiB of memory (%d bytes a sample plus %d MiB), "
+                 "more than memory_budget = %g GiB",
+                 samples, need_gib, DV_MEMORY_PER_SAMPLE, DV_MEMORY_BASE_MIB, sc->memory_budget);
   return 0;
 }
 
-/* [disk]: A and C of a uniform disk unless given; no rigid body has C > 2A */
+/* [disk]: a disk thinner than its diameter; A and C of a uniform disk of that
+ * thickness unless given (a solid cylinder: A = m (r^2 / 4 + t^2 / 12)); no
+ * rigid body has C > 2A */
 static int check_disk(dv_scenario *sc, void *block, dv_setting_issue *is) {
   red_disk *d = &sc->disk;
-  const double mr2 = d->m * d->r * d->r;
+  const double mr2 = d->m * d->r * d->r, t = sc->thickness;
   const int given_c = !isnan(d->C);
   const int given_a = !isnan(d->A);
-  if (!given_a) d->A = 0.25 * mr2;
+  char a[DV_FORMAT_SIZE], b[DV_FORMAT_SIZE];
+  if (!(t < 2.0 * d->r))
+    return issue(is, "disk", "thickness", "%s m is not less than the diameter %s m: not a disk",
+                 num(t, a), num(2.0 * d->r, b));
+  if (!given_a) d->A = 0.25 * mr2 + d->m * t * t / 12.0;
   if (!given_c) d->C = 0.5 * mr2;
   /* a tiny radius or mass can make the derived moments underflow to zero */
   if (!(d->A > 0.0) || !isfinite(d->A))
     return issue(is, "disk", given_a ? "A" : "radius",
-                 given_a ? "A = %.15g must be a positive finite number"
-                         : "A = m r^2 / 4 = %.15g (derived from the radius and mass) is not a "
-                           "positive finite number",
-                 d->A);
+                 given_a ? "A = %s must be a positive finite number"
+                         : "A = m (r^2 / 4 + thickness^2 / 12) = %s (derived from the radius, "
+                           "mass and thickness) is not a positive finite number",
+                 num(d->A, a));
   if (d->C > 2.0 * d->A * (1.0 + 1e-15))
     return issue(is, "disk", given_c ? "C" : "A",
-                 "C = %.15g exceeds 2A = %.15g: no rigid body has these moments", d->C, 2.0 * d->A);
+                 "C = %s exceeds 2A = %s: no rigid body has these moments", num(d->C, a),
+                 num(2.0 * d->A, b));
   return 0;
 }
 
@@ -133,13 +160,17 @@ static const dv_setting_spec SCENARIO_KEYS[] = {
      NULL, "", "engines a comparison runs (default: the contact engines)"},
     {"duration", DV_SETTING_REAL, AT(duration), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
     {"output_dt", DV_SETTING_REAL, AT(output_dt), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
+    {"memory_budget", DV_SETTING_REAL, AT(memory_budget), 0, OPEN, 1.0, 0.0, 1e6, NULL, NULL, "GiB",
+     "a run whose samples would need more memory is refused before it starts"},
 };
 
 static const dv_setting_spec DISK_KEYS[] = {
     {"radius", DV_SETTING_REAL, AT(disk.r), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "m", ""},
     {"mass", DV_SETTING_REAL, AT(disk.m), 0, REQ | OPEN, 0, 0.0, 1e12, NULL, NULL, "kg", ""},
+    {"thickness", DV_SETTING_REAL, AT(thickness), 0, DV_SETTING_OPEN_HI, 0.0, 0.0, 1e6, NULL, NULL,
+     "m", "full thickness, less than the diameter (0: the thin disk)"},
     {"A", DV_SETTING_REAL, AT(disk.A), 0, OPEN, NAN, 0.0, INFINITY, NULL, NULL, "kg m^2",
-     "about a diameter (default m r^2 / 4)"},
+     "about a diameter (default m (r^2 / 4 + thickness^2 / 12))"},
     {"C", DV_SETTING_REAL, AT(disk.C), 0, DV_SETTING_OPEN_HI, NAN, 0.0, INFINITY, NULL, NULL,
      "kg m^2", "about the axis (default m r^2 / 2)"},
     {"gravity", DV_SETTING_REAL, AT(disk.g), 0, DV_SETTING_OPEN_HI, 9.81, 0.0, 1e6, NULL, NULL,

@@ -216,6 +216,7 @@ static int read_values(parse_ctx *c) {
       }
       if (dv_setting_parse(sp, c->text[i], c->block[s], what, sizeof what))
         return fail_at(c, c->text_line[i], sp->key, "%s", what);
+      if (s >= DV_NCORE_SECTIONS && k < 32) c->sc->given_keys[s - DV_NCORE_SECTIONS] |= 1u << k;
     }
   }
   return 0;
@@ -275,12 +276,13 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
     status = dv_fail(err, DV_EINPUT, "%s: more than %d keys in the schema", path, MAX_KEYS);
     goto cleanup;
   }
+  /* a file that cannot be read has no line to point at */
   if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-    fail_at(c, 1, "file", "is a directory, not a scenario file");
+    dv_fail(err, DV_EINPUT, "%s: is a directory, not a scenario file", path);
     goto cleanup;
   }
   if (!(c->file = fopen(path, "r"))) {
-    fail_at(c, 1, "file", "cannot open: %s", strerror(errno));
+    dv_fail(err, DV_EINPUT, "%s: cannot open: %s", path, strerror(errno));
     goto cleanup;
   }
   const int bad_line = ini_parse_stream(read_line, c, on_key, c);

@@ -7,6 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_format.h"
+#include "scenario_number.h"
+
 const char *dv_setting_choice(const dv_setting_spec *spec, size_t i) {
   if (spec->choice_at) return spec->choice_at(i);
   if (!spec->choices) return NULL;
@@ -21,19 +24,13 @@ const dv_setting_spec *dv_settings_find(const dv_settings_section *section, cons
   return NULL;
 }
 
-/* the whole text as a finite number (spaces around allowed) */
-static int parse_number(const char *text, double *out) {
-  char *end;
-  errno = 0;
-  *out = strtod(text, &end);
-  if (end == text || errno == ERANGE) return -1;
-  end += strspn(end, " \t");
-  return (*end == '\0' && isfinite(*out)) ? 0 : -1;
-}
-
+/* every digit that tells two bounds or a value and its bound apart */
 void dv_setting_range_text(const dv_setting_spec *spec, char *buf, size_t size) {
-  snprintf(buf, size, "%s%.15g, %.15g%s", spec->flags & DV_SETTING_OPEN_LO ? "(" : "[", spec->lo,
-           spec->hi, spec->flags & DV_SETTING_OPEN_HI ? ")" : "]");
+  char lo[DV_FORMAT_SIZE], hi[DV_FORMAT_SIZE];
+  dv_format_double(spec->lo, lo, sizeof lo);
+  dv_format_double(spec->hi, hi, sizeof hi);
+  snprintf(buf, size, "%s%s, %s%s", spec->flags & DV_SETTING_OPEN_LO ? "(" : "[", lo, hi,
+           spec->flags & DV_SETTING_OPEN_HI ? ")" : "]");
 }
 
 int dv_setting_store(const dv_setting_spec *spec, double v, void *block, char *what, size_t size) {
@@ -46,8 +43,10 @@ int dv_setting_store(const dv_setting_spec *spec, double v, void *block, char *w
   if (spec->type == DV_SETTING_CHOICE && !(v >= 0.0 && dv_setting_choice(spec, (size_t)v)))
     return snprintf(what, size, "%g is not the index of a choice", v), -1;
   if (spec->type != DV_SETTING_CHOICE && (!ok_lo || !ok_hi)) {
+    char value[DV_FORMAT_SIZE];
     dv_setting_range_text(spec, range, sizeof range);
-    return snprintf(what, size, "%.15g is outside %s", v, range), -1;
+    dv_format_double(v, value, sizeof value);
+    return snprintf(what, size, "%s is outside %s", value, range), -1;
   }
   char *field = (char *)block + spec->offset;
   if (spec->type == DV_SETTING_REAL)
@@ -75,7 +74,10 @@ int dv_setting_parse(const dv_setting_spec *spec, const char *text, void *block,
       n += snprintf(what + n, size - (size_t)n, "%s%s", i ? ", " : "", name);
     return -1;
   }
-  if (parse_number(text, &v)) return snprintf(what, size, "not a number: '%.60s'", text), -1;
+  if (dv_scenario_parse_number(text, &v))
+    return snprintf(what, size,
+                    "not a number: '%.60s' (a finite number, or [NUMBER *] pi [/ NUMBER])", text),
+           -1;
   return dv_setting_store(spec, v, block, what, size);
 }
 

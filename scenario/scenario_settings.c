@@ -31,6 +31,8 @@ double dv_scenario_get(const dv_scenario *sc, const char *engine, const char *ke
   return sp ? dv_setting_value(sp, &sc->settings[i]) : NAN;
 }
 
+static unsigned key_bit(const dv_scenario *sc, int i, const char *key);
+
 /* set [engines.ENGINE] key from text, or (text NULL) to v */
 static int set(dv_scenario *sc, const char *engine, const char *key, const char *text, double v,
                dv_error *err) {
@@ -41,6 +43,7 @@ static int set(dv_scenario *sc, const char *engine, const char *key, const char 
   const int bad = text ? dv_setting_parse(sp, text, &sc->settings[i], what, sizeof what)
                        : dv_setting_store(sp, v, &sc->settings[i], what, sizeof what);
   if (bad) return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", engine, key, what);
+  sc->given_keys[i] |= key_bit(sc, i, key);
   if (dv_scenario_is_derived(sc, engine, key)) { /* the reason no longer holds */
     sc->derived[i][0] = '\0';
     sc->derived_keys[i] = 0;
@@ -73,6 +76,11 @@ static unsigned key_bit(const dv_scenario *sc, int i, const char *key) {
 int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char *key) {
   const int i = find(sc, engine);
   return i >= 0 && (sc->derived_keys[i] & key_bit(sc, i, key)) != 0;
+}
+
+int dv_scenario_is_given(const dv_scenario *sc, const char *engine, const char *key) {
+  const int i = find(sc, engine);
+  return i >= 0 && (sc->given_keys[i] & key_bit(sc, i, key)) != 0;
 }
 
 void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,

@@ -62,10 +62,7 @@ int dv_search_attribute(const char *path, const char *const *sets, size_t nsets,
   const double dt = dv_scenario_get(&sc, name, engine->search->step_key);
   const double soft = dv_scenario_get(&sc, name, k->softness_key);
   const double friction = dv_scenario_get(&sc, name, k->friction_key);
-  const dv_setting_spec *geom = dv_settings_find(engine->settings, k->geom_key);
-  const int stand_in =
-      strcmp(dv_setting_choice(geom, (size_t)dv_scenario_get(&sc, name, k->geom_key)),
-             k->thin_choice) != 0;
+  const int stand_in = dv_engine_stand_in(engine, &sc);
   char thin[128], steps[4][128], softs[4][128], stiff[128], rough[128];
   snprintf(thin, sizeof thin, "engines.%s.%s=%s", name, k->geom_key, k->thin_choice);
   for (int i = 0; i < 4; i++) { /* dt, dt/2, dt/4, dt/8 */

@@ -47,7 +47,14 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   p->step = step;
   if (dv_search_sweep_probe(c->path, c->sets, c->nsets, c->sp.engine, ptrs, n, &p->point, err))
     return -1;
-  p->pass = p->point.ok && p->point.metric[DV_THETA_MAX_ERR] <= s->tolerance;
+  const double e = p->point.metric[DV_THETA_MAX_ERR];
+  p->state = !p->point.ok                    ? DV_PROBE_FAILED
+             : e <= s->margin * s->tolerance ? DV_PROBE_MEETS
+             : e <= s->tolerance             ? DV_PROBE_MARGINAL
+                                             : DV_PROBE_EXCEEDS;
+  p->pass = p->state == DV_PROBE_MEETS || (s->margin >= 1.0 && p->state == DV_PROBE_MARGINAL);
+  p->steps_per_sim_s = p->point.sim_s > 0.0 ? (double)p->point.steps / p->point.sim_s : NAN;
+  p->cost = NAN;
   return p->pass;
 }
 
@@ -118,9 +125,67 @@ static int setup(const char *path, const char *const *sets, size_t nsets, const 
   snprintf(out->choice_key, sizeof out->choice_key, "%s", c->sp.choice_key);
   snprintf(out->step_key, sizeof out->step_key, "%s", c->sp.step_key);
   out->tolerance = tol;
+  out->margin = 1.0;
   out->best = out->first_failure = -1;
   out->limit = NAN;
   return DV_OK;
+}
+
+static int cmp_double(const void *a, const void *b) {
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* the calibration of choice, or NULL */
+static const dv_step_cost *step_cost_of(const dv_search *s, const char *choice) {
+  for (size_t k = 0; k < s->nchoices; k++)
+    if (!strcmp(s->step_cost[k].choice, choice)) return &s->step_cost[k];
+  return NULL;
+}
+
+/* seconds per step of every choice probed: the median of wall / steps over
+ * its probes that ran; then every probe's cost */
+static void calibrate(dv_search *s) {
+  double per_step[DV_SEARCH_MAX_PROBES];
+  for (size_t i = 0; i < s->nprobes; i++) {
+    const char *choice = s->probes[i].choice;
+    if (step_cost_of(s, choice) || s->nchoices == DV_SEARCH_MAX_CHOICES) continue;
+    size_t n = 0;
+    for (size_t j = i; j < s->nprobes; j++) {
+      const dv_sweep_point *q = &s->probes[j].point;
+      if (!strcmp(s->probes[j].choice, choice) && q->steps > 0 && q->wall_s > 0.0)
+        per_step[n++] = q->wall_s / (double)q->steps;
+    }
+    dv_step_cost *k = &s->step_cost[s->nchoices++];
+    snprintf(k->choice, sizeof k->choice, "%s", choice);
+    k->runs = (int)n;
+    k->median = k->min = k->max = NAN;
+    if (!n) continue;
+    qsort(per_step, n, sizeof per_step[0], cmp_double);
+    k->median = n % 2 ? per_step[n / 2] : 0.5 * (per_step[n / 2 - 1] + per_step[n / 2]);
+    k->min = per_step[0];
+    k->max = per_step[n - 1];
+  }
+  for (size_t i = 0; i < s->nprobes; i++) {
+    const dv_step_cost *k = step_cost_of(s, s->probes[i].choice);
+    s->probes[i].cost = k ? s->probes[i].steps_per_sim_s * k->median : NAN;
+  }
+}
+
+/* whether probe a beats probe b: fewer steps within a choice; across choices
+ * the lower cost, unless the costs lie within the calibrations' spread (a tie
+ * that timing noise could turn), where fewer steps win */
+static int cheaper(const dv_search *s, size_t a, size_t b) {
+  const dv_probe *pa = &s->probes[a], *pb = &s->probes[b];
+  if (!(pa->cost >= 0.0)) return 0;
+  if (!(pb->cost >= 0.0)) return 1;
+  if (strcmp(pa->choice, pb->choice)) {
+    const dv_step_cost *ka = step_cost_of(s, pa->choice), *kb = step_cost_of(s, pb->choice);
+    const double spread = fmax(ka->max / ka->min, kb->max / kb->min);
+    const double ratio = fmax(pa->cost, pb->cost) / fmin(pa->cost, pb->cost);
+    if (!(ratio <= spread)) return pa->cost < pb->cost;
+  }
+  return pa->steps_per_sim_s < pb->steps_per_sim_s;
 }
 
 /* probe every choice (best), or only the scenario's (stability) */
@@ -134,17 +199,16 @@ static int search(const char *path, const char *const *sets, size_t nsets, const
     out->limit = largest(&c, NULL, start, &out->first_failure, err);
     return DV_OK;
   }
+  out->margin = DV_SEARCH_MARGIN;
   const char *choice;
   for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++) {
     int fail;
     largest(&c, choice, start, &fail, err);
   }
-  for (size_t i = 0; i < out->nprobes; i++) {
-    const dv_probe *p = &out->probes[i];
-    if (p->pass &&
-        (out->best < 0 || p->point.wall_per_sim_s < out->probes[out->best].point.wall_per_sim_s))
+  calibrate(out);
+  for (size_t i = 0; i < out->nprobes; i++)
+    if (out->probes[i].pass && (out->best < 0 || cheaper(out, i, (size_t)out->best)))
       out->best = (int)i;
-  }
   return DV_OK;
 }
 
@@ -171,4 +235,9 @@ const char *dv_search_failure_mode(const dv_probe *p) {
     default:
       return "error";
   }
+}
+
+const char *dv_probe_state_name(dv_probe_state state) {
+  static const char *const NAMES[] = {"meets", "marginal", "exceeds", "failed"};
+  return state >= DV_PROBE_MEETS && state <= DV_PROBE_FAILED ? NAMES[state] : "failed";
 }

@@ -2,10 +2,17 @@
  *
  * best: for every choice of the engine's discrete setting (MuJoCo's
  * integrator, ODE's stepper, the reference's integrator), the largest
- * timestep (rtol for the reference) whose theta error meets a tolerance:
+ * timestep (rtol for the reference) whose theta error is at most
+ * DV_SEARCH_MARGIN times the tolerance (a margin below the limit):
  * doubling or halving from the default until the answer changes, then six
  * bisections on a log scale; the cheapest passing probe wins. The error is
  * assumed to grow with the step; a probe that diverges counts as too large.
+ * Cost is counted, not timed, so the same input gives the same answer: a
+ * probe costs its steps per simulated second times its choice's seconds per
+ * step, calibrated once per search as the median of wall / steps over that
+ * choice's probes (min and max kept). Two choices whose costs lie within
+ * their calibrations' spread (max / min) of each other are a tie, won by
+ * fewer steps per simulated second.
  *
  * stability: the largest timestep at which a run stays finite and within a
  * theta error, by the same bracketing and bisection; every probe recorded.
@@ -21,26 +28,49 @@
 #define DV_SEARCH_BISECTIONS 6  /* probes then to narrow it */
 #define DV_SEARCH_MAX_CHOICES 8 /* choices of the discrete setting a search takes */
 #define DV_SEARCH_MAX_PROBES (DV_SEARCH_MAX_CHOICES * (DV_SEARCH_BRACKET + DV_SEARCH_BISECTIONS))
+#define DV_SEARCH_MARGIN 0.5 /* best: the error it accepts, as a share of the tolerance */
+
+/* a probe's state, one word each: meets (within the margin), marginal (within
+ * the tolerance, above the margin), exceeds, failed (the run did not complete) */
+typedef enum dv_probe_state {
+  DV_PROBE_MEETS = 0,
+  DV_PROBE_MARGINAL,
+  DV_PROBE_EXCEEDS,
+  DV_PROBE_FAILED
+} dv_probe_state;
+
+/* the seconds one step of a choice takes, from its probes' timed runs */
+typedef struct dv_step_cost {
+  char choice[32];
+  double median, min, max; /* s per step */
+  int runs;                /* timed runs it is taken from */
+} dv_step_cost;
 
 typedef struct dv_probe {
   char choice[32];      /* the discrete setting, e.g. "rk4" */
   double step;          /* the continuous setting, e.g. the timestep */
   dv_sweep_point point; /* what the run gave */
-  int pass;             /* ok and theta error within the tolerance */
+  int pass;             /* ok and theta error within margin x tolerance */
+  dv_probe_state state;
+  double steps_per_sim_s; /* the work: steps per simulated second */
+  double cost;            /* s per simulated s: steps_per_sim_s x the choice's s per step */
 } dv_probe;
 
 typedef struct dv_search {
   char engine[32];
   char choice_key[96], step_key[96]; /* e.g. engines.mujoco.integrator, engines.mujoco.timestep */
   double tolerance;                  /* theta_max_err limit, rad */
+  double margin; /* a probe passes at margin x tolerance (best: DV_SEARCH_MARGIN) */
   size_t nprobes;
   dv_probe probes[DV_SEARCH_MAX_PROBES];
   int best;          /* index of the cheapest passing probe, or -1 */
   double limit;      /* stability: largest passing step, NAN when none */
   int first_failure; /* stability: the probe just above the limit, or -1 */
+  size_t nchoices;   /* best: the calibration of each choice probed */
+  dv_step_cost step_cost[DV_SEARCH_MAX_CHOICES];
 } dv_search;
 
-/* the cheapest settings of engine meeting theta_max_err <= tol */
+/* the cheapest settings of engine meeting theta_max_err <= DV_SEARCH_MARGIN tol */
 int dv_search_best(const char *scenario_path, const char *const *sets, size_t nsets,
                    const char *engine, double tol, dv_search *out, dv_error *err);
 
@@ -51,5 +81,8 @@ int dv_search_stability(const char *scenario_path, const char *const *sets, size
 /* the failure mode of a probe: "NaN", "silent reset", "energy blow-up",
  * "sinks", "lost contact", "falls", "drifts" (exceeds the error), "error" */
 const char *dv_search_failure_mode(const dv_probe *p);
+
+/* the word for a state */
+const char *dv_probe_state_name(dv_probe_state state);
 
 #endif

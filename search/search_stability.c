@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "run_meta.h"
+#include "run_progress.h"
 #include "io_file.h"
 #include "exec_pool.h"
 #include "report_escape.h"
@@ -167,8 +168,11 @@ int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_ty
         nt++;
       }
   search_ctx sc = {tk, sets, nsets};
-  const int pool =
-      status ? DV_EXEC_DONE : dv_exec_pool_run(nt, sizeof *res, search_task, &sc, res, jobs, NULL);
+  dv_run_progress_tasks_begin("stability search", nt);
+  const int pool = status ? DV_EXEC_DONE
+                          : dv_exec_pool_run(nt, sizeof *res, search_task, &sc, res, jobs,
+                                             dv_run_progress_on_result);
+  dv_run_progress_tasks_end();
   if (pool == DV_EXEC_NOMEM) status = dv_fail(err, DV_ESYSTEM, "out of memory");
   if (!status && pool != DV_EXEC_WORKER) /* a worker rank: rank 0 writes */
     status = dv_search_stability_write(out_dir, rows, nt, err);

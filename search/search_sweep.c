@@ -11,6 +11,7 @@
 #include "exec_pool.h"
 #include "run_scenario.h"
 #include "scenario.h"
+#include "run_progress.h"
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
@@ -84,6 +85,7 @@ typedef struct job {
   const dv_engine_type *engine;
   const dv_vary *vary;
   size_t nvary;
+  int repeat_short; /* time a run shorter than 0.2 s five times */
 } job;
 
 /* the k-th point of the grid: values and the overrides that set them */
@@ -137,11 +139,14 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   }
   const dv_engine_result *r = &c->r[0];
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
-  pt->timed_runs = r->wall_s < 0.2 ? 5 : 1;
-  const double wall = r->wall_s < 0.2 ? median_wall(jb->engine, sc, r->wall_s) : r->wall_s;
+  const int repeat = jb->repeat_short && r->wall_s < 0.2;
+  pt->timed_runs = repeat ? 5 : 1;
+  const double wall = repeat ? median_wall(jb->engine, sc, r->wall_s) : r->wall_s;
+  pt->sim_s = sim;
+  pt->wall_s = r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
-  pt->wall_per_sim_s = sim > 0.0 ? wall / sim : NAN;
+  pt->wall_per_sim_s = dv_run_cost_rate(wall, sim, sc->output_dt);
   pt->steps = r->stats.steps;
   pt->ok = !dv_run_verdict_failed(r->verdict);
   pt->verdict = r->verdict;
@@ -182,6 +187,13 @@ static void checkpoint(size_t k, int ran, void *ctx) {
   ck->out->n = 0;
 }
 
+/* after every result: the progress line, and under mpirun rank 0's checkpoint */
+static void point_ended(size_t k, int ran, void *ctx) {
+  const checkpoint_ctx *ck = ctx;
+  dv_run_progress_task_ended(NULL);
+  if (dv_exec_mpi_size() > 1 && ck->dir) checkpoint(k, ran, ctx);
+}
+
 static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
   char over[DV_SWEEP_MAX_VARY][160];
   const char *ptrs[DV_SWEEP_MAX_VARY];
@@ -196,7 +208,7 @@ int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nset
                           dv_sweep_point *out, dv_error *err) {
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
-  const job jb = {path, sets, nsets, e, NULL, 0};
+  const job jb = {path, sets, nsets, e, NULL, 0, 0};
   memset(out, 0, sizeof *out);
   run_overrides(&jb, overrides, n, out);
   return DV_OK;
@@ -227,11 +239,12 @@ int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets,
   dv_sweep_point *pts = calloc(n, sizeof *pts);
   if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
   for (size_t k = 0; k < n; k++) pts[k].verdict = DV_VERDICT_MISSING;
-  const job jb = {path, sets, nsets, e, vary, nvary};
+  const job jb = {path, sets, nsets, e, vary, nvary, 1};
   checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
   /* under mpirun, rank 0 keeps the tables current as results arrive */
-  const int pool = dv_exec_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs,
-                                    dv_exec_mpi_size() > 1 && checkpoint_dir ? checkpoint : NULL);
+  dv_run_progress_tasks_begin("point", n);
+  const int pool = dv_exec_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs, point_ended);
+  dv_run_progress_tasks_end();
   if (pool == 1 || pool < 0) { /* a worker rank: rank 0 has the results */
     free(pts);
     return pool == 1 ? DV_EVENT : dv_fail(err, DV_ESYSTEM, "out of memory");
@@ -275,4 +288,46 @@ double dv_search_fit_order(const double *h, const double *err, size_t n) {
   }
   const double d = (double)m * sxx - sx * sx;
   return (m < 2 || d == 0.0) ? NAN : ((double)m * sxy - sx * sy) / d;
+}
+
+typedef struct step_error {
+  double h, e;
+} step_error;
+
+static int by_step(const void *a, const void *b) {
+  const double x = ((const step_error *)a)->h, y = ((const step_error *)b)->h;
+  return (x > y) - (x < y);
+}
+
+void dv_search_fit_convergence(const double *h, const double *err, size_t n, dv_step_fit *out) {
+  *out = (dv_step_fit){NAN, NAN, NAN, 0, 0};
+  step_error *p = malloc((n + 1) * sizeof *p);
+  double *x = malloc((2 * n + 1) * sizeof *x), *y = x ? x + n : NULL;
+  size_t m = 0;
+  for (size_t i = 0; p && x && i < n; i++)
+    if (h[i] > 0.0 && err[i] > 0.0 && isfinite(err[i])) p[m++] = (step_error){h[i], err[i]};
+  if (m) qsort(p, m, sizeof *p, by_step);
+  /* the floor: from the finest step while the errors do not fall with it */
+  size_t k = 1;
+  while (k < m && log(p[k].e / p[k - 1].e) / log(p[k].h / p[k - 1].h) < DV_FLOOR_ORDER) k++;
+  double floor = 0.0;
+  if (m >= 2 && k >= 2) {
+    for (size_t i = 0; i < k; i++) x[i] = p[i].e;
+    qsort(x, k, sizeof *x, cmp_double);
+    floor = k % 2 ? x[k / 2] : 0.5 * (x[k / 2 - 1] + x[k / 2]);
+    out->floor = floor;
+    out->floor_step = p[k - 1].h;
+    out->nfloor = k;
+  }
+  /* the order where the errors fall: above twice the floor, less the floor */
+  size_t nf = 0;
+  for (size_t i = 0; i < m; i++)
+    if (floor == 0.0 || p[i].e >= 2.0 * floor) {
+      x[nf] = p[i].h;
+      y[nf++] = p[i].e - floor;
+    }
+  out->nfalling = nf;
+  out->order = dv_search_fit_order(x, y, nf);
+  free(p);
+  free(x);
 }

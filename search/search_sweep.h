@@ -23,6 +23,7 @@
 #define DV_SWEEP_MAX_VARY 4
 #define DV_SWEEP_MAX_VALUES 64
 #define DV_SWEEP_MAX_POINTS 4096
+#define DV_SWEEP_MAX_FLOORS 16 /* curves whose floor's cause is attributed */
 
 typedef struct dv_vary {
   char key[96]; /* section.key */
@@ -37,8 +38,10 @@ typedef struct dv_sweep_point {
   double wall_per_sim_s;              /* s per simulated s (median where repeated) */
   int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */
   long steps;
-  int ok;     /* ran through its compared window */
-  int pareto; /* no other ok point is both cheaper and more accurate */
+  double sim_s;  /* simulated seconds the engine ran */
+  double wall_s; /* wall seconds of its first run alone */
+  int ok;        /* ran through its compared window */
+  int pareto;    /* no other ok point is both cheaper and more accurate */
   dv_verdict verdict;
   dv_failure failure; /* why the run failed, as the engine saw it */
   char detail[192];
@@ -50,8 +53,13 @@ typedef struct dv_sweep {
   size_t nvary;
   dv_vary vary[DV_SWEEP_MAX_VARY];
   size_t n;
-  dv_sweep_point *p;          /* n points, the first key varying slowest */
-  int interrupted;            /* under MPI: stopped early, points "missing" */
+  dv_sweep_point *p; /* n points, the first key varying slowest */
+  int interrupted;   /* under MPI: stopped early, points "missing" */
+  size_t nfloors;    /* curves with an accuracy floor, and its cause */
+  struct {
+    char curve[96];
+    char cause[200];
+  } floors[DV_SWEEP_MAX_FLOORS];
   const char *checkpoint_dir; /* under MPI: tables rewritten after every result */
 } dv_sweep;
 
@@ -67,7 +75,8 @@ int dv_search_sweep_run(const char *scenario_path, const char *const *sets, size
 
 void dv_search_sweep_free(dv_sweep *s); /* NULL-safe */
 
-/* one run in this process with the given key=value overrides (section.key) */
+/* one run in this process with the given key=value overrides (section.key),
+ * timed once (no repeats: its cost is steps, see search_best.h) */
 int dv_search_sweep_probe(const char *scenario_path, const char *const *sets, size_t nsets,
                           const char *engine, const char *const *overrides, size_t n,
                           dv_sweep_point *out, dv_error *err);
@@ -78,6 +87,39 @@ void dv_search_pareto(dv_sweep_point *p, size_t n);
 /* least-squares slope of log(err) against log(h) over the points with
  * err > 0 and h > 0: the observed order of convergence (NAN below 2 points) */
 double dv_search_fit_order(const double *h, const double *err, size_t n);
+
+/* how a curve's errors go with the step. Sorted by the step, the floor is
+ * the finest steps' errors while each, going to the next coarser step, grows
+ * at a local order below DV_FLOOR_ORDER (or falls): errors that have stopped
+ * falling with the step (at least 2 points). The order is then fitted only
+ * where the errors fall, over the points at least twice the floor, to
+ * log(err - floor); without a floor, over every point. (Noise between close
+ * steps can end the floor early; points under twice the floor stay out of the
+ * fit all the same.) */
+#define DV_FLOOR_ORDER 0.3
+typedef struct dv_step_fit {
+  double order;      /* NAN: fewer than 2 falling points */
+  double floor;      /* the floor's median error (rad); NAN: none */
+  double floor_step; /* the largest step on the floor; NAN: none */
+  size_t nfalling, nfloor;
+} dv_step_fit;
+
+void dv_search_fit_convergence(const double *h, const double *err, size_t n, dv_step_fit *out);
+
+/* the label of the curve point k lies on: the engine and its other values */
+void dv_search_sweep_curve_label(const dv_sweep *s, size_t k, char *out, size_t size);
+
+/* the index of the key that orders a curve: a timestep or rtol, else the last */
+size_t dv_search_sweep_curve_key(const dv_sweep *s);
+
+/* the fit of the curve through point k (its ok points); DV_ESYSTEM without memory */
+int dv_search_sweep_curve_fit(const dv_sweep *s, size_t k, dv_step_fit *out);
+
+/* for every curve over a timestep whose errors end at a floor, its cause from
+ * attribution (search_attribute.h) at the largest step on the floor, into
+ * s->floors; a probe that fails leaves the cause "unknown: " and why */
+int dv_search_sweep_floor_causes(const char *scenario_path, const char *const *sets, size_t nsets,
+                                 dv_sweep *s, dv_error *err);
 
 /* sweep.csv, sweep.json and the plots into the existing dir; reference is an
  * optional sweep of the reference's own integrators drawn on the same axes */

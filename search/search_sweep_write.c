@@ -14,13 +14,27 @@
 #include "report_plot.h"
 #include "search_sweep.h"
 
-/* the varied key that orders a curve: a timestep or a tolerance, else the last */
-static size_t curve_key(const dv_sweep *s) {
+size_t dv_search_sweep_curve_key(const dv_sweep *s) {
   for (size_t v = 0; v < s->nvary; v++) {
     const char *dot = strrchr(s->vary[v].key, '.');
     if (dot && (!strcmp(dot, ".timestep") || !strcmp(dot, ".rtol"))) return v;
   }
   return s->nvary ? s->nvary - 1 : 0;
+}
+
+void dv_search_sweep_curve_label(const dv_sweep *s, size_t k, char *out, size_t size) {
+  const size_t key = dv_search_sweep_curve_key(s);
+  int len = snprintf(out, size, "%s", s->engine);
+  for (size_t v = 0; v < s->nvary; v++)
+    if (v != key && len >= 0 && (size_t)len < size)
+      len += snprintf(out + len, size - (size_t)len, " %s", s->p[k].values[v]);
+}
+
+/* the attributed cause of curve label's floor, or NULL */
+static const char *floor_cause(const dv_sweep *s, const char *label) {
+  for (size_t f = 0; f < s->nfloors; f++)
+    if (!strcmp(s->floors[f].curve, label)) return s->floors[f].cause;
+  return NULL;
 }
 
 /* the ok points of one curve, in sweep order */
@@ -59,7 +73,7 @@ static void curves_free(curves *cs) {
 /* group the ok points into curves along the curve key, labelled by the
  * other keys' values (a curve without ok points stays, empty); -1 without memory */
 static int make_curves(const dv_sweep *s, curves *cs) {
-  const size_t key = curve_key(s);
+  const size_t key = dv_search_sweep_curve_key(s);
   size_t *of = calloc(s->n + 1, sizeof *of), *first = calloc(s->n + 1, sizeof *first), nok = 0;
   memset(cs, 0, sizeof *cs);
   cs->c = calloc(s->n + 1, sizeof *cs->c);
@@ -69,11 +83,7 @@ static int make_curves(const dv_sweep *s, curves *cs) {
     while (c < cs->n && !same_curve(s, key, &s->p[first[c]], p)) c++;
     if (c == cs->n) {
       first[cs->n++] = i;
-      int len = snprintf(cs->c[c].label, sizeof cs->c[c].label, "%s", s->engine);
-      for (size_t v = 0; v < s->nvary; v++)
-        if (v != key && len < (int)sizeof cs->c[c].label)
-          len += snprintf(cs->c[c].label + len, sizeof cs->c[c].label - (size_t)len, " %s",
-                          p->values[v]);
+      dv_search_sweep_curve_label(s, i, cs->c[c].label, sizeof cs->c[c].label);
     }
     of[i] = c;
     nok += p->ok;
@@ -158,9 +168,14 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
   cJSON *orders = cJSON_AddArrayToObject(o, "orders");
   for (size_t c = 0; c < nc; c++) {
     cJSON *q = cJSON_CreateObject();
+    dv_step_fit fit;
+    dv_search_fit_convergence(cv[c].h, cv[c].y, cv[c].n, &fit);
+    const char *cause = floor_cause(s, cv[c].label);
     cJSON_AddStringToObject(q, "curve", cv[c].label);
-    cJSON_AddItemToObject(q, "order",
-                          dv_io_json_double(dv_search_fit_order(cv[c].h, cv[c].y, cv[c].n)));
+    cJSON_AddItemToObject(q, "order", dv_io_json_double(fit.order));
+    cJSON_AddItemToObject(q, "floor", dv_io_json_double(fit.floor));
+    cJSON_AddItemToObject(q, "floor_step", dv_io_json_double(fit.floor_step));
+    cJSON_AddItemToObject(q, "floor_cause", cause ? cJSON_CreateString(cause) : cJSON_CreateNull());
     cJSON_AddItemToArray(orders, q);
   }
   return dv_io_json_write(dir, "sweep.json", o, err);
@@ -196,12 +211,20 @@ static int write_plots(const char *dir, const dv_sweep *s, curves *cs, const cur
     status =
         dv_report_plot_xy(path, title, "wall seconds per simulated second",
                           "max |theta error| (rad)", pc, nc + nr, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
-  const char *dot = s->nvary ? strrchr(s->vary[curve_key(s)].key, '.') : NULL;
+  const char *dot = s->nvary ? strrchr(s->vary[dv_search_sweep_curve_key(s)].key, '.') : NULL;
   if (status || !dot || strcmp(dot, ".timestep")) return status;
   for (size_t c = 0; c < nc; c++) {
     curve *cv = &cs->c[c];
-    snprintf(cv->order_label, sizeof cv->order_label, "%.90s (order %.2f)", cv->label,
-             dv_search_fit_order(cv->h, cv->y, cv->n));
+    dv_step_fit fit;
+    dv_search_fit_convergence(cv->h, cv->y, cv->n, &fit);
+    if (isnan(fit.floor))
+      snprintf(cv->order_label, sizeof cv->order_label, "%.90s (order %.2f)", cv->label, fit.order);
+    else if (isnan(fit.order))
+      snprintf(cv->order_label, sizeof cv->order_label, "%.80s (flat: floor %.2g rad)", cv->label,
+               fit.floor);
+    else
+      snprintf(cv->order_label, sizeof cv->order_label, "%.70s (order %.2f, floor %.2g rad)",
+               cv->label, fit.order, fit.floor);
     pc[c] = (dv_plot_curve){cv->order_label,      cv->n,     cv->h, cv->y, NULL,
                             DV_CURVE_LINE_POINTS, (int)c + 1};
   }

@@ -11,6 +11,7 @@
 #include "io_file.h"
 #include "report_escape.h"
 #include "run_meta.h"
+#include "run_progress.h"
 
 typedef struct suite_job {
   const char *const *paths;
@@ -59,8 +60,10 @@ int dv_search_verify_suite(const char *const *paths, const char *const *names, s
     snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
   }
   const suite_job j = {paths, sets, nsets, engines, nengines};
-  const int pool =
-      dv_exec_pool_run(n * nengines, sizeof *cases, verify_task, (void *)&j, cases, jobs, NULL);
+  dv_run_progress_tasks_begin("verification", n * nengines);
+  const int pool = dv_exec_pool_run(n * nengines, sizeof *cases, verify_task, (void *)&j, cases,
+                                    jobs, dv_run_progress_on_result);
+  dv_run_progress_tasks_end();
   if (pool < 0) return dv_fail(err, DV_ESYSTEM, "out of memory");
   return pool == 1 ? DV_EVENT : DV_OK; /* DV_EVENT: an MPI worker rank */
 }

@@ -2,8 +2,10 @@
 #
 #   bad/<stem>      tests/bad/<stem>.ini must be rejected as its "; expect:" line says
 #   bad/valid       tests/bad/valid.ini.txt must be accepted (the driver's control case)
+#   bad/valid_coin_pi  a coin ([disk] thickness) with angles as multiples of pi, accepted
 #   bad/directory   a directory given as the scenario
 #   bad/unreadable  a chmod 000 scenario (skipped, exit 77, when running as root)
+#   bad/missing     a scenario file that does not exist: "FILE: cannot open: ..." (no line)
 #   bad/empty       an empty scenario file
 #   bad/binary      a scenario file of non-UTF-8 bytes
 # Each runs tests/check_bad_scenario.sh with the diskval executable; see that
@@ -33,11 +35,13 @@ file(MAKE_DIRECTORY ${_dv_bad_subdir})
 
 add_test(NAME bad/valid COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid.ini.txt --valid)
 add_test(NAME bad/valid_bom_repeats COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid_bom_repeats.ini.txt --valid)
+add_test(NAME bad/valid_coin_pi COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid_coin_pi.ini.txt --valid)
 add_test(NAME bad/directory COMMAND ${_dv_bad_check} ${_dv_bad_subdir})
 add_test(NAME bad/unreadable COMMAND ${_dv_bad_check} ${_dv_bad_dir}/valid.ini.txt --unreadable)
+add_test(NAME bad/missing COMMAND ${_dv_bad_check} ${CMAKE_CURRENT_BINARY_DIR}/nosuch.ini --missing)
 add_test(NAME bad/empty COMMAND ${_dv_bad_check} ${_dv_bad_dir}/empty.ini.txt --empty)
 add_test(NAME bad/binary COMMAND ${_dv_bad_check} ${_dv_bad_dir}/binary.ini.bin --binary)
-list(APPEND _dv_bad_tests bad/valid bad/valid_bom_repeats bad/directory bad/unreadable bad/empty bad/binary)
+list(APPEND _dv_bad_tests bad/valid bad/valid_bom_repeats bad/valid_coin_pi bad/directory bad/unreadable bad/missing bad/empty bad/binary)
 
 # the driver itself limits each run to 20 s (plus 5 s to kill)
 set_tests_properties(${_dv_bad_tests} PROPERTIES LABELS bad TIMEOUT 40)

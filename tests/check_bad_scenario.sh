@@ -7,6 +7,7 @@
 #   check_bad_scenario.sh DISKVAL DIR                a directory instead of a file
 #   check_bad_scenario.sh DISKVAL FILE --unreadable  a chmod 000 copy of FILE (exit 77 = skip
 #                                                    when the copy stays readable, e.g. as root)
+#   check_bad_scenario.sh DISKVAL FILE --missing     FILE does not exist
 #   check_bad_scenario.sh DISKVAL FILE --valid       FILE is good: the control case
 #
 # Each run is `DISKVAL simulate FILE --engine reduced --out $tmp/out.csv`, in a
@@ -14,8 +15,10 @@
 #   - the exit status is exactly 2,
 #   - stderr is exactly one newline-terminated line,
 #   - that line is "FILE:LINE: ..." (FILE made absolute, as diskval gets it),
+#     or, for a file that cannot be read (directory, unreadable, missing),
+#     "FILE: what" with no line number,
 #   - the rest of the line, from the ':' after FILE on, matches the extended
-#     regex REGEX (grep -E, case-sensitive; directory and unreadable: ':LINE: '),
+#     regex REGEX (grep -E, case-sensitive),
 #   - $tmp/out.csv was not created.
 # A valid scenario passes only if the exit status is 0 and $tmp/out.csv exists,
 # starts with the header line below, and holds at least one data row.
@@ -26,13 +29,13 @@ export LC_ALL=C
 HEADER='t,theta,phi,psi,x,y,contact_x,contact_y,theta_dot,phi_dot,psi_dot,energy'
 
 usage() {
-  echo "usage: $0 DISKVAL FILE|DIR [--valid|--empty|--binary|--unreadable]" >&2
+  echo "usage: $0 DISKVAL FILE|DIR [--valid|--empty|--binary|--unreadable|--missing]" >&2
   exit 2
 }
 [ $# -eq 2 ] || [ $# -eq 3 ] || usage
 diskval=$1 file=$2 mode=${3:-}
 [ -d "$file" ] && [ -z "$mode" ] && mode=--directory
-case $mode in '' | --valid | --empty | --binary | --unreadable | --directory) ;; *) usage ;; esac
+case $mode in '' | --valid | --empty | --binary | --unreadable | --directory | --missing) ;; *) usage ;; esac
 
 absolute() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
 diskval=$(absolute "$diskval")
@@ -62,7 +65,10 @@ case $mode in
   --valid) [ -f "$file" ] || fail "no such file: $file" ;;
   --directory)
     [ -d "$file" ] || fail "not a directory: $file"
-    regex=':[0-9]+: ' ;;
+    regex='^: is a directory, not a scenario file$' ;;
+  --missing)
+    [ -e "$file" ] && fail "exists: $file"
+    regex='^: cannot open: No such file or directory$' ;;
   --empty)
     { [ -f "$file" ] && [ ! -s "$file" ]; } || fail "not an empty file: $file"
     regex=':1: .*scenario' ;;
@@ -78,7 +84,7 @@ case $mode in
       exit 77
     fi
     file=$tmp/unreadable.ini
-    regex=':[0-9]+: ' ;;
+    regex='^: cannot open: Permission denied$' ;;
   '')
     [ -f "$file" ] || fail "no such file: $file"
     IFS= read -r first <"$file" || true
@@ -116,7 +122,10 @@ case $line in
   *) fail "error line does not start with '$file:'" ;;
 esac
 rest=${line#"$file"}
-grep -aEq '^:[0-9]+: .' <<<"$rest" || fail "error line is not 'FILE:LINE: key: what'"
+case $mode in
+  --directory | --unreadable | --missing) ;; # no line to point at
+  *) grep -aEq '^:[0-9]+: .' <<<"$rest" || fail "error line is not 'FILE:LINE: key: what'" ;;
+esac
 grep -aEq -- "$regex" <<<"$rest" || fail "error line does not match /$regex/"
 echo "PASS: $name: $line"
 exit 0

@@ -47,7 +47,7 @@ expect "unexpected argument 'extra'" analyze "$sc" extra
 expect "unexpected argument 'extra'" attribute "$sc" extra --engine mujoco
 expect "unexpected argument 'extra'" best "$sc" extra --engine mujoco --theta-tol 1e-3
 expect "unexpected argument 'extra'" sweep "$sc" extra --engine mujoco --vary timestep=1e-3
-expect "unexpected argument 'x'" map x
+expect "unexpected argument 'y'" map x y
 expect "unexpected argument 'x'" engines x
 expect "unknown option '--bogus'" simulate "$sc" --engine reduced --bogus
 expect "unknown option '--jobs'" compare "$sc" --jobs 2
@@ -55,7 +55,20 @@ expect "--engine needs a value" simulate "$sc" --engine
 expect "no scenario given" simulate --engine reduced
 expect "no scenario given" suite
 expect "unknown engine 'Mujoco' \(one of: .*mujoco" simulate "$sc" --engine Mujoco
+# an engine list names the valid engines once, and nothing after them
+for cmd in compare suite verify; do
+  expect "^diskval $cmd: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode\)\$" \
+    $cmd "$sc" --engines ode,Mujoco
+done
+expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode\)\$" map --engines Mujoco
+# a file that cannot be opened has no line to name
+expect "^nosuch.ini: cannot open: No such file or directory\$" simulate nosuch.ini --engine reduced
 expect "--set 'radius=1': expected section.key=value" simulate "$sc" --engine reduced --set radius=1
 expect "same file" simulate "$sc" --engine reduced --out a.csv --forces a.csv
+expect "same file" simulate "$sc" --engine reduced --out a.csv --forces ./a.csv
+expect "same file" simulate "$sc" --engine reduced --out "$work/a.csv" --forces a.csv
+expect "same file" simulate "$sc" --engine reduced --out - --forces -
+expect "the file --out writes beside 'a.csv'" simulate "$sc" --engine reduced --out a.csv \
+  --forces ./a.csv.json
 [ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
 exit $fail

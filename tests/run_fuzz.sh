@@ -16,17 +16,21 @@ if ! clang -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" 2>/dev/null; then
 fi
 sundials="-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense"
 sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
+# numbers as text (dv_format) are C++ over double-conversion
+clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -I"$src/common" \
+  -c "$src/common/dv_format.cc" -o "$work/dv_format.o" || exit 1
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "$src"/engines/*.c \
-  "$src/common/dv_error.c" "$src"/reduced/*.c \
-  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode) -lmujoco $sundials -lm -o "$work/fuzz" || exit 1
+  "$src/common/dv_error.c" "$work/dv_format.o" "$src"/reduced/*.c \
+  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode) -lmujoco $sundials \
+  -ldouble-conversion -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
 cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
 cd "$work" || exit 1
 ./fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1 corpus 2>&1 | tail -15
+  -print_final_stats=1 -artifact_prefix="${FUZZ_ARTIFACTS:-$work/}" corpus 2>&1 | tail -40
 status=${PIPESTATUS[0]}
 rm -f /tmp/fuzz_scenario.*.ini
 exit "$status"

@@ -49,6 +49,10 @@ static void check_in_code(void) {
   CHECK(diskval_scenario_new("flat", &disk, &flat, 1, 0.1, &sc, &err) == DISKVAL_EINPUT && !sc,
         "theta = 0 refused");
   CHECK(diskval_scenario_new("x", &disk, &y0, 1, 2, &sc, &err) == DISKVAL_EINPUT, "output_dt");
+  /* 1e7 samples need 9.6 GiB (scenario.h): refused before anything runs */
+  CHECK(diskval_scenario_new("x", &disk, &y0, 10, 1e-6, &sc, &err) == DISKVAL_EINPUT &&
+            strstr(err.msg, "GiB of memory"),
+        "1e7 samples: %s", err.msg);
 }
 
 /* a shipped scenario: MuJoCo's verdict, and errors by the convention */

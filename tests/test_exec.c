@@ -6,7 +6,9 @@
  *   - a SIGTERM or SIGINT sent to the pool's process alone (even with SIGINT
  *     ignored, as in a background job) ends the running tasks, starts no
  *     more and returns DV_EXEC_INTERRUPTED; the caller's signal dispositions
- *     are as they were afterwards.
+ *     are as they were afterwards;
+ *   - with a time limit, a task that runs longer is killed: its done[k] is
+ *     DV_EXEC_TIMED_OUT, its result as the caller set it, the others arrive.
  * usage: test_exec */
 #define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include <signal.h>
@@ -39,6 +41,8 @@ typedef struct ctx {
   int crash, status; /* the task that dies by a signal, the one that exits with 3 */
   int stop;          /* the task that sends stop_signal to the pool's process */
   int stop_signal;
+  int slow;                    /* the task that sleeps 10 s */
+  double timeout;              /* the pool's time limit */
   int ended[N], ran[N], calls; /* what on_result heard */
 } ctx;
 
@@ -50,7 +54,7 @@ static void task(size_t k, void *out, void *arg) {
   if ((int)k == c->crash) raise(SIGKILL); /* a crash, without a core file */
   if ((int)k == c->status) _exit(3);
   if ((int)k == c->stop) kill(getppid(), c->stop_signal);
-  if (c->stop >= 0)
+  if (c->stop >= 0 || (int)k == c->slow)
     sleep(10); /* until the pool ends it (or the test fails on time) */
   else
     nanosleep(&(struct timespec){0, 20000000}, NULL); /* long enough to overlap */
@@ -75,14 +79,15 @@ static int run(ctx *c, result *r, unsigned char *done) {
   memset(c->ran, 0, sizeof c->ran);
   c->calls = 0;
   atomic_store(&c->sh->running, 0);
-  const dv_exec_options opt = {.jobs = JOBS, .on_result = on_result, .done = done};
+  const dv_exec_options opt = {
+      .jobs = JOBS, .on_result = on_result, .done = done, .timeout = c->timeout};
   return dv_exec_pool(N, sizeof *r, task, c, r, &opt);
 }
 
 static void check_all_run(ctx *c) {
   result r[N];
   unsigned char done[N];
-  *c = (ctx){.sh = c->sh, .crash = -1, .status = -1, .stop = -1};
+  *c = (ctx){.sh = c->sh, .crash = -1, .status = -1, .stop = -1, .slow = -1};
   CHECK(run(c, r, done) == DV_EXEC_DONE, "pool did not finish");
   for (size_t k = 0; k < N; k++) {
     CHECK(r[k].value == (long)(k * k), "task %zu: %ld", k, r[k].value);
@@ -102,7 +107,7 @@ static void check_all_run(ctx *c) {
 static void check_crashes(ctx *c) {
   result r[N];
   unsigned char done[N];
-  *c = (ctx){.sh = c->sh, .crash = 3, .status = 5, .stop = -1};
+  *c = (ctx){.sh = c->sh, .crash = 3, .status = 5, .stop = -1, .slow = -1};
   CHECK(run(c, r, done) == DV_EXEC_DONE, "a crash stopped the pool");
   for (size_t k = 0; k < N; k++) {
     const int dies = k == 3 || k == 5;
@@ -119,7 +124,7 @@ static void check_stop(ctx *c, int sig, void (*disposition)(int)) {
   struct sigaction before, after;
   signal(sig, disposition);
   sigaction(sig, NULL, &before);
-  *c = (ctx){.sh = c->sh, .crash = -1, .status = -1, .stop = 0, .stop_signal = sig};
+  *c = (ctx){.sh = c->sh, .crash = -1, .status = -1, .stop = 0, .stop_signal = sig, .slow = -1};
   const double t0 = dv_clock_now();
   CHECK(run(c, r, done) == DV_EXEC_INTERRUPTED, "signal %d: not interrupted", sig);
   CHECK(dv_clock_now() - t0 < 5.0, "signal %d: the running tasks were not ended", sig);
@@ -132,6 +137,25 @@ static void check_stop(ctx *c, int sig, void (*disposition)(int)) {
   signal(sig, SIG_DFL);
 }
 
+/* task 4 sleeps 10 s under a 0.5 s limit (the others take 0.02 s: 25x
+ * margin): killed, reported as timed out, the pool done within seconds */
+static void check_timeout(ctx *c) {
+  result r[N];
+  unsigned char done[N];
+  *c = (ctx){.sh = c->sh, .crash = -1, .status = -1, .stop = -1, .slow = 4, .timeout = 0.5};
+  const double t0 = dv_clock_now();
+  CHECK(run(c, r, done) == DV_EXEC_DONE, "a time limit stopped the pool");
+  const double wall = dv_clock_now() - t0;
+  CHECK(wall >= 0.5 && wall < 5.0, "the slow task was not ended at its limit: %.2f s", wall);
+  for (size_t k = 0; k < N; k++) {
+    const int slow = k == 4;
+    CHECK(r[k].value == (slow ? -1 : (long)(k * k)), "task %zu: %ld", k, r[k].value);
+    CHECK(done[k] == (slow ? DV_EXEC_TIMED_OUT : DV_EXEC_ARRIVED) && c->ended[k] == 1 &&
+              c->ran[k] == !slow,
+          "task %zu: done %d, ran %d, %d calls", k, done[k], c->ran[k], c->ended[k]);
+  }
+}
+
 int main(void) {
   ctx c = {0};
   c.sh = mmap(NULL, sizeof *c.sh, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
@@ -139,6 +163,7 @@ int main(void) {
   atomic_init(&c.sh->running, 0);
   check_all_run(&c);
   check_crashes(&c);
+  check_timeout(&c);
   check_stop(&c, SIGTERM, SIG_DFL);
   check_stop(&c, SIGINT, SIG_IGN); /* a background job's: the pool hears it all the same */
   munmap(c.sh, sizeof *c.sh);

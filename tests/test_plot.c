@@ -3,7 +3,13 @@
  * behind, works twice in one process, and fails cleanly on a missing dir.
  * dv_report_plot_xy writes single plots (log-log with non-positive values, marks,
  * empty curves, 16 curves, equal aspect, nothing at all) and rejects bad
- * paths and arguments without leaving files. */
+ * paths and arguments without leaving files.
+ * In the produced SVG: each engine has the same colour in every plot, whatever
+ * else is drawn (and in dv_report_plot_xy's plots through
+ * dv_report_plot_engine_colour), the thin reference is black; a series without
+ * data is left out of the legend and named in the title, never "(no data)";
+ * the compared window's end is marked when the runs go on after it, not when
+ * it is the end; legends lie inside the frame (the grid's box). */
 #include <dirent.h>
 #include <limits.h>
 #include <math.h>
@@ -12,8 +18,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "report_plot.h"
 #include "dv_test.h"
+#include "report_plot.h"
 
 #define N 200
 
@@ -76,7 +82,8 @@ static void check_dir(const char *dir) {
   for (struct dirent *e; (e = readdir(d)) != NULL;) {
     if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
     int known = 0;
-    for (const char *const *name = dv_report_plot_files; *name; name++) known |= !strcmp(*name, e->d_name);
+    for (const char *const *name = dv_report_plot_files; *name; name++)
+      known |= !strcmp(*name, e->d_name);
     CHECK(known, "%s: stray file %s", dir, e->d_name);
     seen++;
   }
@@ -170,8 +177,8 @@ static void test_xy(int keep) {
   snprintf(path, sizeof path, "%s/wp.svg", dir);
   for (int round = 0; round < 2; round++) /* the second replaces the first */
     CHECK(dv_report_plot_xy(path, "work-precision: #gh error", "wall s / simulated s",
-                     "|#gh - #gh#dref#u| (rad)", wp, sizeof wp / sizeof wp[0],
-                     DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+                            "|#gh - #gh#dref#u| (rad)", wp, sizeof wp / sizeof wp[0],
+                            DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
           "wp: %s", err.msg);
   check_svg(path, 1);
 
@@ -191,7 +198,7 @@ static void test_xy(int keep) {
   }
   snprintf(path, sizeof path, "%s/many.svg", dir);
   CHECK(dv_report_plot_xy(path, "16 curves", "h (s)", "error", many, DV_PLOT_MAX_CURVES,
-                   DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+                          DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
         "many: %s", err.msg);
   check_svg(path, 1);
 
@@ -201,24 +208,26 @@ static void test_xy(int keep) {
       {"ode", NXY, p, th, NULL, DV_CURVE_LINE, 2},
   };
   snprintf(path, sizeof path, "%s/phase.svg", dir);
-  CHECK(dv_report_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL, &err) ==
-            DV_OK,
+  CHECK(dv_report_plot_xy(path, "phase plane", "#gh (rad)", "p#d#gh#u", phase, 3, DV_PLOT_EQUAL,
+                          &err) == DV_OK,
         "phase: %s", err.msg);
   check_svg(path, 0);
 
   dv_plot_curve flat[] = {{"U(\u03b8)", NXY, th, u, NULL, DV_CURVE_LINE, 1}};
   snprintf(path, sizeof path, "%s/flat.svg", dir);
-  CHECK(dv_report_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) == DV_OK,
+  CHECK(dv_report_plot_xy(path, "effective potential", "#gh (rad)", "U (J)", flat, 1, 0, &err) ==
+            DV_OK,
         "flat: %s", err.msg);
   check_svg(path, 0);
 
   /* nothing drawable (only non-positive values on log axes, no curves at all): "no data" */
   snprintf(path, sizeof path, "%s/none.svg", dir);
-  CHECK(dv_report_plot_xy(path, NULL, NULL, NULL, &wp[6], 1, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) == DV_OK,
+  CHECK(dv_report_plot_xy(path, NULL, NULL, NULL, &wp[6], 1, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) ==
+            DV_OK,
         "none: %s", err.msg);
   check_svg(path, 0);
-  CHECK(dv_report_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK, "none: %s",
-        err.msg);
+  CHECK(dv_report_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK,
+        "none: %s", err.msg);
   check_svg(path, 0);
   check_xy_dir(dir);
 
@@ -238,7 +247,8 @@ static void test_xy(int keep) {
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
     snprintf(path, sizeof path, "%s/%s", dir, bad[k].name);
     err.msg[0] = '\0';
-    const int status = dv_report_plot_xy(path, "bad", "x", "y", bad[k].c, bad[k].n, bad[k].flags, &err);
+    const int status =
+        dv_report_plot_xy(path, "bad", "x", "y", bad[k].c, bad[k].n, bad[k].flags, &err);
     CHECK(status == bad[k].status, "bad %zu (%s): status %d, want %d", k, bad[k].name, status,
           bad[k].status);
     CHECK(err.msg[0] != '\0', "bad %zu: no message", k);
@@ -260,6 +270,201 @@ static void test_xy(int keep) {
     unlink(path);
   }
   rmdir(dir);
+}
+
+/* ---- what the plots show ---- */
+
+#define SVG_MAX_COLOURS 16
+
+/* the value of attribute name (e.g. "stroke=\"") in the element starting at el, copied */
+static int attr_of(const char *el, const char *name, char *out, size_t size) {
+  const char *end = strchr(el, '>'), *a = strstr(el, name);
+  if (!a || (end && a > end)) return 0;
+  a += strlen(name);
+  const char *q = strchr(a, '"');
+  if (!q) return 0;
+  snprintf(out, size, "%.*s", (int)(q - a), a);
+  return 1;
+}
+
+/* the stroke colours of the polylines that are neither black, white nor the grid's */
+static int svg_series_colours(const char *svg, char out[][8], int max) {
+  int n = 0;
+  for (const char *p = svg; (p = strstr(p, "<polyline")); p++) {
+    char c[8];
+    if (!attr_of(p, "stroke=\"", c, sizeof c) || !strcmp(c, "#000000") || !strcmp(c, "#FFFFFF") ||
+        !strcmp(c, "#E1E1E1"))
+      continue;
+    int seen = 0;
+    for (int i = 0; i < n; i++) seen |= !strcmp(out[i], c);
+    if (!seen && n < max) snprintf(out[n++], 8, "%s", c);
+  }
+  return n;
+}
+
+/* the text of the <text> element at el: PLplot writes each character as &#xNN; (non-ASCII: '?') */
+static void decode_text(const char *el, char *out, size_t size) {
+  const char *end = strstr(el, "</text>");
+  size_t k = 0;
+  for (const char *p = el; p && p < end && k + 1 < size; p++) {
+    unsigned c;
+    if (!strncmp(p, "&#x", 3) && sscanf(p + 3, "%x", &c) == 1) {
+      out[k++] = c < 128 ? (char)c : '?';
+      p = strchr(p, ';');
+    }
+  }
+  out[k] = '\0';
+}
+
+/* every text element's text, one per line (caller frees) */
+static char *svg_text(const char *svg) {
+  size_t len = 1;
+  char *all = calloc(strlen(svg) + 1, 1), line[512];
+  for (const char *p = svg; all && (p = strstr(p, "<text")); p++) {
+    decode_text(p, line, sizeof line);
+    len += (size_t)sprintf(all + len - 1, "%s\n", line);
+  }
+  return all;
+}
+
+/* whether a text element reads exactly label; its anchor (x, y) into at */
+static int svg_text_at(const char *svg, const char *label, double at[2]) {
+  for (const char *p = svg; (p = strstr(p, "<text")); p++) {
+    char line[512], m[128];
+    double a, b, c, d;
+    decode_text(p, line, sizeof line);
+    if (strcmp(line, label)) continue;
+    if (at && (!attr_of(p, "transform=\"matrix(", m, sizeof m) ||
+               sscanf(m, "%lf %lf %lf %lf %lf %lf", &a, &b, &c, &d, &at[0], &at[1]) != 6))
+      return 0;
+    return 1;
+  }
+  return 0;
+}
+
+/* the box (x0, x1, y0, y1) the grid lines span: the frame */
+static int svg_grid_box(const char *svg, double box[4]) {
+  int any = 0;
+  for (const char *p = svg; (p = strstr(p, "<polyline")); p++) {
+    char c[16], pts[256];
+    if (!attr_of(p, "stroke=\"", c, sizeof c) || strcmp(c, "#E1E1E1") ||
+        !attr_of(p, "points=\"", pts, sizeof pts))
+      continue;
+    double x, y;
+    for (const char *q = pts; q && sscanf(q, "%lf,%lf", &x, &y) == 2; q = strchr(q + 1, ' ')) {
+      if (!any || x < box[0]) box[0] = x;
+      if (!any || x > box[1]) box[1] = x;
+      if (!any || y < box[2]) box[2] = y;
+      if (!any || y > box[3]) box[3] = y;
+      any = 1;
+    }
+  }
+  return any;
+}
+
+/* the scenario plot file of dir/name as text (caller frees), NULL if missing */
+static char *plot_text(const char *dir, const char *name) {
+  char path[PATH_MAX];
+  long size = 0;
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  return slurp(path, &size);
+}
+
+/* the series colours of dir/theta.svg equal want[0..nwant) as a set */
+static void check_colours(const char *dir, const char *const *want, int nwant, const char *what) {
+  char *svg = plot_text(dir, "theta.svg"), got[SVG_MAX_COLOURS][8];
+  const int n = svg ? svg_series_colours(svg, got, SVG_MAX_COLOURS) : -1;
+  CHECK(n == nwant, "%s: %d series colours, want %d", what, n, nwant);
+  for (int k = 0; k < nwant; k++) {
+    int found = 0;
+    for (int i = 0; i < n; i++) found |= !strcmp(got[i], want[k]);
+    CHECK(found, "%s: colour %s missing", what, want[k]);
+  }
+  free(svg);
+}
+
+/* the only series colour of dir/theta.svg into out ("" if not exactly one) */
+static void only_colour(const char *dir, char out[8]) {
+  char *svg = plot_text(dir, "theta.svg"), got[SVG_MAX_COLOURS][8];
+  const int n = svg ? svg_series_colours(svg, got, SVG_MAX_COLOURS) : 0;
+  snprintf(out, 8, "%s", n == 1 ? got[0] : "");
+  free(svg);
+}
+
+/* the four plots of in into a new directory (left in dirs[k]) */
+static void plot_into(char *dir, const dv_plot_input *in) {
+  dv_error err = {{0}};
+  CHECK(mkdtemp(dir) != NULL, "mkdtemp failed");
+  CHECK(dv_report_plot_scenario(dir, in, &err) == DV_OK, "%s: %s", in->title, err.msg);
+}
+
+static void test_engine_plots(const dv_traj *ref, const dv_traj *a, const dv_traj *b,
+                              const dv_traj *empty) {
+  char dirs[5][32];
+  for (int k = 0; k < 5; k++) snprintf(dirs[k], sizeof dirs[k], "/tmp/test_plot_eng.XXXXXX");
+  /* mujoco alone, ode alone, both the other way round: an engine keeps its colour */
+  dv_plot_input mj = {.title = "mujoco", .thin = ref, .nseries = 1, .horizon = INFINITY};
+  mj.series[0] = (dv_plot_series){"mujoco", a, ref};
+  dv_plot_input od = mj, both = mj;
+  od.series[0] = (dv_plot_series){"ode", b, ref};
+  both.nseries = 3;
+  both.series[0] = od.series[0];
+  both.series[1] = (dv_plot_series){"matched", empty, ref}; /* no data: left out */
+  both.series[2] = mj.series[0];
+  both.window_end = 6.0; /* the runs last 10 s */
+  dv_plot_input whole = mj;
+  whole.window_end = 10.0; /* the window is the whole run: nothing to mark */
+  plot_into(dirs[0], &mj);
+  plot_into(dirs[1], &od);
+  plot_into(dirs[2], &both);
+  plot_into(dirs[3], &whole);
+  char c_mj[8], c_od[8];
+  only_colour(dirs[0], c_mj);
+  only_colour(dirs[1], c_od);
+  CHECK(c_mj[0] && c_od[0] && strcmp(c_mj, c_od), "mujoco %s and ode %s share a colour", c_mj,
+        c_od);
+  const char *const pair[] = {c_mj, c_od};
+  check_colours(dirs[2], pair, 2, "ode, matched (empty), mujoco");
+  CHECK(dv_report_plot_engine_colour("reduced") == 0, "the thin reference is not black");
+
+  /* dv_report_plot_xy draws an engine in the same colour */
+  char path[PATH_MAX];
+  double x[2] = {0, 1}, y[2] = {0, 1};
+  const dv_plot_curve phase = {
+      "ode", 2, x, y, NULL, DV_CURVE_LINE, dv_report_plot_engine_colour("ode")};
+  dv_error err = {{0}};
+  CHECK(mkdtemp(dirs[4]) != NULL, "mkdtemp failed");
+  snprintf(path, sizeof path, "%s/theta.svg", dirs[4]);
+  CHECK(dv_report_plot_xy(path, "phase", "x", "y", &phase, 1, 0, &err) == DV_OK, "%s", err.msg);
+  char c_xy[8];
+  only_colour(dirs[4], c_xy);
+  CHECK(!strcmp(c_xy, c_od), "ode is %s in an x-y plot, %s in theta.svg", c_xy, c_od);
+  unlink(path);
+  rmdir(dirs[4]);
+
+  for (const char *const *name = dv_report_plot_files; *name; name++) {
+    char *svg = plot_text(dirs[2], *name), *text = svg ? svg_text(svg) : NULL;
+    CHECK(text && !strstr(text, "(no data)"), "%s: a \"(no data)\" entry", *name);
+    CHECK(text && strstr(text, "no data: matched"), "%s: the title does not name matched", *name);
+    CHECK(svg && !svg_text_at(svg, "matched", NULL), "%s: matched in the legend", *name);
+    /* the error plot has no thin reference: the engines' errors reach the end */
+    CHECK(text && strstr(text, "window end"), "%s: the window's end is not marked", *name);
+    double box[4] = {0}, at[2] = {0};
+    const int boxed = svg && svg_grid_box(svg, box), legend = svg && svg_text_at(svg, "mujoco", at);
+    CHECK(boxed && legend, "%s: no grid (%d) or no legend (%d)", *name, boxed, legend);
+    if (boxed && legend)
+      CHECK(at[0] > box[0] && at[0] < box[1] && at[1] > box[2] && at[1] < box[3],
+            "%s: legend text at (%g, %g) outside the frame [%g, %g] x [%g, %g]", *name, at[0],
+            at[1], box[0], box[1], box[2], box[3]);
+    free(text);
+    free(svg);
+    svg = plot_text(dirs[3], *name), text = svg ? svg_text(svg) : NULL;
+    CHECK(text && !strstr(text, "window end"), "%s: a window that is the whole run is marked",
+          *name);
+    free(text);
+    free(svg);
+  }
+  for (int k = 0; k < 4; k++) remove_dir(dirs[k]);
 }
 
 int main(int argc, char **argv) {
@@ -317,6 +522,7 @@ int main(int argc, char **argv) {
     printf("plots kept in %s\n", dir);
   else
     remove_dir(dir);
+  test_engine_plots(&ref, &close_by, &holed, &empty);
   dv_run_traj_free(&ref);
   dv_run_traj_free(&close_by);
   dv_run_traj_free(&holed);

@@ -31,6 +31,12 @@ static void check_state(const double y[RED_NSTATE], const dv_geometry *g, const 
   dv_pose_lowest_point(g, &p, pt, &slip);
   CHECK(fabs(pt[2]) < 1e-15 && slip < 1e-13, "%s: lowest point z %.3g, slip %.3g m/s", label, pt[2],
         slip);
+  /* the height the engines check every step is the contact vector's z */
+  double rho[3];
+  dv_geometry_contact_vector(g, p.R, rho);
+  const double height = dv_geometry_contact_height(g, p.R);
+  CHECK(fabs(height - rho[2]) <= 1e-15, "%s: contact height %.17g, vector z %.17g", label, height,
+        rho[2]);
   if (g->shape == DV_SHAPE_CYLINDER) {
     red_rolling rr;
     double s[RR_NSTATE];

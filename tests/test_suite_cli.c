@@ -1,11 +1,17 @@
 /* test_suite_cli: diskval suite end to end on a small scenario set.
  *   - exit 0, summary.json parses back, one JUnit test case per scenario x
  *     engine, index.html references only files that exist;
+ *   - the JUnit XML has a test suite per scenario, valid against
+ *     tests/fixtures/junit.xsd; every test case, passing too, carries every
+ *     metric of its report with its limit, margin and source and the
+ *     reference; a scenario's time counts its reference runs, which are
+ *     measured (report.json); summary.json has each run's limits and reference;
  *   - an impossible tolerance: exit 1, the JUnit failure names the scenario;
  *   - a broken scenario file: exit 2 and no output directory at all;
  *   - the same inputs twice: identical reports apart from timing fields.
  * usage: test_suite_cli DISKVAL SCENARIO_DIR WORK_DIR (WORK_DIR is replaced) */
 #include <cjson/cJSON.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,16 +58,89 @@ static size_t count(const char *text, const char *needle) {
   return n;
 }
 
-/* the report.json of dir/name with every wall_per_sim_s line removed */
+/* the report.json of dir/name with every timing line (wall_*) removed */
 static char *untimed_report(const char *dir, const char *name) {
   char path[2048];
   snprintf(path, sizeof path, "%s/%s/report.json", dir, name);
   char *text = slurp(path);
-  for (char *p = text; p && (p = strstr(p, "\"wall_per_sim_s\""));) {
+  for (char *p = text; p && (p = strstr(p, "wall_"));) {
+    char *start = p;
+    while (start > text && start[-1] != '\n') start--;
     const char *end = strchr(p, '\n');
-    memmove(p, end ? end : p + strlen(p), strlen(end ? end : p + strlen(p)) + 1);
+    memmove(start, end ? end : p + strlen(p), strlen(end ? end : p + strlen(p)) + 1);
+    p = start;
   }
   return text;
+}
+
+/* the number attribute name="..." of the first element at or after p */
+static double attr_num(const char *p, const char *name) {
+  char key[64];
+  snprintf(key, sizeof key, " %s=\"", name);
+  const char *a = p ? strstr(p, key) : NULL;
+  return a ? atof(a + strlen(key)) : NAN;
+}
+
+/* the JUnit XML and summary.json of the good suite in out against its reports */
+static void check_numbers(const char *out, const char *xml) {
+  static const char *const names[] = {"falling", "upright_stable"};
+  char path[2048], head[256];
+  snprintf(path, sizeof path, "%s/summary.json", out);
+  char *text = slurp(path);
+  cJSON *summary = text ? cJSON_Parse(text) : NULL;
+  CHECK(count(xml, "<testsuite ") == 2, "%zu test suites, want one per scenario",
+        count(xml, "<testsuite "));
+  for (int i = 0; i < 2; i++) {
+    snprintf(path, sizeof path, "%s/%s/report.json", out, names[i]);
+    char *rtext = slurp(path);
+    cJSON *report = rtext ? cJSON_Parse(rtext) : NULL, *eng;
+    const cJSON *ref = cJSON_GetObjectItem(report, "reference");
+    const double ref_wall = cJSON_GetNumberValue(cJSON_GetObjectItem(ref, "wall_s"));
+    CHECK(ref_wall > 0, "%s: the reference's wall time %g", names[i], ref_wall);
+    snprintf(head, sizeof head, "<testsuite name=\"%s\"", names[i]);
+    const char *suite = strstr(xml, head);
+    double cases = 0;
+    cJSON_ArrayForEach(eng, cJSON_GetObjectItem(report, "engines")) {
+      snprintf(head, sizeof head, "<testcase classname=\"%s\" name=\"%s\"", names[i], eng->string);
+      const char *tc = strstr(xml, head), *end = tc ? strstr(tc, "</testcase>") : NULL;
+      CHECK(tc && end, "%s/%s: no test case with an end", names[i], eng->string);
+      if (!tc || !end) continue;
+      cases += attr_num(tc, "time");
+      const cJSON *l;
+      cJSON_ArrayForEach(l, cJSON_GetObjectItem(eng, "limits")) {
+        char prop[160];
+        for (int k = 0; k < 3; k++) {
+          snprintf(prop, sizeof prop, "<property name=\"%s%s\" value=", l->string,
+                   k == 0   ? ""
+                   : k == 1 ? ".limit"
+                            : ".margin");
+          const char *at = strstr(tc, prop);
+          CHECK(at && at < end, "%s/%s: no %s", names[i], eng->string, prop);
+        }
+      }
+      CHECK(strstr(tc, "<property name=\"reference\" value=\"reduced, thin disk"),
+            "%s/%s: the reference", names[i], eng->string);
+      const cJSON *s = NULL, *e;
+      cJSON_ArrayForEach(
+          s, cJSON_GetObjectItem(
+                 summary,
+                 "scenarios")) if (!strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(s, "scenario")),
+                                           names[i])) break;
+      e = cJSON_GetObjectItem(cJSON_GetObjectItem(s, "engines"), eng->string);
+      CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(e, "limits")) ==
+                    cJSON_GetArraySize(cJSON_GetObjectItem(eng, "limits")) &&
+                cJSON_IsObject(cJSON_GetObjectItem(e, "reference")),
+            "summary.json: %s/%s lacks its limits or reference", names[i], eng->string);
+    }
+    /* the suite's time: its test cases and its reference runs (printed to 1e-6 s) */
+    const double total = attr_num(suite, "time");
+    CHECK(total >= cases + ref_wall - 1e-5, "%s: suite time %g < cases %g + reference %g", names[i],
+          total, cases, ref_wall);
+    cJSON_Delete(report);
+    free(rtext);
+  }
+  cJSON_Delete(summary);
+  free(text);
 }
 
 static void check_good_suite(void) {
@@ -80,8 +159,10 @@ static void check_good_suite(void) {
   snprintf(path, sizeof path, "%s/junit.xml", out);
   text = slurp(path);
   CHECK(text && count(text, "<testcase ") == 4 && !strstr(text, "<failure"), "junit: %s", path);
-  CHECK(run("command -v xmllint >/dev/null") != 0 || run("xmllint --noout %s", path) == 0,
+  CHECK(run("command -v xmllint >/dev/null") != 0 ||
+            run("xmllint --noout --schema %s/../tests/fixtures/junit.xsd %s", scenarios, path) == 0,
         "xmllint rejects %s", path);
+  if (text) check_numbers(out, text);
   free(text);
   /* every src= of index.html exists */
   snprintf(path, sizeof path, "%s/index.html", out);

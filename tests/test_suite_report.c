@@ -168,15 +168,92 @@ static int xml_ok(const char *s, const char *what) {
   return depth == 0;
 }
 
-/* xmllint's verdict on path when it is installed */
-static void xmllint(const char *path) {
-  char cmd[4200];
-  if (strchr(path, '\'') || system("command -v xmllint >/dev/null 2>&1") != 0) {
+/* xmllint's verdict on path when it is installed, against schema unless NULL */
+static void xmllint(const char *path, const char *schema) {
+  char cmd[8400];
+  if (strchr(path, '\'') || (schema && strchr(schema, '\'')) ||
+      system("command -v xmllint >/dev/null 2>&1") != 0) {
     fprintf(stderr, "xmllint not run on %s\n", path);
     return;
   }
-  snprintf(cmd, sizeof cmd, "xmllint --noout '%s'", path);
-  CHECK(system(cmd) == 0, "xmllint rejects %s", path);
+  snprintf(cmd, sizeof cmd, "xmllint --noout %s%s%s '%s'", schema ? "--schema '" : "",
+           schema ? schema : "", schema ? "'" : "", path);
+  CHECK(system(cmd) == 0, "xmllint rejects %s%s%s", path, schema ? " against " : "",
+        schema ? schema : "");
+}
+
+/* the text from the test case of classname scenario, name engine to its end (caller frees) */
+static char *junit_case(const char *xml, const char *scenario, const char *engine) {
+  char head[256];
+  snprintf(head, sizeof head, "<testcase classname=\"%s\" name=\"%s\"", scenario, engine);
+  const char *p = strstr(xml, head), *end = p ? strstr(p, "</testcase>") : NULL;
+  if (!end) return NULL;
+  char *out = malloc((size_t)(end - p) + 1);
+  if (out) snprintf(out, (size_t)(end - p) + 1, "%s", p);
+  return out;
+}
+
+/* the JUnit XML of the full suite: a test suite per scenario, the numbers of every test case */
+static void check_junit(const char *xml, const char *schema, const char *path, int engines,
+                        int failing) {
+  const int tests = engines + NERRORED;
+  CHECK(attr_int(xml, "<testsuites ", "tests") == tests, "tests != %d", tests);
+  CHECK(attr_int(xml, "<testsuites ", "failures") == failing, "failures != %d", failing);
+  CHECK(attr_int(xml, "<testsuites ", "errors") == NERRORED, "errors != %d", NERRORED);
+  CHECK(count(xml, "<testsuite ") == NALL, "%d test suites, want one per scenario",
+        count(xml, "<testsuite "));
+  CHECK(strstr(xml, "<testsuite name=\"steady_circle\" tests=\"2\" failures=\"0\" errors=\"0\""),
+        "steady_circle's test suite");
+  CHECK(strstr(xml, "<testsuite name=\"falling\" tests=\"2\" failures=\"1\" errors=\"0\""),
+        "falling's test suite");
+  CHECK(count(xml, "<testcase ") == tests, "%d test cases", count(xml, "<testcase "));
+  CHECK(count(xml, "<failure ") == failing && count(xml, "<error ") == NERRORED, "verdicts");
+  CHECK(strstr(xml, "name=\"harness_failed\"") && strstr(xml, "classname=\"falling\" name=\"ode\""),
+        "test case names");
+  CHECK(strstr(xml, "theta_max_err = 0.21 &gt; 0.05"), "failure text not escaped");
+  /* real times: an engine's own run; a scenario's also counts its reference runs
+   * (rolling_pass: reference 0.25 + horizon 0.5 + mujoco 0.1 and its matched
+   * reference 0.05 + ode 0.25 s/s over its 2 s window, a report without wall_s) */
+  CHECK(strstr(xml, "classname=\"steady_circle\" name=\"mujoco\" time=\"0.100000\""),
+        "mujoco's own wall time");
+  CHECK(strstr(xml,
+               "name=\"steady_circle\" tests=\"2\" failures=\"0\" errors=\"0\" "
+               "time=\"1.400000\""),
+        "steady_circle's time leaves out its references");
+  /* every engine's test case, passing or not, carries its numbers */
+  static const char *const cases[][2] = {{"steady_circle", "mujoco"},
+                                         {"steady_circle", "ode"},
+                                         {"falling", "mujoco"},
+                                         {"falling", "ode"}};
+  for (size_t k = 0; k < 4; k++) {
+    char *tc = junit_case(xml, cases[k][0], cases[k][1]);
+    CHECK(tc && strstr(tc, "<properties>") &&
+              strstr(tc, "<property name=\"theta_max_err\" value=") &&
+              strstr(tc, "<property name=\"theta_max_err.limit\" value=") &&
+              strstr(tc, "<property name=\"reference\" value="),
+          "%s/%s: no metric, limit or reference property", cases[k][0], cases[k][1]);
+    free(tc);
+  }
+  char *mj = junit_case(xml, "steady_circle", "mujoco");
+  CHECK(
+      mj && strstr(mj, "name=\"theta_max_err\" value=\"0.000123456\"") &&
+          strstr(mj, "name=\"theta_max_err.limit\" value=\"0.01\"") &&
+          strstr(mj, "name=\"theta_max_err.margin\" value=\"0.0123456\"") &&
+          strstr(mj, "name=\"theta_max_err.limit_from\" value=\"default: 0.01 rad\"") &&
+          strstr(mj, "name=\"path_max_err.limit_from\" value=\"[tolerance.mujoco] &lt;1%&gt;\"") &&
+          strstr(mj, "name=\"path_hausdorff.limit\" value=\"none\"") &&
+          strstr(mj,
+                 "name=\"reference\" value=\"matched, half-thickness 0.005 m, cvode-bdf "
+                 "rtol 1e-12\""),
+      "steady_circle/mujoco: metric, limit, margin, source or reference wrong");
+  free(mj);
+  char *od = junit_case(xml, "steady_circle", "ode");
+  CHECK(od && strstr(od, "name=\"reference\" value=\"reduced, thin disk, cvode-bdf rtol 1e-12\"") &&
+            strstr(od, "name=\"path_max_err.limit\" value=\"0.01\""),
+        "steady_circle/ode: a report without limits or references");
+  free(od);
+  xml_ok(xml, "junit.xml");
+  xmllint(path, schema);
 }
 
 /* every src= and href= of index.html in out names an existing file or anchor; returns #img */
@@ -234,7 +311,7 @@ static void fixture_counts(const char *fixtures, int *engines, int *failing, int
 
 /* the full suite into out: counts, order, escaping, references, well-formedness */
 static void check_full(const char *fixtures, const char *out) {
-  char path[4096], junit[4096];
+  char path[4096], junit[4096], schema[4096];
   dv_error err = {""};
   int engines, failing, plots;
   fixture_counts(fixtures, &engines, &failing, &plots);
@@ -262,25 +339,28 @@ static void check_full(const char *fixtures, const char *out) {
   CHECK(cJSON_IsFalse(cJSON_GetObjectItem(mj, "pass")), "falling mujoco passes");
   CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(mj, "failures")) == 2, "failures not copied");
   CHECK(cJSON_IsNumber(cJSON_GetObjectItem(mj, "theta_max_err")), "theta_max_err");
+  /* each engine run: its limits and the reference it was compared with, as its report has them */
+  const cJSON *rp =
+      cJSON_GetObjectItem(cJSON_GetObjectItem(cJSON_GetArrayItem(list, 0), "engines"), "mujoco");
+  const cJSON *lim = cJSON_GetObjectItem(cJSON_GetObjectItem(rp, "limits"), "theta_max_err");
+  const cJSON *ref = cJSON_GetObjectItem(rp, "reference");
+  CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(lim, "limit")) == 0.01 &&
+            cJSON_GetNumberValue(cJSON_GetObjectItem(lim, "margin")) == 0.0123456 &&
+            !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(lim, "from")), "default: 0.01 rad"),
+        "summary: steady_circle/mujoco's theta_max_err limit");
+  CHECK(!strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(ref, "engine")), "matched") &&
+            cJSON_GetNumberValue(cJSON_GetObjectItem(ref, "half_thickness")) == 0.005,
+        "summary: steady_circle/mujoco's reference");
+  CHECK(cJSON_IsNull(cJSON_GetObjectItem(mj, "limits")) &&
+            cJSON_IsNull(cJSON_GetObjectItem(mj, "reference")),
+        "summary: a report without limits or reference gets null");
   cJSON_Delete(sum);
   free(text);
 
   char *xml = slurp(junit);
   CHECK(xml, "no %s", junit);
-  if (xml) {
-    const int tests = engines + NERRORED;
-    CHECK(attr_int(xml, "<testsuite ", "tests") == tests, "tests != %d", tests);
-    CHECK(attr_int(xml, "<testsuite ", "failures") == failing, "failures != %d", failing);
-    CHECK(attr_int(xml, "<testsuite ", "errors") == NERRORED, "errors != %d", NERRORED);
-    CHECK(count(xml, "<testcase ") == tests, "%d test cases", count(xml, "<testcase "));
-    CHECK(count(xml, "<failure ") == failing && count(xml, "<error ") == NERRORED, "verdicts");
-    CHECK(
-        strstr(xml, "name=\"harness_failed\"") && strstr(xml, "classname=\"falling\" name=\"ode\""),
-        "test case names");
-    CHECK(strstr(xml, "theta_max_err = 0.21 &gt; 0.05"), "failure text not escaped");
-    xml_ok(xml, "junit.xml");
-    xmllint(junit);
-  }
+  snprintf(schema, sizeof schema, "%s/../junit.xsd", fixtures);
+  if (xml) check_junit(xml, schema, junit, engines, failing);
   free(xml);
 
   snprintf(path, sizeof path, "%s/index.html", out);
@@ -299,7 +379,7 @@ static void check_full(const char *fixtures, const char *out) {
     CHECK(strstr(html, "rolling_pass/report.md") && strstr(html, "rolling_pass/ode.csv"), "links");
     CHECK(count(html, "class=\"err\">ERROR") == NERRORED, "error rows");
     xml_ok(html, "index.html");
-    xmllint(path);
+    xmllint(path, NULL);
   }
   free(html);
 }

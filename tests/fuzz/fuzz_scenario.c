@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "dv_engine.h"
 #include "scenario.h"
 
 /* a property every input must keep; a violation aborts, which libFuzzer reports */

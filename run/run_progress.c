@@ -1,0 +1,198 @@
+/* run_progress: the progress line and the long-run warning (run_progress.h). */
+#include "run_progress.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "dv_clock.h"
+#include "run_trajectory.h"
+
+/* the process's progress: one command, one run or one pool at a time */
+static struct {
+  int line, warn;   /* what is on */
+  char command[24]; /* "compare" */
+  size_t shown;     /* characters of the line now on the terminal */
+  double last;      /* s: when the line was last drawn (or the run began) */
+  /* the run under way */
+  int running, calibrated;
+  int probing, planned; /* a probe runs; a plan was announced */
+  char scenario[32], engine[24];
+  double duration, began;
+  /* the pool under way */
+  int depth; /* pools begun and not ended: 1 in the pool's parent */
+  char noun[24];
+  size_t n, ended;
+  double tasks_began;
+  int tasks_warned;
+} P;
+
+void dv_run_progress_start(const char *command, int quiet, int stdout_busy) {
+  memset(&P, 0, sizeof P);
+  snprintf(P.command, sizeof P.command, "%s", command);
+  P.warn = !quiet;
+  P.line = !quiet && isatty(STDERR_FILENO) && !(stdout_busy && isatty(STDOUT_FILENO));
+}
+
+/* seconds as "45s", "3m12s", "2h05m" */
+static void say_time(double s, char *buf, size_t size) {
+  const long whole = s < 0.0 ? 0 : s > 1e8 ? 100000000 : (long)(s + 0.5);
+  if (whole < 60)
+    snprintf(buf, size, "%lds", whole);
+  else if (whole < 3600)
+    snprintf(buf, size, "%ldm%02lds", whole / 60, whole % 60);
+  else
+    snprintf(buf, size, "%ldh%02ldm", whole / 3600, whole % 3600 / 60);
+}
+
+/* rewrite the line with text, blanking what the last one left over */
+static void draw(const char *text) {
+  const size_t len = strlen(text);
+  char buf[256];
+  snprintf(buf, sizeof buf, "\r%s%*s", text, P.shown > len ? (int)(P.shown - len) : 0, "");
+  fputs(buf, stderr); /* one write: stderr is unbuffered */
+  P.shown = len;
+}
+
+static void clear(void) {
+  if (!P.shown) return;
+  char buf[256];
+  snprintf(buf, sizeof buf, "\r%*s\r", (int)P.shown, "");
+  fputs(buf, stderr);
+  P.shown = 0;
+}
+
+/* the warning, on a line of its own: what will take about seconds (more) */
+static void announce(const char *what, double seconds, int more, const char *basis) {
+  char t[32];
+  say_time(seconds, t, sizeof t);
+  clear();
+  fprintf(stderr, "diskval %s: %s will take about %s%s (%s); --quiet hides this\n", P.command, what,
+          t, more ? " more" : "", basis);
+}
+
+/* a probe: the wall time from the first sample, up to the budget */
+typedef struct probe {
+  double first, spent, t; /* s of wall time at the first sample, since then; simulated s */
+  int stopped;            /* the budget ended it */
+} probe;
+
+static int probe_sample(void *ctx, const dv_sample *s) {
+  probe *p = ctx;
+  const double now = dv_clock_now();
+  if (p->first < 0.0) return p->first = now, 0;
+  p->spent = now - p->first, p->t = s->t;
+  return p->stopped = p->spent >= DV_PROGRESS_PROBE_S; /* non-zero ends the run */
+}
+
+/* wall seconds a whole run of engine over sc will take, from a probe */
+static double estimate(const dv_engine_type *engine, const dv_scenario *sc) {
+  probe p = {-1.0, 0.0, 0.0, 0};
+  dv_engine_stats st;
+  P.probing = 1;
+  dv_run_collect(engine, sc, probe_sample, &p, &st, NULL);
+  P.probing = 0;
+  return p.stopped && p.t > 0.0 ? p.spent * sc->duration / p.t : p.spent;
+}
+
+void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
+                          const dv_engine_type *const *engines, size_t n) {
+  if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;
+  if (!ref_sc) ref_sc = sc;
+  const double thin = estimate(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), ref_sc);
+  double total = 3.0 * thin;
+  size_t runs = 3 + n;
+  for (size_t i = 0; i < n; i++) {
+    const int thick = dv_engine_half_thickness(engines[i], sc) > 0.0;
+    total += estimate(engines[i], sc) + (thick ? thin : 0.0);
+    runs += (size_t)thick;
+  }
+  if (total <= DV_PROGRESS_WARN_S) return;
+  P.planned = 1;
+  char what[160], basis[96];
+  snprintf(what, sizeof what, "%.60s: the comparison to t = %g s (%zu runs)", sc->name,
+           sc->duration, runs);
+  snprintf(basis, sizeof basis, "each engine's rate timed for %g s", DV_PROGRESS_PROBE_S);
+  announce(what, total, 0, basis);
+}
+
+void dv_run_progress_run_begin(const char *scenario, const char *engine, double duration) {
+  P.running = (P.line || P.warn) && P.depth == 0 && !P.probing && duration > 0.0;
+  if (!P.running) return;
+  snprintf(P.scenario, sizeof P.scenario, "%s", scenario);
+  snprintf(P.engine, sizeof P.engine, "%s", engine);
+  P.duration = duration;
+  P.calibrated = 0;
+  P.began = P.last = dv_clock_now();
+}
+
+void dv_run_progress_run_at(double t) {
+  if (!P.running || !(t > 0.0)) return;
+  const double now = dv_clock_now();
+  if (now - P.last < 1.0 / DV_PROGRESS_HZ) return; /* the throttle: one clock read a sample */
+  P.last = now;
+  const double spent = now - P.began, left = spent * (P.duration - t) / t;
+  if (P.warn && !P.planned && !P.calibrated && spent >= DV_PROGRESS_CALIBRATE_S) {
+    P.calibrated = 1;
+    if (left > DV_PROGRESS_WARN_S) {
+      char what[80], basis[96];
+      snprintf(what, sizeof what, "%s: %s", P.scenario, P.engine);
+      snprintf(basis, sizeof basis, "%.3g s of wall time per simulated s, to t = %g s", spent / t,
+               P.duration);
+      announce(what, left, 1, basis);
+    }
+  }
+  if (!P.line || spent < DV_PROGRESS_DELAY_S) return;
+  char text[160], t_left[32];
+  say_time(left, t_left, sizeof t_left);
+  snprintf(text, sizeof text, "%s %s  t %.1f/%g s  %s left", P.scenario, P.engine, t, P.duration,
+           t_left);
+  draw(text);
+}
+
+void dv_run_progress_run_end(void) {
+  if (P.running && P.line) clear();
+  P.running = 0;
+}
+
+void dv_run_progress_tasks_begin(const char *noun, size_t n) {
+  if (P.depth++ > 0) return; /* a pool in a task's process, or in a task of an MPI rank */
+  snprintf(P.noun, sizeof P.noun, "%s", noun);
+  P.n = n;
+  P.ended = 0;
+  P.tasks_warned = 0;
+  P.tasks_began = P.last = dv_clock_now();
+}
+
+void dv_run_progress_task_ended(const char *note) {
+  if (P.depth != 1 || !(P.line || P.warn)) return;
+  P.ended++;
+  const double now = dv_clock_now(), spent = now - P.tasks_began;
+  const double left = spent * (double)(P.n - P.ended) / (double)P.ended;
+  if (P.warn && !P.tasks_warned && spent >= DV_PROGRESS_CALIBRATE_S) {
+    P.tasks_warned = 1;
+    if (left > DV_PROGRESS_WARN_S) {
+      char what[64], basis[64], t[32];
+      say_time(spent, t, sizeof t);
+      snprintf(what, sizeof what, "%s %zu/%zu: the rest", P.noun, P.ended, P.n);
+      snprintf(basis, sizeof basis, "%zu ended in %s", P.ended, t);
+      announce(what, left, 1, basis);
+    }
+  }
+  if (!P.line || (now - P.last < 1.0 / DV_PROGRESS_HZ && P.ended < P.n)) return;
+  P.last = now;
+  char text[160], t_left[32];
+  say_time(left, t_left, sizeof t_left);
+  snprintf(text, sizeof text, "%s %zu/%zu  %s left%s%.60s%s", P.noun, P.ended, P.n, t_left,
+           note ? "  (" : "", note ? note : "", note ? ")" : "");
+  draw(text);
+}
+
+void dv_run_progress_tasks_end(void) {
+  if (P.depth > 0 && --P.depth == 0 && P.line) clear();
+}
+
+void dv_run_progress_on_result(size_t k, int ran, void *ctx) {
+  (void)k, (void)ran, (void)ctx;
+  dv_run_progress_task_ended(NULL);
+}

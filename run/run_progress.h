@@ -1,0 +1,66 @@
+/* run_progress: signs of life during long runs, on stderr.
+ *
+ * Off until a command turns it on (dv_run_progress_start), so code that links
+ * the library sees nothing. Two things, both on stderr:
+ *
+ *  - the progress line, only when stderr is a terminal: one line rewritten
+ *    with \r, at most DV_PROGRESS_HZ times a second, from DV_PROGRESS_DELAY_S
+ *    of wall time into a run, cleared when the run ends:
+ *      "steady_circle mujoco  t 12.3/5000 s  3m12s left"
+ *    (the time left of that run, from its rate so far); or, while tasks run in
+ *    the exec pool's processes, counted by the parent as each ends:
+ *      "scenario 12/30  1m05s left  (steady_circle: pass)"
+ *    The tasks' own processes show nothing.
+ *  - the warning, one line, terminal or not (a log that stays silent for
+ *    minutes should say why), when the work ahead will take longer than
+ *    DV_PROGRESS_WARN_S. Before a comparison, once for all its runs: each
+ *    engine is probed for DV_PROGRESS_PROBE_S of wall time and its rate
+ *    (wall seconds per simulated second, measured: no cost model covers the
+ *    adaptive reference) times the duration summed; the runs then say
+ *    nothing more. Otherwise once for each run, when DV_PROGRESS_CALIBRATE_S
+ *    of it have shown its rate; and once for the tasks of a pool, from the
+ *    rate of those ended.
+ */
+#ifndef DV_RUN_PROGRESS_H
+#define DV_RUN_PROGRESS_H
+
+#include <stddef.h>
+
+#include "dv_engine.h"
+
+#define DV_PROGRESS_HZ 10           /* line updates a second at most */
+#define DV_PROGRESS_DELAY_S 0.25    /* s of wall time before a run's line appears */
+#define DV_PROGRESS_CALIBRATE_S 0.5 /* s of wall time that set a run's estimate */
+#define DV_PROGRESS_WARN_S 60.0     /* s: runs longer than this are announced */
+#define DV_PROGRESS_PROBE_S 0.1     /* s of wall time a comparison's probe of an engine takes */
+
+/* turn progress on for command ("compare"); quiet: neither line nor warning;
+ * stdout_busy: the command writes to stdout while it runs (no line when
+ * stdout is a terminal too: its rows would break the line) */
+void dv_run_progress_start(const char *command, int quiet, int stdout_busy);
+
+/* before dv_run_scenario's runs: the thin reference on ref_sc three times (the
+ * run and the two of the horizon), each engine on sc and, for a thick body,
+ * its matched reference; probed and announced as above (nothing when the
+ * warning is off, in a pool's task, or once it has been given) */
+void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
+                          const dv_engine_type *const *engines, size_t n);
+
+/* a run of engine over scenario for duration simulated seconds begins, is at
+ * simulated time t, has ended (dv_run_collect calls these) */
+void dv_run_progress_run_begin(const char *scenario, const char *engine, double duration);
+void dv_run_progress_run_at(double t);
+void dv_run_progress_run_end(void);
+
+/* n tasks of the exec pool begin ("scenario", "point"); one has ended, with a
+ * note for the line (may be NULL); they have all ended. Runs in between are
+ * silent (they are the tasks' own processes, or MPI ranks'); a pool inside a
+ * task is silent too. */
+void dv_run_progress_tasks_begin(const char *noun, size_t n);
+void dv_run_progress_task_ended(const char *note);
+void dv_run_progress_tasks_end(void);
+
+/* dv_run_progress_task_ended(NULL) as the exec pool's on_result */
+void dv_run_progress_on_result(size_t k, int ran, void *ctx);
+
+#endif

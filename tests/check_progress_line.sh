@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# check_progress_line.sh DISKVAL SCENARIO: the progress line of long runs
+# (README, "Progress line").
+#  - under a pseudo-terminal (script(1)) simulate, compare, verify, suite and
+#    sweep draw it (\r, the engine, "t T/D s", "left"; tasks "scenario k/n"),
+#    clear it at the end, and the suite's task processes draw nothing;
+#  - with stderr in a file, or with --quiet, there is no line;
+#  - what the commands write (CSV, JSON, reports, stdout) is byte-identical
+#    with and without the terminal, apart from the timing fields;
+#  - a run that will take longer than a minute says so once, terminal or not,
+#    and --quiet hides that too.
+# SCENARIO is a 1 s steady circle (tests/data/short_circle.ini), run for 3 s:
+# MuJoCo takes 0.9 s of wall time and ODE 1.2 s there (measured with
+# `time diskval simulate ... --set scenario.duration=3`), past the line's
+# 0.25 s delay with room for a machine 3x faster.
+set -u
+export LC_ALL=C
+dv=${1:?usage: check_progress_line.sh DISKVAL SCENARIO}
+sc=${2:?usage: check_progress_line.sh DISKVAL SCENARIO}
+command -v script >/dev/null || { echo "SKIP: script (bsdutils) not installed"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+fail=0
+long=(--set scenario.duration=3)
+
+# on_tty LOG CMD...: run CMD with stderr on a pseudo-terminal (stdout as CMD redirects it)
+on_tty() {
+  local log=$1
+  shift
+  script -qec "$*" /dev/null >"$log" </dev/null
+}
+# has_line LOG REGEX WHAT: LOG holds a progress line matching REGEX, cleared after the last one
+has_line() {
+  if ! grep -aEq $'\r'"$2" "$1"; then
+    echo "FAIL: $3: no progress line /$2/ on the terminal: $(tr '\r' '|' <"$1" | head -c 300)"
+    fail=1
+  elif ! tr '\r' '\n' <"$1" | awk -v re="$2" '$0 ~ re { seen = 1; next } seen && /^ +$/ { seen = 0 }
+      END { exit seen }'; then
+    echo "FAIL: $3: the last progress line was not cleared"
+    fail=1
+  fi
+}
+# no_line FILE WHAT: no progress line (no \r, no "left") in FILE
+no_line() {
+  if grep -aq $'\r\|left' "$1"; then
+    echo "FAIL: $2: progress output: $(tr '\r' '|' <"$1" | head -c 300)"
+    fail=1
+  fi
+}
+# untimed FILE: FILE without the JSON's timing fields ("wall_s", "wall_per_sim_s", ...)
+untimed() { grep -v '"[a-z_]*wall[a-z_]*":' "$1"; }
+# same A B WHAT: files identical, the timing fields aside
+same() {
+  if ! cmp -s <(untimed "$1") <(untimed "$2"); then
+    echo "FAIL: $3: $1 and $2 differ"
+    diff <(untimed "$1") <(untimed "$2") | head -4
+    fail=1
+  fi
+}
+
+# simulate: the line on a terminal; none in a file or with --quiet; the same CSV and metadata
+on_tty tty.log "'$dv' simulate '$sc' --engine mujoco ${long[*]} --out tty.csv"
+has_line tty.log 'short_circle mujoco  t [0-9.]+/3 s  [0-9]+s left' "simulate"
+"$dv" simulate "$sc" --engine mujoco "${long[@]}" --out file.csv 2>file.err
+no_line file.err "simulate, stderr in a file"
+same tty.csv file.csv "simulate CSV"
+same tty.csv.json file.csv.json "simulate metadata"
+on_tty quiet.log "'$dv' simulate '$sc' --engine mujoco ${long[*]} --out quiet.csv --quiet"
+no_line quiet.log "simulate --quiet on a terminal"
+# the CSV on stdout, stdout piped: the line still goes to the terminal, the CSV is the same
+on_tty pipe.log "'$dv' simulate '$sc' --engine mujoco ${long[*]} | cat > piped.csv"
+has_line pipe.log 'short_circle mujoco  t ' "simulate | cat"
+same piped.csv file.csv "simulate CSV through a pipe"
+
+# compare: a line for each run; the same report and stdout
+on_tty cmp.log "'$dv' compare '$sc' ${long[*]} --out tty > tty.out"
+has_line cmp.log 'short_circle ode  t [0-9.]+/3 s' "compare"
+"$dv" compare "$sc" "${long[@]}" --out file >file.out 2>cmp.err
+no_line cmp.err "compare, stderr in a file"
+sed 's|^report: file/|report: tty/|' file.out | cmp -s - tty.out || { echo "FAIL: compare stdout differs"; fail=1; }
+for f in reduced.csv mujoco.csv ode.csv report.json; do
+  same "tty/short_circle/$f" "file/short_circle/$f" "compare $f"
+done
+
+# verify: runs in this process; the same table
+on_tty ver.log "'$dv' verify '$sc' --engines mujoco > tty.ver"
+has_line ver.log 'short_circle mujoco  t ' "verify"
+"$dv" verify "$sc" --engines mujoco >file.ver 2>ver.err
+no_line ver.err "verify, stderr in a file"
+same tty.ver file.ver "verify stdout"
+
+# suite: counted by the parent; the tasks' own processes draw nothing
+mkdir s
+sed 's/^name = .*/name = one/' "$sc" >s/one.ini
+sed 's/^name = .*/name = two/' "$sc" >s/two.ini
+on_tty suite.log "'$dv' suite s --out stty --jobs 2 > stty.out"
+has_line suite.log 'scenario 2/2  [0-9]+s left  [(]' "suite"
+if grep -aq '  t [0-9.]*/' suite.log; then
+  echo "FAIL: suite: a task's process drew its run's line"
+  fail=1
+fi
+"$dv" suite s --out sfile --jobs 2 >sfile.out 2>suite.err
+no_line suite.err "suite, stderr in a file"
+sed 's|sfile|stty|' sfile.out | cmp -s - stty.out || { echo "FAIL: suite stdout differs"; fail=1; }
+same stty/summary.json sfile/summary.json "suite summary.json"
+on_tty squiet.log "'$dv' suite s --out squiet --jobs 2 --quiet > /dev/null"
+no_line squiet.log "suite --quiet on a terminal"
+
+# sweep: points counted
+on_tty sweep.log "'$dv' sweep '$sc' --engine mujoco --vary timestep=1e-3,5e-4 --out sw --jobs 2 > /dev/null"
+has_line sweep.log 'point 2/2  ' "sweep"
+
+# the warning: ODE at a 1e-6 s step costs about 1 s of wall time per simulated
+# second here, so 2000 s will take half an hour (a 30x faster machine still over a
+# minute); a run says so after 0.5 s, in a file too
+over=(--set scenario.duration=2000 --set engines.ode.timestep=1e-6)
+timeout 3 "$dv" simulate "$sc" --engine ode "${over[@]}" --out warn.csv 2>warn.err
+if [ "$(grep -c 'diskval simulate: short_circle: ode will take about [0-9hm]*s* more' warn.err)" -ne 1 ]; then
+  echo "FAIL: no single long-run warning in a file: $(cat warn.err)"
+  fail=1
+fi
+timeout 3 "$dv" simulate "$sc" --engine ode "${over[@]}" --out warnq.csv --quiet 2>warnq.err
+[ -s warnq.err ] && { echo "FAIL: --quiet still warns: $(cat warnq.err)"; fail=1; }
+
+# before a comparison, once for all its runs (the ODE run then says nothing more)
+timeout 4 "$dv" compare "$sc" --engines ode "${over[@]}" --out warnc >/dev/null 2>warnc.err
+if [ "$(grep -c 'diskval compare: short_circle: the comparison to t = 2000 s (4 runs) will take about' \
+  warnc.err)" -ne 1 ] || [ "$(wc -l <warnc.err)" -ne 1 ]; then
+  echo "FAIL: no single warning before a long comparison: $(cat warnc.err)"
+  fail=1
+fi
+
+[ $fail -eq 0 ] && echo "progress: on a terminal only, cleared, quiet on request, outputs unchanged"
+exit $fail

@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# check_suite_faults.sh DISKVAL SCENARIO_DIR: a suite's faults and its output directory.
+#   - a scenario over --timeout is ended and reported as an error, "timed out
+#     after N s", on stdout, in summary.json, junit.xml and index.html; the
+#     other scenario is still reported, and nothing temporary is left;
+#   - a scenario that errors replaces its earlier (passing) report by its
+#     failure with the real cause, in every output;
+#   - a second run into a directory another run holds (.diskval.lock) is
+#     refused in one line, exit 2, and touches nothing there;
+#   - temporaries of a dead run are removed by the next suite (all) or
+#     compare (its scenario's), those of a live process kept.
+# Timings (diskval suite ... --jobs 2 on 2 busy cores): fast.ini and slow.ini
+# at 1 s take 0.7 s together; slow.ini at 60 s takes over 20 s (MuJoCo alone:
+# 20 s), so a 5 s limit is 7x the fast run and a quarter of the slow one.
+set -u
+export LC_ALL=C
+dv=${1:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
+sc=${2:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+fail=0
+check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
+# scenario NAME DURATION: a copy of the 60 s long_horizon scene as NAME.ini
+scenario() {
+  sed -e "s/^name = .*/name = $1/" -e "s/^duration = .*/duration = $2/" \
+    "$sc/hard/long_horizon.ini" >"$1.ini"
+}
+# summary FIELD NAME: the scenario's pass or error in summary.json
+summary() {
+  jq -r --arg f "$1" --arg n "$2" '.scenarios[] | select(.scenario == $n) | .[$f]' out/summary.json
+}
+
+# a passing run, then slow.ini made 60 s long under a 5 s limit
+scenario fast 1
+scenario slow 1
+"$dv" suite fast.ini slow.ini --out out --jobs 2 >stdout 2>stderr; code=$?
+check '[ $code -eq 0 ] && [ "$(summary pass slow)" = true ]' "first run: exit $code, $(cat stderr)"
+scenario slow 60
+start=$(date +%s)
+"$dv" suite fast.ini slow.ini --out out --jobs 2 --timeout 5 >stdout 2>stderr; code=$?
+took=$(($(date +%s) - start))
+why="timed out after 5 s"
+check '[ $code -eq 2 ]' "timeout: exit $code, want 2"
+check '[ $took -lt 15 ]' "timeout: the suite took $took s: the slow scenario was not ended"
+check 'grep -q "^slow: error: $why$" stdout' "timeout: stdout does not say so: $(cat stdout)"
+check 'grep -q "slow: $why" stderr' "timeout: stderr does not say so: $(cat stderr)"
+check '[ "$(summary pass slow)" = false ] && [ "$(summary error slow)" = "$why" ]' \
+  "timeout: summary.json says pass $(summary pass slow), error $(summary error slow)"
+check '[ "$(summary pass fast)" = true ]' "timeout: the other scenario is not reported as passing"
+check 'grep -q "<error message=\"$why\"" out/junit.xml' "timeout: junit.xml has no error '$why'"
+check 'grep -q "$why" out/index.html' "timeout: index.html does not say '$why'"
+check '[ ! -e out/slow/reduced.csv ] && grep -q "$why" out/slow/report.json' \
+  "timeout: the earlier report of slow is still there"
+check '[ -z "$(find out -name "*.tmp.*" -o -name "*.old.*")" ]' "timeout: temporaries remain"
+
+# an error inside the run (the reference's step budget) replaces the report
+scenario slow 1
+"$dv" suite fast.ini slow.ini --out out --jobs 2 >/dev/null 2>&1
+"$dv" suite fast.ini slow.ini --out out --set engines.reduced.max_steps=5 >stdout 2>stderr
+code=$?
+why="step budget spent"
+check '[ $code -eq 2 ]' "error: exit $code, want 2"
+check 'grep -q "^slow: error: .*$why" stdout' "error: stdout does not say so: $(cat stdout)"
+check '[ "$(summary pass slow)" = false ] && [[ "$(summary error slow)" == *"$why"* ]]' \
+  "error: summary.json says pass $(summary pass slow), error $(summary error slow)"
+check 'grep -q "<error message=\"gsl-rk8pd $why" out/junit.xml && ! grep -q "cannot open" out/junit.xml' \
+  "error: junit.xml lacks the real cause: $(grep "<error" out/junit.xml)"
+check 'grep -q "$why" out/index.html' "error: index.html lacks the cause"
+check '[ ! -e out/slow/theta.svg ]' "error: the earlier report's plots remain"
+
+# a pid that no process has: that of a process that has ended
+sleep 0 &
+dead=$!
+wait "$dead"
+
+# a second run while another holds the directory: refused, nothing touched
+# (not even a dead run's temporary, which a run that went on would remove)
+mkdir -p held
+touch "held/.other.tmp.$dead.abcdef" held/keep.txt
+exec 9>held/.diskval.lock # this shell holds the lock, as a running suite would
+flock -n 9 || echo "FAIL: cannot take the lock to hold it"
+(cd held && find . -exec stat -c '%n %s %Y' {} + | sort) >before
+"$dv" suite fast.ini --out held >stdout 2>stderr; code=$?
+exec 9>&-
+check '[ $code -eq 2 ]' "lock: exit $code, want 2"
+check '[ "$(wc -l <stderr)" -eq 1 ] && grep -q "another diskval run is writing into this directory" stderr' \
+  "lock: want one line saying why, got: $(cat stderr)"
+check '[ ! -s stdout ]' "lock: stdout: $(cat stdout)"
+(cd held && find . -exec stat -c '%n %s %Y' {} + | sort) >after
+check 'diff before after >/dev/null' "lock: the held directory changed: $(diff before after)"
+
+# temporaries of a dead run go, those of a live process stay
+mkdir -p out/.slow.tmp.$dead.abcdef out/.fast.tmp.$$.abcdef
+touch out/summary.json.tmp.$dead.abcdef
+"$dv" suite fast.ini --out out >/dev/null 2>&1
+check '[ ! -e out/.slow.tmp.$dead.abcdef ] && [ ! -e out/summary.json.tmp.$dead.abcdef ]' \
+  "stale: a dead run's temporaries remain"
+check '[ -d out/.fast.tmp.$$.abcdef ]' "stale: a live process's temporary was removed"
+mkdir -p out/.fast.tmp.$dead.abcdef out/.fast.old.$dead
+"$dv" compare fast.ini --out out >/dev/null 2>&1
+check '[ ! -e out/.fast.tmp.$dead.abcdef ] && [ ! -e out/.fast.old.$dead ]' \
+  "stale: compare left a dead run's temporaries of its scenario"
+check '[ -d out/.fast.tmp.$$.abcdef ]' "stale: compare removed a live process's temporary"
+
+[ $fail -eq 0 ] && echo "suite faults: contained, with their causes"
+exit $fail

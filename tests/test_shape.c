@@ -1,0 +1,96 @@
+/* test_shape: [disk] thickness is the disk's. A coin written once in [disk]
+ * gives the contact engines and the matched reference the same body as their
+ * stand-in keys written out; the keys, where given, still win; a thin disk
+ * stays thin. Usage: test_shape SCENARIO (a steady circle). */
+#include <math.h>
+#include <string.h>
+
+#include "dv_engine.h"
+#include "dv_test.h"
+#include "dv_test_traj.h"
+
+#define H 0.002 /* m, half of the coin's 4 mm */
+
+static int load(const char *path, const char *const *sets, size_t n, dv_scenario *sc) {
+  dv_error err = {{0}};
+  const int status = dv_engine_load_scenario(path, sets, n, sc, &err);
+  CHECK(status == DV_OK, "%s", err.msg);
+  return status;
+}
+
+/* the same trajectory, bit for bit: the same model, the same settings */
+static void check_same_run(const dv_engine_type *e, const dv_scenario *a, const dv_scenario *b) {
+  static traj ta, tb;
+  dv_test_run(e, a, &ta);
+  dv_test_run(e, b, &tb);
+  CHECK(ta.status >= 0 && tb.status >= 0, "%s: %s %s", e->name, ta.msg, tb.msg);
+  CHECK(ta.n == tb.n && ta.n > 10, "%s: %ld and %ld samples", e->name, ta.n, tb.n);
+  for (long i = 0; i < ta.n && i < tb.n; i++)
+    CHECK(!memcmp(ta.s[i].y, tb.s[i].y, sizeof ta.s[i].y), "%s: sample %ld differs", e->name, i);
+}
+
+int main(int argc, char **argv) {
+  if (argc != 2) return fprintf(stderr, "usage: test_shape SCENARIO\n"), 2;
+  const char *path = argv[1];
+  /* a uniform solid cylinder: A = m (3 r^2 + L^2) / 12 (r = 0.1 m, m = 1 kg, L = 4 mm) */
+  const double A = (3.0 * 0.01 + 0.004 * 0.004) / 12.0;
+  static dv_scenario coin, keys, thin, standin;
+
+  const char *coin_sets[] = {"scenario.duration=0.2", "disk.thickness=0.004"};
+  if (load(path, coin_sets, 2, &coin)) return TEST_RESULT();
+  CHECK_NEAR(coin.disk.A, A, 1e-18, "A of a solid cylinder");
+  char given_a[64];
+  snprintf(given_a, sizeof given_a, "disk.A=%.17g", coin.disk.A);
+  const char *key_sets[] = {"scenario.duration=0.2",
+                            given_a,
+                            "engines.mujoco.geom=cylinder",
+                            "engines.mujoco.half_thickness=0.002",
+                            "engines.ode.geom=cylinder",
+                            "engines.ode.half_thickness=0.002",
+                            "engines.matched.half_thickness=0.002"};
+  if (load(path, key_sets, 7, &keys)) return TEST_RESULT();
+  CHECK(coin.disk.A == keys.disk.A, "A %.17g and %.17g", coin.disk.A, keys.disk.A);
+  const char *engines[] = {"mujoco", "ode"};
+  for (int i = 0; i < 2; i++) {
+    const char *e = engines[i];
+    CHECK(dv_scenario_get(&coin, e, "geom") == 1.0, "%s: coin geom %g", e,
+          dv_scenario_get(&coin, e, "geom"));
+    CHECK(dv_scenario_get(&coin, e, "half_thickness") == H, "%s: coin half_thickness %g", e,
+          dv_scenario_get(&coin, e, "half_thickness"));
+    CHECK(strstr(dv_scenario_derived(&coin, e), "[disk] thickness 0.004 m"), "%s: derived '%s'", e,
+          dv_scenario_derived(&coin, e));
+    CHECK(dv_engine_half_thickness(dv_engine_find(e), &coin) == H, "%s: compared at h", e);
+    check_same_run(dv_engine_find(e), &coin, &keys);
+  }
+  CHECK(dv_scenario_get(&coin, "matched", "half_thickness") == H, "matched: %g",
+        dv_scenario_get(&coin, "matched", "half_thickness"));
+  check_same_run(&dv_engine_matched, &coin, &keys);
+
+  /* no thickness: the thin disk in every engine, the matched reference is the thin one */
+  if (load(path, NULL, 0, &thin)) return TEST_RESULT();
+  CHECK(thin.disk.A == 0.25 * (0.1 * 0.1), "thin A %.17g", thin.disk.A);
+  for (int i = 0; i < 2; i++) {
+    CHECK(dv_scenario_get(&thin, engines[i], "geom") == 0.0, "%s: thin geom", engines[i]);
+    CHECK(dv_engine_half_thickness(dv_engine_find(engines[i]), &thin) == 0.0, "%s", engines[i]);
+  }
+  CHECK(dv_scenario_get(&thin, "matched", "half_thickness") == 0.0, "matched of a thin disk");
+
+  /* the engine keys are stand-ins and win: MuJoCo's flat ellipsoid of the coin's
+   * half-thickness, ODE's thin disk, a matched reference of 1 mm */
+  const char *standin_sets[] = {"disk.thickness=0.004", "engines.mujoco.geom=ellipsoid",
+                                "engines.ode.geom=thin", "engines.matched.half_thickness=0.001"};
+  if (load(path, standin_sets, 4, &standin)) return TEST_RESULT();
+  CHECK(dv_scenario_get(&standin, "mujoco", "geom") == 2.0, "mujoco: the ellipsoid given");
+  CHECK(dv_scenario_get(&standin, "mujoco", "half_thickness") == H, "mujoco: semi-axis");
+  CHECK(dv_engine_half_thickness(&dv_engine_mujoco, &standin) == 0.0, "ellipsoid: thin reference");
+  CHECK(dv_scenario_get(&standin, "ode", "geom") == 0.0, "ode: the thin disk given");
+  CHECK(dv_engine_half_thickness(&dv_engine_ode, &standin) == 0.0, "ode: thin reference");
+  CHECK(dv_scenario_get(&standin, "matched", "half_thickness") == 0.001, "matched: given");
+
+  /* a scenario built in code takes the disk's thickness at run time too */
+  dv_scenario code = thin;
+  code.thickness = 0.004;
+  CHECK(dv_engine_half_thickness(&dv_engine_ode, &code) == H, "built in code: ode");
+  CHECK(dv_engine_half_thickness(&dv_engine_mujoco, &code) == H, "built in code: mujoco");
+  return TEST_RESULT();
+}
