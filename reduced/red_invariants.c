@@ -9,6 +9,8 @@
 
 /* within this of lying flat the basis comes from its equation, not from 2F1 (rad) */
 #define BASIS_EDGE 0.06
+/* the tame equation in s needs a few hundred steps even at theta = 1e-300 */
+#define BASIS_MAX_STEPS 100000
 
 double red_legendre_k(const red_disk *dk) {
   const double mr2 = dk->m * dk->r * dk->r;
@@ -55,13 +57,15 @@ static int basis_hypergeometric(const red_disk *dk, double th, double u[2], doub
   return 0;
 }
 
-/* rho'' = k rho - cot(theta) rho' for both basis functions: y = (u1, u1', u2, u2') */
-static int legendre(double th, const double y[], double dy[], void *params) {
-  const double k = *(const double *)params, cot = cos(th) / sin(th);
+/* in s = log tan(theta/2) the equation rho'' = k rho - cot(theta) rho' reads
+ * d2rho/ds2 = k sech^2(s) rho, tame up to lying flat (s -> +-inf) where theta
+ * steps would shrink with the distance to it: y = (u1, du1/ds, u2, du2/ds) */
+static int legendre_s(double s, const double y[], double dy[], void *params) {
+  const double k = *(const double *)params, sech = 1.0 / cosh(s), ks2 = k * sech * sech;
   dy[0] = y[1];
-  dy[1] = k * y[0] - cot * y[1];
+  dy[1] = ks2 * y[0];
   dy[2] = y[3];
-  dy[3] = k * y[2] - cot * y[3];
+  dy[3] = ks2 * y[2];
   return GSL_SUCCESS;
 }
 
@@ -70,18 +74,22 @@ static int legendre(double th, const double y[], double dy[], void *params) {
  * BASIS_EDGE carried to th by the equation it solves (rk8pd, GSL) */
 static int basis_near_flat(const red_disk *dk, double th, double u[2], double du[2]) {
   const double th0 = th < M_PI_2 ? BASIS_EDGE : M_PI - BASIS_EDGE;
+  const double s0 = log(tan(0.5 * th0)), s1 = log(tan(0.5 * th));
   double y[4], k = red_legendre_k(dk);
   if (basis_hypergeometric(dk, th0, u, du)) return -1;
-  y[0] = u[0], y[1] = du[0], y[2] = u[1], y[3] = du[1];
-  gsl_odeiv2_system sys = {legendre, NULL, 4, &k};
+  /* d/ds = sin(theta) d/dtheta */
+  y[0] = u[0], y[1] = sin(th0) * du[0], y[2] = u[1], y[3] = sin(th0) * du[1];
+  gsl_odeiv2_system sys = {legendre_s, NULL, 4, &k};
   gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd,
-                                                       th < th0 ? -1e-4 : 1e-4, 1e-14, 1e-14);
+                                                       s1 < s0 ? -1e-3 : 1e-3, 1e-14, 1e-14);
   if (!d) return -1;
-  double t = th0;
-  const int status = gsl_odeiv2_driver_apply(d, &t, th, y);
+  gsl_odeiv2_driver_set_nmax(d, BASIS_MAX_STEPS);
+  double s = s0;
+  const int status = gsl_odeiv2_driver_apply(d, &s, s1, y);
   gsl_odeiv2_driver_free(d);
-  u[0] = y[0], du[0] = y[1], u[1] = y[2], du[1] = y[3];
-  return status == GSL_SUCCESS && isfinite(y[0] + y[1] + y[2] + y[3]) ? 0 : -1;
+  const double sn = sin(th);
+  u[0] = y[0], du[0] = y[1] / sn, u[1] = y[2], du[1] = y[3] / sn;
+  return status == GSL_SUCCESS && isfinite(du[0] + du[1] + u[0] + u[1]) ? 0 : -1;
 }
 
 int red_rho_basis(const red_disk *dk, double th, double u[2], double du[2]) {
