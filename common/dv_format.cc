@@ -1,8 +1,10 @@
-// dv_format: the C interface to double-conversion's shortest and precision
-// modes (the converter V8 uses), with the notation of printf's %g.
+// dv_format: the C interface to Dragonbox's shortest digits and to
+// double-conversion's precision mode (the converter V8 uses), with the
+// notation of printf's %g.
 #include "dv_format.h"
 
 #include <double-conversion/double-to-string.h>
+#include <dragonbox/dragonbox.h>
 
 #include <cmath>
 #include <cstring>
@@ -11,10 +13,6 @@ using double_conversion::DoubleToStringConverter;
 using double_conversion::StringBuilder;
 
 namespace {
-
-// shortest digits; plain decimals for 1e-4 <= |v| < 1e17 as %g, "1e-5", "1e20" beyond
-const DoubleToStringConverter shortest(DoubleToStringConverter::NO_FLAGS, "inf", "nan", 'e', -4, 17,
-                                       0, 0);
 
 // printf's %.Ng: "1e-05", "1e+20", exponents from 1e-5 and from 10^N, no trailing zeros
 const DoubleToStringConverter precision(DoubleToStringConverter::EMIT_POSITIVE_EXPONENT_SIGN |
@@ -44,11 +42,84 @@ size_t emit(char *buf, size_t size, Write write) {
   return n;
 }
 
+// the shortest digits of finite, nonzero |v| (Dragonbox, ties to even) into
+// digits; their count, and the decimal exponent of the first digit in *exp10
+int shortest_digits(double v, char digits[17], int *exp10) {
+  namespace policy = jkj::dragonbox::policy;
+  auto d = jkj::dragonbox::to_decimal(v, policy::sign::ignore, policy::trailing_zero::remove);
+  char rev[20];
+  int n = 0;
+  auto sig = d.significand;
+  do rev[n++] = static_cast<char>('0' + sig % 10);
+  while (sig /= 10);
+  for (int i = 0; i < n; i++) digits[i] = rev[n - 1 - i];
+  *exp10 = d.exponent + n - 1;
+  return n;
+}
+
+// the text of finite v: plain decimals for 1e-4 <= |v| < 1e17, else d.ddde-N / d.dddeN
+size_t write_shortest(double v, char *out) {
+  char *p = out;
+  if (std::signbit(v)) *p++ = '-';
+  if (v == 0.0) {
+    *p++ = '0';
+    return static_cast<size_t>(p - out);
+  }
+  char digits[17];
+  int e;
+  const int n = shortest_digits(v, digits, &e);
+  if (e < -4 || e >= 17) {
+    *p++ = digits[0];
+    if (n > 1) {
+      *p++ = '.';
+      std::memcpy(p, digits + 1, static_cast<size_t>(n - 1));
+      p += n - 1;
+    }
+    *p++ = 'e';
+    if (e < 0) *p++ = '-';
+    char exp[4];
+    int k = 0;
+    for (int a = e < 0 ? -e : e; a || !k; a /= 10) exp[k++] = static_cast<char>('0' + a % 10);
+    while (k) *p++ = exp[--k];
+  } else if (e < 0) {  // 0.000ddd
+    *p++ = '0';
+    *p++ = '.';
+    for (int i = -1; i > e; i--) *p++ = '0';
+    std::memcpy(p, digits, static_cast<size_t>(n));
+    p += n;
+  } else if (e + 1 >= n) {  // ddd000
+    std::memcpy(p, digits, static_cast<size_t>(n));
+    p += n;
+    for (int i = n; i <= e; i++) *p++ = '0';
+  } else {  // dd.ddd
+    std::memcpy(p, digits, static_cast<size_t>(e + 1));
+    p += e + 1;
+    *p++ = '.';
+    std::memcpy(p, digits + e + 1, static_cast<size_t>(n - e - 1));
+    p += n - e - 1;
+  }
+  return static_cast<size_t>(p - out);
+}
+
 }  // namespace
 
 // shortest round-trip text; "nan" (of either sign), "inf", "-inf"
 extern "C" size_t dv_format_double(double v, char *buf, size_t size) {
-  return emit(buf, size, [v](StringBuilder *sb) { shortest.ToShortest(v, sb); });
+  char text[DV_FORMAT_SIZE];
+  size_t n;
+  if (std::isnan(v)) {
+    n = 3, std::memcpy(text, "nan", 3);
+  } else if (std::isinf(v)) {
+    n = v > 0 ? 3 : 4, std::memcpy(text, v > 0 ? "inf" : "-inf", n);
+  } else {
+    n = write_shortest(v, text);
+  }
+  if (size) {
+    const size_t k = n < size - 1 ? n : size - 1;
+    std::memcpy(buf, text, k);
+    buf[k] = '\0';
+  }
+  return n;
 }
 
 // shortest round-trip text, null where JSON has no number

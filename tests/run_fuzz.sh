@@ -16,8 +16,9 @@ if ! clang -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" 2>/dev/null; then
 fi
 sundials="-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense"
 sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
-# numbers as text (dv_format) are C++ over double-conversion
-clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -I"$src/common" \
+# numbers as text (dv_format) are C++ over Dragonbox and double-conversion
+dragonbox=${DV_DRAGONBOX_INCLUDE:-$(ls -d /usr/include/dragonbox-* 2>/dev/null | tail -1)}
+clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -I"$src/common" -I"$dragonbox" \
   -c "$src/common/dv_format.cc" -o "$work/dv_format.o" || exit 1
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \

@@ -3,7 +3,8 @@
  *     uniform and log-uniform draws, integers up to 2^53 and special values
  *     (subnormals down to 4.9e-324, -0, 1e308, DBL_MAX, DBL_MIN, 0.1, 0.3,
  *     1/3): strtod reads the whole text back to the same bits, the text is no
- *     longer than %.17g's and has the fewest significant digits that do;
+ *     longer than %.17g's and has the fewest significant digits that do,
+ *     the nearest to v of those (printf's correctly rounded digits);
  *   - the documented forms: "0.3", "1e-5", "12345678", "-0", "nan", "inf",
  *     "-inf", null in JSON; snprintf's return and truncation;
  *   - dv_format_precision as printf's %.*g; JSON items through cJSON;
@@ -63,6 +64,19 @@ static int significant_digits(const char *s) {
   return n;
 }
 
+/* the two texts have the same significant digits (ignoring trailing zeros) */
+static int same_digits(const char *a, const char *b) {
+  char da[32], db[32];
+  int na = 0, nb = 0;
+  for (; *a && *a != 'e' && na < 31; a++)
+    if (*a >= '0' && *a <= '9' && (na || *a != '0')) da[na++] = *a;
+  for (; *b && *b != 'e' && nb < 31; b++)
+    if (*b >= '0' && *b <= '9' && (nb || *b != '0')) db[nb++] = *b;
+  while (na && da[na - 1] == '0') na--;
+  while (nb && db[nb - 1] == '0') nb--;
+  return na == nb && !memcmp(da, db, (size_t)na);
+}
+
 static long checked, failed;
 
 /* v formatted reads back to its bits, no longer than %.17g, with the fewest digits */
@@ -79,6 +93,13 @@ static void check_round_trip(double v) {
     snprintf(ref, sizeof ref, "%.*e", digits - 2, v);
     double shorter = strtod(ref, NULL);
     ok = memcmp(&shorter, &v, sizeof v) != 0;
+  }
+  /* of the texts with that many digits, the nearest to v (printf's correctly
+   * rounded one) wherever that one reads back */
+  if (ok && isfinite(v) && v != 0.0) {
+    snprintf(ref, sizeof ref, "%.*e", digits - 1, v);
+    double nearest = strtod(ref, NULL);
+    if (!memcmp(&nearest, &v, sizeof v)) ok = same_digits(buf, ref);
   }
   checked++;
   if (!ok && failed++ < 10) {
