@@ -25,6 +25,11 @@
  * onto the samples stays below rtol for rtol 1e-10 ... 1e-13 (bench_reduced). */
 #define KAPPA 4.7
 
+/* a step end: time, y and y' */
+typedef struct gsl_node {
+  double t, y[RED_MAX_DIM], f[RED_MAX_DIM];
+} gsl_node;
+
 typedef struct gsl_stepper {
   const red_system *sys;
   gsl_odeiv2_system gsys;
@@ -41,9 +46,8 @@ typedef struct gsl_stepper {
   double query_gap;      /* the spacing of the outputs asked, s (0: none yet) */
   int uncovered;         /* steps longer than the bound among the interpolant's last NODES - 1 */
   int nodes;             /* history length, <= NODES */
-  double tn[NODES];      /* node times, oldest first */
-  double yn[RED_MAX_DIM][NODES];     /* y at the nodes, per component */
-  double fn[RED_MAX_DIM][NODES];     /* y' at the nodes */
+  int oldest;            /* ring index of the oldest node */
+  gsl_node ring[NODES];  /* the history, a ring: a step writes one node, moves none */
   double dd[RED_MAX_DIM][2 * NODES]; /* divided differences */
   double z[2 * NODES];
   int dd_valid; /* dd matches the nodes */
@@ -57,28 +61,26 @@ static int gsl_rhs(double t, const double y[], double f[], void *p) {
   return s->sys->rhs(t, y, f, s->sys->params) ? GSL_EDOM : GSL_SUCCESS;
 }
 
+/* the k-th node of the history, oldest first */
+static gsl_node *node(gsl_stepper *s, int k) {
+  return &s->ring[(s->oldest + k) % NODES];
+}
+
 /* append (t, y, y') to the history; the interpolant is rebuilt when needed.
  * f is y' at the new node (evolve's dydt_out after a step), or NULL */
 static int push_node(gsl_stepper *s, const double *f_node, dv_error *err) {
   const size_t n = s->sys->dim;
-  double f[RED_MAX_DIM];
-  if (f_node)
-    memcpy(f, f_node, n * sizeof(double));
-  else if (gsl_rhs(s->t, s->y, f, s))
-    return dv_fail(err, DV_ENUMERIC, "state left the domain");
   if (s->nodes == NODES) {
-    memmove(s->tn, s->tn + 1, (NODES - 1) * sizeof(double));
-    for (size_t i = 0; i < n; i++) {
-      memmove(s->yn[i], s->yn[i] + 1, (NODES - 1) * sizeof(double));
-      memmove(s->fn[i], s->fn[i] + 1, (NODES - 1) * sizeof(double));
-    }
+    s->oldest = (s->oldest + 1) % NODES;
     s->nodes--;
   }
-  s->tn[s->nodes] = s->t;
-  for (size_t i = 0; i < n; i++) {
-    s->yn[i][s->nodes] = s->y[i];
-    s->fn[i][s->nodes] = f[i];
-  }
+  gsl_node *q = node(s, s->nodes);
+  q->t = s->t;
+  memcpy(q->y, s->y, n * sizeof(double));
+  if (f_node)
+    memcpy(q->f, f_node, n * sizeof(double));
+  else if (gsl_rhs(s->t, s->y, q->f, s))
+    return dv_fail(err, DV_ENUMERIC, "state left the domain");
   s->nodes++;
   s->dd_valid = 0;
   return DV_OK;
@@ -127,7 +129,7 @@ static int gsl_reset(void *p, double t0, const double *y0, dv_error *err) {
   s->t = t0;
   s->h = 1e-4; /* small first steps keep the low-degree start of the interpolant accurate */
   memcpy(s->y, y0, s->sys->dim * sizeof(double));
-  s->nodes = 0;
+  s->nodes = s->oldest = 0;
   s->last_query = t0;
   s->query_gap = 0.0;
   s->uncovered = 0;
@@ -164,14 +166,13 @@ static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
 /* y at t inside the last step: one step of the method from the step's start
  * (shorter than the step it took, so within its tolerance) */
 static int step_onto(gsl_stepper *s, double t, double *y, dv_error *err) {
-  const size_t n = s->sys->dim, k = (size_t)s->nodes - 2;
+  const size_t n = s->sys->dim;
+  const gsl_node *start = node(s, s->nodes - 2);
   double yerr[RED_MAX_DIM], f[RED_MAX_DIM];
-  for (size_t i = 0; i < n; i++) {
-    y[i] = s->yn[i][k];
-    f[i] = s->fn[i][k];
-  }
+  memcpy(y, start->y, n * sizeof(double));
+  memcpy(f, start->f, n * sizeof(double));
   gsl_odeiv2_step_reset(s->onto);
-  if (gsl_odeiv2_step_apply(s->onto, s->tn[k], t - s->tn[k], y, yerr, f, NULL, &s->gsys))
+  if (gsl_odeiv2_step_apply(s->onto, start->t, t - start->t, y, yerr, f, NULL, &s->gsys))
     return dv_fail(err, DV_ENUMERIC, "state left the domain at t = %.17g", t);
   return DV_OK;
 }
@@ -186,8 +187,15 @@ static int gsl_dense(void *p, double t, double *y, dv_error *err) {
   s->last_query = t;
   if (s->uncovered) return step_onto(s, t, y, err);
   if (!s->dd_valid) {
-    for (size_t i = 0; i < s->sys->dim; i++)
-      gsl_poly_dd_hermite_init(s->dd[i], s->z, s->tn, s->yn[i], s->fn[i], (size_t)s->nodes);
+    double tn[NODES], yn[NODES], fn[NODES];
+    for (int k = 0; k < s->nodes; k++) tn[k] = node(s, k)->t;
+    for (size_t i = 0; i < s->sys->dim; i++) {
+      for (int k = 0; k < s->nodes; k++) {
+        yn[k] = node(s, k)->y[i];
+        fn[k] = node(s, k)->f[i];
+      }
+      gsl_poly_dd_hermite_init(s->dd[i], s->z, tn, yn, fn, (size_t)s->nodes);
+    }
     s->dd_valid = 1;
   }
   for (size_t i = 0; i < s->sys->dim; i++)
