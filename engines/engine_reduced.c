@@ -107,7 +107,7 @@ static const dv_setting_spec KEYS[] = {
     {"integrator", DV_SETTING_CHOICE, AT(integrator), 0, 0, 0, 0, 0, NULL, integrator_at, "",
      "GSL or SUNDIALS integrator (diskval engines lists them)"},
     {"rtol", DV_SETTING_REAL, AT(rtol), 0, OPEN, 1e-12, 0.0, 1.0, NULL, NULL, "", "relative"},
-    {"atol", DV_SETTING_REAL, AT(atol), 0, OPEN, 1e-14, 0.0, 1.0, NULL, NULL, "", "absolute"},
+    {"atol", DV_SETTING_REAL, AT(atol), 0, OPEN, 1e-13, 0.0, 1.0, NULL, NULL, "", "absolute"},
     {"theta_limit", DV_SETTING_REAL, AT(theta_limit), 0, OPEN, 0.01, 0.0, M_PI / 2, NULL, NULL,
      "rad", "every run ends where theta < limit or > pi - limit"},
     {"max_steps", DV_SETTING_INT, AT(max_steps), 0, 0, (double)RED_DEFAULT_MAX_STEPS, 1, 1e9, NULL,

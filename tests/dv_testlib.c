@@ -46,11 +46,16 @@ static tl_traj alloc_traj(double duration, double dt) {
 
 tl_traj tl_run(const red_disk *disk, const red_stepper_type *stepper, double tol,
                const double y0[RED_NSTATE], double duration, double dt, double theta_limit) {
+  return tl_run_tols(disk, stepper, tol, tol * 1e-2, y0, duration, dt, theta_limit);
+}
+
+tl_traj tl_run_tols(const red_disk *disk, const red_stepper_type *stepper, double rtol, double atol,
+                    const double y0[RED_NSTATE], double duration, double dt, double theta_limit) {
   red_reference ref;
   red_reference_init(&ref, disk, theta_limit);
   tl_traj tr = alloc_traj(duration, dt);
   sink s = {&tr, disk, 0};
-  red_run run = {stepper, tol, tol * 1e-2, 0.0, duration, dt, keep, &s};
+  red_run run = {stepper, rtol, atol, 0.0, duration, dt, keep, &s};
   double y[RED_NSTATE];
   memcpy(y, y0, sizeof y);
   tr.status = red_solve(&ref.sys, &run, y, &tr.result, NULL);

@@ -19,10 +19,15 @@ typedef struct tl_traj {
 /* a disk with A = a_ratio m r^2, C = c_ratio m r^2, r = 0.1, m = 1, g = 9.81 */
 red_disk tl_disk(double a_ratio, double c_ratio);
 
-/* integrate the reduced equations from y0 for duration, sampling every dt;
- * events end the run when theta leaves (theta_limit, pi - theta_limit) */
+/* integrate the reduced equations from y0 for duration, sampling every dt, at
+ * rtol tol and atol tol / 100; events end the run when theta leaves
+ * (theta_limit, pi - theta_limit) */
 tl_traj tl_run(const red_disk *disk, const red_stepper_type *stepper, double tol,
                const double y0[RED_NSTATE], double duration, double dt, double theta_limit);
+
+/* tl_run at the given rtol and atol */
+tl_traj tl_run_tols(const red_disk *disk, const red_stepper_type *stepper, double rtol, double atol,
+                    const double y0[RED_NSTATE], double duration, double dt, double theta_limit);
 
 /* formulation: 0 reduced, 1 momentum (3.67), 2 Lagrange multipliers */
 tl_traj tl_run_form(const red_disk *disk, int form, const red_stepper_type *stepper, double tol,
