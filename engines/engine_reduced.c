@@ -10,6 +10,7 @@
 #include "dv_engine.h"
 #include "red_reference.h"
 #include "dv_reference.h"
+#include "engine_scene.h"
 #include "red_rolling.h"
 
 typedef struct reduced_engine {
@@ -84,10 +85,31 @@ static const char *integrator_at(size_t i) {
 }
 
 /* the lying-down limit is every engine's: the initial tilt must lie inside it */
+/* the step budget a scenario leaves out: RED_STEPS_PER_SCALE steps per
+ * shortest time scale of the scene over its duration, at least
+ * RED_DEFAULT_MAX_STEPS (rk8pd at the defaults takes about 13 per scale) */
+static void derive_max_steps(dv_scenario *sc, dv_reduced_settings *s) {
+  static const char *const keys[] = {"max_steps", NULL};
+  dv_scene_scales scales;
+  dv_engine_scene_scales(sc, &scales);
+  const double t = scales.t[scales.shortest];
+  const double budget =
+      fmax((double)RED_DEFAULT_MAX_STEPS, fmin(1e9, RED_STEPS_PER_SCALE * sc->duration / t));
+  s->max_steps = (int)budget;
+  char why[DV_DERIVED_BYTES];
+  snprintf(why, sizeof why, "max_steps %d: %g steps per %s (%.3g s) over %g s, at least %ld",
+           s->max_steps, RED_STEPS_PER_SCALE, dv_scale_names[scales.shortest], t, sc->duration,
+           RED_DEFAULT_MAX_STEPS);
+  dv_scenario_set_derived(sc, "reduced", keys, why);
+}
+
 static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
-  const dv_reduced_settings *s = block;
+  dv_reduced_settings *s = block;
   const double theta = sc->initial[RED_TH];
-  if (theta > s->theta_limit && theta < M_PI - s->theta_limit) return 0;
+  if (theta > s->theta_limit && theta < M_PI - s->theta_limit) {
+    if (s->max_steps == 0) derive_max_steps(sc, s);
+    return 0;
+  }
   char value[DV_FORMAT_SIZE], lo[DV_FORMAT_SIZE], hi[DV_FORMAT_SIZE];
   dv_format_double(theta, value, sizeof value);
   dv_format_double(s->theta_limit, lo, sizeof lo);
@@ -110,8 +132,9 @@ static const dv_setting_spec KEYS[] = {
     {"atol", DV_SETTING_REAL, AT(atol), 0, OPEN, 1e-13, 0.0, 1.0, NULL, NULL, "", "absolute"},
     {"theta_limit", DV_SETTING_REAL, AT(theta_limit), 0, OPEN, 0.01, 0.0, M_PI / 2, NULL, NULL,
      "rad", "every run ends where theta < limit or > pi - limit"},
-    {"max_steps", DV_SETTING_INT, AT(max_steps), 0, 0, (double)RED_DEFAULT_MAX_STEPS, 1, 1e9, NULL,
-     NULL, "", "step budget of a reference run: past it the run ends with an error"},
+    {"max_steps", DV_SETTING_INT, AT(max_steps), 0, 0, NAN, 1, 1e9, NULL, NULL, "",
+     "step budget of a reference run: past it the run ends with an error; default: 1000 steps "
+     "per shortest time scale of the scene, at least 1e6"},
 };
 
 static const dv_settings_section SETTINGS = {"reduced", KEYS, sizeof KEYS / sizeof KEYS[0],

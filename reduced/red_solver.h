@@ -88,6 +88,8 @@ red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_ty
 #define RED_DEFAULT_MAX_STEPS 1000000L
 #define RED_MIN_STEP_FRACTION 1e-8
 #define RED_MAX_SHORT_STEPS 1000
+/* the default budget per shortest time scale of a scene (engine_reduced.c) */
+#define RED_STEPS_PER_SCALE 1000.0
 
 /* the step budget of the runs that follow (<= 0: RED_DEFAULT_MAX_STEPS) */
 void red_integrator_set_max_steps(red_integrator *in, long max_steps);

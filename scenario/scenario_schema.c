@@ -102,7 +102,7 @@ void dv_settings_defaults(const dv_settings_section *section, void *block) {
       field[0] = '\0';
     else if (sp->type == DV_SETTING_REAL)
       *(double *)field = sp->def;
-    else
-      *(int *)field = (int)sp->def;
+    else /* a whole number derived from the scene (NAN): 0 until derived */
+      *(int *)field = isnan(sp->def) ? 0 : (int)sp->def;
   }
 }
