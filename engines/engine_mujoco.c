@@ -12,7 +12,9 @@
  * which turns mju_error into a longjmp and a failed run. MuJoCo silently
  * resets the state on a bad qpos/qvel/qacc and only counts a warning: the
  * counters are checked after every step, so a reset ends the run as
- * diverged. Like the reference, a run ends at an event where theta leaves
+ * diverged. Each step also tests lying down (and a NaN) on the quaternion;
+ * the rest of the checks (energy, off the ground) run every MJ_CHECK_STEPS
+ * steps and before every sample. Like the reference, a run ends at an event where theta leaves
  * (theta_limit, pi - theta_limit) ([engines.reduced] theta_limit): the
  * canonical state is singular at a disk lying flat. Not thread-safe: MuJoCo's
  * handler pointers and collision table are process-global.
@@ -147,6 +149,8 @@ static const dv_engine_contact CONTACT = {"geom", "thin", "solref_timeconst",
                                           0.25,   2.0,    "friction"};
 
 #define LOST_CONTACT_TIME 0.05 /* s the lowest point may stay above the gap before lost_contact */
+/* the full state checks every this many steps (each step: counters and lying down) */
+#define MJ_CHECK_STEPS 16
 
 typedef struct mujoco_engine {
   red_disk disk;
@@ -160,6 +164,8 @@ typedef struct mujoco_engine {
   double gap;              /* lowest-point height that counts as off the ground, m */
   double off_since;        /* time the lowest point went above gap, or -1 */
   double theta_limit;      /* rad: the run ends at an event outside (limit, pi - limit) */
+  double cos_limit;        /* cos(theta_limit), the per-step test of n.z */
+  long checked;            /* the step of the last full check */
   int status;              /* DV_OK, or the event or failure every later call returns */
   dv_engine_stats stats;
 } mujoco_engine;
@@ -340,6 +346,7 @@ static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
   }
   e->gap = fmax(0.01 * sc->disk.r, 5.0 * s->solimp_width);
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
+  e->cos_limit = cos(e->theta_limit);
   end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_SETUP, "advance before reset");
   result = e;
   e = NULL;
@@ -393,7 +400,7 @@ static int check_state(mujoco_engine *e) {
     return end_run(e, DV_OUTCOME_DIVERGED, DV_FAILURE_ENERGY, "energy %g J ran away (limit %g J)",
                    energy, e->e_max);
   /* n.z = cos(theta), n = R ez */
-  if (fabs(p.R[8]) > cos(e->theta_limit)) {
+  if (fabs(p.R[8]) > e->cos_limit) {
     char limit[DV_FORMAT_SIZE];
     dv_format_double(p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, limit, sizeof limit);
     return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE,
@@ -426,6 +433,7 @@ static int mujoco_reset(void *p, const double state[RED_NSTATE], dv_error *err) 
   memset(&e->stats, 0, sizeof e->stats);
   e->status = DV_OK;
   e->off_since = -1.0;
+  e->checked = 0;
   mj_resetData(e->m, e->d);
   memcpy(e->prev, state, sizeof e->prev);
   for (int i = 0; i < RED_NSTATE; i++)
@@ -454,7 +462,23 @@ typedef struct step_call {
   double t; /* s */
 } step_call;
 
-/* trapped: step to the grid time nearest t, checking each step */
+/* after a step: MuJoCo's bad-state counters and n.z = cos(theta) from the
+ * quaternion (w x y z) every step, where a NaN fails too; the full checks
+ * every MJ_CHECK_STEPS steps */
+static int step_check(mujoco_engine *e) {
+  const double *q = e->d->qpos + 3;
+  const double nz = (q[0] * q[0] - q[1] * q[1] - q[2] * q[2] + q[3] * q[3]) /
+                    (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  long bad;
+  warning_count(e->d, &bad);
+  if (bad || !(fabs(nz) <= e->cos_limit) || e->stats.steps - e->checked >= MJ_CHECK_STEPS) {
+    e->checked = e->stats.steps;
+    return check_state(e);
+  }
+  return DV_OK;
+}
+
+/* trapped: step to the grid time nearest t, checking each step, then fully */
 static void step_to(void *p) {
   step_call *c = p;
   mujoco_engine *e = c->e;
@@ -462,7 +486,11 @@ static void step_to(void *p) {
   while (e->d->time < c->t - half) {
     mj_step(e->m, e->d);
     e->stats.steps++;
-    if (check_state(e)) return;
+    if (step_check(e)) return;
+  }
+  if (e->stats.steps > e->checked) {
+    e->checked = e->stats.steps;
+    check_state(e);
   }
 }
 
