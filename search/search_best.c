@@ -2,6 +2,7 @@
  * limits, by bracketing and bisection over probe runs. */
 #include "search_best.h"
 
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdlib.h>
 #include <stdio.h>
@@ -131,11 +132,6 @@ static int setup(const char *path, const char *const *sets, size_t nsets, const 
   return DV_OK;
 }
 
-static int cmp_double(const void *a, const void *b) {
-  const double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
 /* the calibration of choice, or NULL */
 static const dv_step_cost *step_cost_of(const dv_search *s, const char *choice) {
   for (size_t k = 0; k < s->nchoices; k++)
@@ -161,10 +157,8 @@ static void calibrate(dv_search *s) {
     k->runs = (int)n;
     k->median = k->min = k->max = NAN;
     if (!n) continue;
-    qsort(per_step, n, sizeof per_step[0], cmp_double);
-    k->median = n % 2 ? per_step[n / 2] : 0.5 * (per_step[n / 2 - 1] + per_step[n / 2]);
-    k->min = per_step[0];
-    k->max = per_step[n - 1];
+    gsl_stats_minmax(&k->min, &k->max, per_step, 1, n);
+    k->median = gsl_stats_median(per_step, 1, n);
   }
   for (size_t i = 0; i < s->nprobes; i++) {
     const dv_step_cost *k = step_cost_of(s, s->probes[i].choice);

@@ -1,6 +1,7 @@
 /* dv_sweep: grids of settings run in a pool of processes over shared memory. */
 #include "search_sweep.h"
 
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -60,11 +61,6 @@ static int discard(void *ctx, const dv_sample *s) {
   return 0;
 }
 
-static int cmp_double(const void *a, const void *b) {
-  const double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
 /* the median wall time of the engine alone, first run given */
 static double median_wall(const dv_engine_type *e, const dv_scenario *sc, double first) {
   double w[5] = {first};
@@ -74,8 +70,7 @@ static double median_wall(const dv_engine_type *e, const dv_scenario *sc, double
     dv_run_collect(e, sc, discard, NULL, &st, NULL);
     w[i] = dv_clock_now() - t0;
   }
-  qsort(w, 5, sizeof w[0], cmp_double);
-  return w[2];
+  return gsl_stats_median(w, 1, 5);
 }
 
 typedef struct job {
@@ -313,8 +308,7 @@ void dv_search_fit_convergence(const double *h, const double *err, size_t n, dv_
   double floor = 0.0;
   if (m >= 2 && k >= 2) {
     for (size_t i = 0; i < k; i++) x[i] = p[i].e;
-    qsort(x, k, sizeof *x, cmp_double);
-    floor = k % 2 ? x[k / 2] : 0.5 * (x[k / 2 - 1] + x[k / 2]);
+    floor = gsl_stats_median(x, 1, k);
     out->floor = floor;
     out->floor_step = p[k - 1].h;
     out->nfloor = k;
