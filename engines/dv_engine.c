@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_format.h"
 #include "dv_pose.h"
 
 const dv_engine_type *const dv_engines[] = {&dv_engine_reduced, &dv_engine_matched,
@@ -24,6 +25,15 @@ const dv_engine_type *dv_engine_of_role(dv_engine_role role) {
 
 double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc) {
   return engine->half_thickness ? engine->half_thickness(sc) : 0.0;
+}
+
+void dv_engine_limit_detail(int lower, double theta_limit, double t, char *buf, size_t size) {
+  char limit[DV_FORMAT_SIZE];
+  dv_format_double(lower ? theta_limit : M_PI - theta_limit, limit, sizeof limit);
+  const int n =
+      snprintf(buf, size, "theta reached the %s limit %s rad", lower ? "lower" : "upper", limit);
+  if (isfinite(t) && n >= 0 && (size_t)n < size)
+    snprintf(buf + n, size - (size_t)n, " at t = %g s", t);
 }
 
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {

@@ -137,6 +137,11 @@ const dv_engine_type *dv_engine_of_role(dv_engine_role role);
 /* the half-thickness of engine's body in sc (0: thin) */
 double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* every engine's detail for the run ending at the lying-down limit: "theta
+ * reached the lower limit 0.01 rad" (lower: theta < theta_limit, else
+ * theta > pi - theta_limit), then " at t = T s" when t is finite */
+void dv_engine_limit_detail(int lower, double theta_limit, double t, char *buf, size_t size);
+
 /* does engine simulate a stand-in shape in sc, not the exact thin disk (0 for references) */
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc);
 

@@ -27,7 +27,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "dv_format.h"
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
@@ -380,6 +379,7 @@ static long warning_count(const mjData *d, long *bad) {
 /* the state after a step or a reset: non-finite, reset by MuJoCo, runaway, lying down
  * (an event), off the ground */
 static int check_state(mujoco_engine *e) {
+  e->checked = e->stats.steps;
   const mjData *d = e->d;
   long bad;
   e->stats.warnings = warning_count(d, &bad);
@@ -401,11 +401,9 @@ static int check_state(mujoco_engine *e) {
                    energy, e->e_max);
   /* n.z = cos(theta), n = R ez */
   if (fabs(p.R[8]) > e->cos_limit) {
-    char limit[DV_FORMAT_SIZE];
-    dv_format_double(p.R[8] > 0.0 ? e->theta_limit : M_PI - e->theta_limit, limit, sizeof limit);
-    return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE,
-                   "theta reached %s limit %s rad at t = %g s",
-                   p.R[8] > 0.0 ? "the lower" : "the upper", limit, d->time);
+    char detail[sizeof e->stats.detail];
+    dv_engine_limit_detail(p.R[8] > 0.0, e->theta_limit, d->time, detail, sizeof detail);
+    return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE, "%s", detail);
   }
   dv_pose_lowest_point(&e->geom, &p, low, &slip);
   if (low[2] <= e->gap)
@@ -471,10 +469,8 @@ static int step_check(mujoco_engine *e) {
                     (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   long bad;
   warning_count(e->d, &bad);
-  if (bad || !(fabs(nz) <= e->cos_limit) || e->stats.steps - e->checked >= MJ_CHECK_STEPS) {
-    e->checked = e->stats.steps;
+  if (bad || !(fabs(nz) <= e->cos_limit) || e->stats.steps - e->checked >= MJ_CHECK_STEPS)
     return check_state(e);
-  }
   return DV_OK;
 }
 
@@ -488,10 +484,7 @@ static void step_to(void *p) {
     e->stats.steps++;
     if (step_check(e)) return;
   }
-  if (e->stats.steps > e->checked) {
-    e->checked = e->stats.steps;
-    check_state(e);
-  }
+  if (e->stats.steps > e->checked) check_state(e);
 }
 
 /* step to time t and sample the disk there (at an event: where it ended) */

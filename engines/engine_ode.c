@@ -31,7 +31,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "dv_format.h"
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
@@ -381,9 +380,9 @@ static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   return ode_guarded(e, ode_place, (void *)state, err);
 }
 
-/* the divergence and lost-contact checks of the body's state, steps_since
- * steps after the last check */
-static int ode_check_state(ode_engine *e, long steps_since, dv_error *err) {
+/* the divergence and lost-contact checks of the body's state, over the steps
+ * since the last check */
+static int ode_check_state(ode_engine *e, dv_error *err) {
   const double dt = e->set.timestep, t = e->k * dt;
   dv_pose p;
   ode_read_pose(e, &p);
@@ -398,7 +397,7 @@ static int ode_check_state(ode_engine *e, long steps_since, dv_error *err) {
   const double height = p.pos[2] + dv_geometry_contact_height(&e->geom, p.R);
   if (height < -SUNK_DEPTH * e->disk.r)
     return ode_failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
-  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + steps_since * dt : 0.0;
+  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + (e->k - e->k_checked) * dt : 0.0;
   if (e->airborne > AIR_TIME)
     return ode_failed(e, DV_FAILURE_LOST_CONTACT, err,
                       "lowest point %g m above the ground for %g s at t = %g s", height,
@@ -422,16 +421,13 @@ static int ode_step(ode_engine *e, dv_error *err) {
   e->st.steps++;
   const double nz = dBodyGetRotation(e->body)[10];
   if (!(fabs(nz) <= e->cos_limit)) {
-    if (isnan(nz)) return ode_check_state(e, e->k - e->k_checked, err);
-    char limit[DV_FORMAT_SIZE];
-    dv_format_double(nz > 0.0 ? e->theta_limit : M_PI - e->theta_limit, limit, sizeof limit);
-    snprintf(e->st.detail, sizeof e->st.detail, "theta reached %s limit %s rad at t = %g s",
-             nz > 0.0 ? "the lower" : "the upper", limit, e->k * dt);
+    if (isnan(nz)) return ode_check_state(e, err);
+    dv_engine_limit_detail(nz > 0.0, e->theta_limit, e->k * dt, e->st.detail, sizeof e->st.detail);
     e->st.outcome = DV_OUTCOME_EVENT;
     e->status = DV_EVENT;
     return DV_EVENT;
   }
-  return e->k - e->k_checked < ODE_CHECK_STEPS ? DV_OK : ode_check_state(e, ODE_CHECK_STEPS, err);
+  return e->k - e->k_checked < ODE_CHECK_STEPS ? DV_OK : ode_check_state(e, err);
 }
 
 typedef struct ode_target {
@@ -445,7 +441,7 @@ static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
   const double dt = e->set.timestep;
   int status = DV_OK;
   while (status == DV_OK && e->k * dt < g->t - 0.5 * dt) status = ode_step(e, err);
-  if (status == DV_OK && e->k > e->k_checked) status = ode_check_state(e, e->k - e->k_checked, err);
+  if (status == DV_OK && e->k > e->k_checked) status = ode_check_state(e, err);
   if (status < 0) return status;
   dv_pose p;
   ode_read_pose(e, &p);

@@ -70,11 +70,9 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
 
 static void reduced_stats(const void *p, dv_engine_stats *out) {
   const reduced_engine *e = p;
-  char detail[96], limit[DV_FORMAT_SIZE];
-  dv_format_double(e->event == RED_EVENT_THETA_LOW ? e->ref.theta_limit : M_PI - e->ref.theta_limit,
-                   limit, sizeof limit);
-  snprintf(detail, sizeof detail, "theta reached %s limit %s rad",
-           e->event == RED_EVENT_THETA_LOW ? "the lower" : "the upper", limit);
+  char detail[96];
+  dv_engine_limit_detail(e->event == RED_EVENT_THETA_LOW, e->ref.theta_limit, NAN, detail,
+                         sizeof detail);
   dv_reference_stats(e->in, e->event, detail, out);
 }
 
@@ -84,7 +82,6 @@ static const char *integrator_at(size_t i) {
   return red_steppers[i] ? red_steppers[i]->name : NULL;
 }
 
-/* the lying-down limit is every engine's: the initial tilt must lie inside it */
 /* the step budget a scenario leaves out: RED_STEPS_PER_SCALE steps per
  * shortest time scale of the scene over its duration, at least
  * RED_DEFAULT_MAX_STEPS (rk8pd at the defaults takes about 13 per scale) */
@@ -103,6 +100,8 @@ static void derive_max_steps(dv_scenario *sc, dv_reduced_settings *s) {
   dv_scenario_set_derived(sc, "reduced", keys, why);
 }
 
+/* the lying-down limit is every engine's: the initial tilt must lie inside it;
+ * and the step budget, when not given */
 static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   dv_reduced_settings *s = block;
   const double theta = sc->initial[RED_TH];
