@@ -75,14 +75,14 @@ int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskv
   snprintf(sc->name, sizeof sc->name, "%s", nm);
   sc->duration = duration;
   sc->output_dt = output_dt;
-  sc->memory_budget = 1.0; /* GiB, a scenario file's default */
+  sc->memory_budget = DV_MEMORY_BUDGET_GIB; /* a scenario file's default */
   double samples;
   const double need_gib = dv_scenario_memory_gib(sc, &samples);
-  if (need_gib > sc->memory_budget) {
+  if (need_gib > DV_MEMORY_BUDGET_GIB) {
     free(s);
     return dv_fail(as_dv(err), DV_EINPUT,
-                   "times: %.0f samples need about %.3g GiB of memory, more than 1 GiB", samples,
-                   need_gib);
+                   "times: %.0f samples need about %.3g GiB of memory, more than %g GiB", samples,
+                   need_gib, DV_MEMORY_BUDGET_GIB);
   }
   sc->disk = red_disk_uniform(disk->radius, disk->mass, disk->gravity);
   if (disk->A > 0 || disk->C > 0) {

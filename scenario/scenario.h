@@ -35,6 +35,7 @@
  * compare with four engines (tests/check_memory.sh, README "Reliability") */
 #define DV_MEMORY_PER_SAMPLE 1024
 #define DV_MEMORY_BASE_MIB 64
+#define DV_MEMORY_BUDGET_GIB 1.0 /* [scenario] memory_budget's default */
 
 typedef enum dv_init_mode {
   DV_INIT_STATE = 0,     /* the state is given key by key */

@@ -160,8 +160,8 @@ static const dv_setting_spec SCENARIO_KEYS[] = {
      NULL, "", "engines a comparison runs (default: the contact engines)"},
     {"duration", DV_SETTING_REAL, AT(duration), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
     {"output_dt", DV_SETTING_REAL, AT(output_dt), 0, REQ | OPEN, 0, 0.0, 1e6, NULL, NULL, "s", ""},
-    {"memory_budget", DV_SETTING_REAL, AT(memory_budget), 0, OPEN, 1.0, 0.0, 1e6, NULL, NULL, "GiB",
-     "a run whose samples would need more memory is refused before it starts"},
+    {"memory_budget", DV_SETTING_REAL, AT(memory_budget), 0, OPEN, DV_MEMORY_BUDGET_GIB, 0.0, 1e6,
+     NULL, NULL, "GiB", "a run whose samples would need more memory is refused before it starts"},
 };
 
 static const dv_setting_spec DISK_KEYS[] = {
