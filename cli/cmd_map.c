@@ -226,17 +226,15 @@ static void default_engines(map *mp) {
  * in (lo, hi]; errors name the option as typed */
 static int parse_axis(const char *option, const char *spec, double lo, double hi,
                       const char *range_what, dv_vary *out) {
-  char buf[160];
+  char as_typed[160];
   dv_error err = {{0}};
   if (!spec[0])
     return dv_cli_usage_error("map", "--%s '': expected a list v1,v2,... or a log range a..b:n",
                               option);
-  snprintf(buf, sizeof buf, "%s=%s", option, spec);
-  if (dv_search_vary_parse(buf, "map", out, &err)) {
-    const size_t prefix = strlen("--vary ") + strlen(buf) + 2; /* its "--vary c=...: " */
-    return dv_cli_usage_error("map", "--%s %s: %s", option, spec,
-                              strlen(err.msg) > prefix ? err.msg + prefix : err.msg);
-  }
+  snprintf(as_typed, sizeof as_typed, "--%s %s", option, spec);
+  memset(out, 0, sizeof *out);
+  if (dv_search_values_parse(spec, as_typed, out, &err))
+    return dv_cli_usage_error("map", "%s", err.msg);
   for (size_t i = 0; i < out->n; i++) {
     char *end;
     const double v = strtod(out->values[i], &end);

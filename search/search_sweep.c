@@ -16,17 +16,9 @@
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
-int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err) {
-  const char *eq = strchr(spec, '=');
-  memset(out, 0, sizeof *out);
-  if (!eq || eq == spec || !eq[1])
-    return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
-  const int bare = memchr(spec, '.', (size_t)(eq - spec)) == NULL;
-  const int len = snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "",
-                           bare ? engine : "", bare ? "." : "", (int)(eq - spec), spec);
-  if (len < 0 || (size_t)len >= sizeof out->key)
-    return dv_fail(err, DV_EINPUT, "--vary %s: the key is too long", spec);
-  const char *list = eq + 1, *dots = strstr(list, "..");
+int dv_search_values_parse(const char *list, const char *as_typed, dv_vary *out, dv_error *err) {
+  const char *dots = strstr(list, "..");
+  out->n = 0;
   if (dots) { /* a..b:n on a log scale */
     char first[64], *end;
     snprintf(first, sizeof first, "%.*s", (int)(dots - list), list); /* "1..40": not "1." */
@@ -35,8 +27,8 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
     const double b = strtod(dots + 2, &end);
     const long n = (*end == ':') ? strtol(end + 1, &end, 10) : 0;
     if (*end || !(a > 0.0) || !(b > 0.0) || n < 2 || n > DV_SWEEP_MAX_VALUES)
-      return dv_fail(err, DV_EINPUT, "--vary %s: a range is a..b:n with a, b > 0 and 2 <= n <= %d",
-                     spec, DV_SWEEP_MAX_VALUES);
+      return dv_fail(err, DV_EINPUT, "%s: a range is a..b:n with a, b > 0 and 2 <= n <= %d",
+                     as_typed, DV_SWEEP_MAX_VALUES);
     for (long i = 0; i < n; i++)
       snprintf(out->values[i], sizeof out->values[i], "%.6g",
                a * pow(b / a, (double)i / (double)(n - 1)));
@@ -47,14 +39,29 @@ int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_
   for (const char *v = list; *v;) {
     const size_t n = strcspn(v, ",");
     if (n >= sizeof out->values[0])
-      return dv_fail(err, DV_EINPUT, "--vary %s: a value has at most %zu characters", spec,
+      return dv_fail(err, DV_EINPUT, "%s: a value has at most %zu characters", as_typed,
                      sizeof out->values[0] - 1);
     if (n && out->n == DV_SWEEP_MAX_VALUES)
-      return dv_fail(err, DV_EINPUT, "--vary %s: at most %d values", spec, DV_SWEEP_MAX_VALUES);
+      return dv_fail(err, DV_EINPUT, "%s: at most %d values", as_typed, DV_SWEEP_MAX_VALUES);
     if (n) snprintf(out->values[out->n++], sizeof out->values[0], "%.*s", (int)n, v);
     v += n + (v[n] == ',');
   }
-  return out->n ? DV_OK : dv_fail(err, DV_EINPUT, "--vary %s: no values", spec);
+  return out->n ? DV_OK : dv_fail(err, DV_EINPUT, "%s: no values", as_typed);
+}
+
+int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err) {
+  const char *eq = strchr(spec, '=');
+  char as_typed[200];
+  memset(out, 0, sizeof *out);
+  if (!eq || eq == spec || !eq[1])
+    return dv_fail(err, DV_EINPUT, "--vary %s: expected key=values", spec);
+  const int bare = memchr(spec, '.', (size_t)(eq - spec)) == NULL;
+  const int len = snprintf(out->key, sizeof out->key, "%s%s%s%.*s", bare ? "engines." : "",
+                           bare ? engine : "", bare ? "." : "", (int)(eq - spec), spec);
+  if (len < 0 || (size_t)len >= sizeof out->key)
+    return dv_fail(err, DV_EINPUT, "--vary %s: the key is too long", spec);
+  snprintf(as_typed, sizeof as_typed, "--vary %s", spec);
+  return dv_search_values_parse(eq + 1, as_typed, out, err);
 }
 
 static int discard(void *ctx, const dv_sample *s) {

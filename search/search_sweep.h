@@ -63,6 +63,10 @@ typedef struct dv_sweep {
   const char *checkpoint_dir; /* under MPI: tables rewritten after every result */
 } dv_sweep;
 
+/* parse "v1,v2" or "a..b:n" (a log range) into out's values; errors begin
+ * with as_typed, the option as the user wrote it ("--c 0.05..0.5:8") */
+int dv_search_values_parse(const char *list, const char *as_typed, dv_vary *out, dv_error *err);
+
 /* parse "key=v1,v2" or "key=a..b:n" for engine into out */
 int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err);
 
