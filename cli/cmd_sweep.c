@@ -82,25 +82,17 @@ static void print_curves(const dv_sweep *s) {
   for (size_t k = 0; k < s->n; k++) {
     char label[96];
     dv_step_fit fit;
+    if (!dv_search_sweep_curve_first(s, k) || dv_search_sweep_curve_fit(s, k, &fit)) continue;
     dv_search_sweep_curve_label(s, k, label, sizeof label);
-    int seen = 0;
-    for (size_t j = 0; j < k && !seen; j++) {
-      char other[96];
-      dv_search_sweep_curve_label(s, j, other, sizeof other);
-      seen = !strcmp(other, label);
-    }
-    if (seen || dv_search_sweep_curve_fit(s, k, &fit)) continue;
     printf("%s: order ", label);
     printf(isnan(fit.order) ? "none (no falling errors)" : "%.2f over %zu points", fit.order,
            fit.nfalling);
     if (!isnan(fit.floor)) {
-      const char *cause = "not attributed";
-      for (size_t f = 0; f < s->nfloors; f++)
-        if (!strcmp(s->floors[f].curve, label)) cause = s->floors[f].cause;
+      const char *cause = dv_search_sweep_floor_cause(s, label);
       printf(
           "; accuracy floor %.3g rad: the errors stop falling at steps <= %.4g (%zu points); "
           "cause: %s",
-          fit.floor, fit.floor_step, fit.nfloor, cause);
+          fit.floor, fit.floor_step, fit.nfloor, cause ? cause : "not attributed");
     }
     printf("\n");
   }

@@ -113,6 +113,12 @@ void dv_search_fit_convergence(const double *h, const double *err, size_t n, dv_
 /* the label of the curve point k lies on: the engine and its other values */
 void dv_search_sweep_curve_label(const dv_sweep *s, size_t k, char *out, size_t size);
 
+/* whether point k is the first point of its curve */
+int dv_search_sweep_curve_first(const dv_sweep *s, size_t k);
+
+/* the attributed cause of the floor of curve label (dv_search_sweep_floor_causes), or NULL */
+const char *dv_search_sweep_floor_cause(const dv_sweep *s, const char *label);
+
 /* the index of the key that orders a curve: a timestep or rtol, else the last */
 size_t dv_search_sweep_curve_key(const dv_sweep *s);
 

@@ -32,8 +32,7 @@ int dv_search_sweep_curve_fit(const dv_sweep *s, size_t k, dv_step_fit *out) {
   return DV_OK;
 }
 
-/* whether point k is the first of its curve */
-static int first_of_curve(const dv_sweep *s, size_t k) {
+int dv_search_sweep_curve_first(const dv_sweep *s, size_t k) {
   char label[96], other[96];
   dv_search_sweep_curve_label(s, k, label, sizeof label);
   for (size_t j = 0; j < k; j++) {
@@ -71,6 +70,12 @@ static void attribute_floor(const char *path, const char *const *sets, size_t ns
   free(all);
 }
 
+const char *dv_search_sweep_floor_cause(const dv_sweep *s, const char *label) {
+  for (size_t f = 0; f < s->nfloors; f++)
+    if (!strcmp(s->floors[f].curve, label)) return s->floors[f].cause;
+  return NULL;
+}
+
 int dv_search_sweep_floor_causes(const char *path, const char *const *sets, size_t nsets,
                                  dv_sweep *s, dv_error *err) {
   const dv_engine_type *e = dv_engine_find(s->engine);
@@ -80,7 +85,7 @@ int dv_search_sweep_floor_causes(const char *path, const char *const *sets, size
   if (!e || !e->contact || !dot || strcmp(dot, ".timestep")) return DV_OK; /* nothing to split */
   for (size_t i = 0; i < s->n && s->nfloors < DV_SWEEP_MAX_FLOORS; i++) {
     dv_step_fit fit;
-    if (!first_of_curve(s, i)) continue;
+    if (!dv_search_sweep_curve_first(s, i)) continue;
     if (dv_search_sweep_curve_fit(s, i, &fit)) return dv_fail(err, DV_ESYSTEM, "out of memory");
     if (isnan(fit.floor)) continue;
     dv_search_sweep_curve_label(s, i, s->floors[s->nfloors].curve, sizeof s->floors[0].curve);

@@ -30,13 +30,6 @@ void dv_search_sweep_curve_label(const dv_sweep *s, size_t k, char *out, size_t 
       len += snprintf(out + len, size - (size_t)len, " %s", s->p[k].values[v]);
 }
 
-/* the attributed cause of curve label's floor, or NULL */
-static const char *floor_cause(const dv_sweep *s, const char *label) {
-  for (size_t f = 0; f < s->nfloors; f++)
-    if (!strcmp(s->floors[f].curve, label)) return s->floors[f].cause;
-  return NULL;
-}
-
 /* the ok points of one curve, in sweep order */
 typedef struct curve {
   char label[96];
@@ -170,7 +163,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     cJSON *q = cJSON_CreateObject();
     dv_step_fit fit;
     dv_search_fit_convergence(cv[c].h, cv[c].y, cv[c].n, &fit);
-    const char *cause = floor_cause(s, cv[c].label);
+    const char *cause = dv_search_sweep_floor_cause(s, cv[c].label);
     cJSON_AddStringToObject(q, "curve", cv[c].label);
     cJSON_AddItemToObject(q, "order", dv_io_json_double(fit.order));
     cJSON_AddItemToObject(q, "floor", dv_io_json_double(fit.floor));
