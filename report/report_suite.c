@@ -264,8 +264,7 @@ static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i)
   fputs(nlinks ? "</p>\n</section>\n" : "none</p>\n</section>\n", fp);
 }
 
-/* engine runs, failing ones and errored scenarios */
-static void tally(const entry *es, size_t n, int *runs, int *failing, int *errors) {
+void dvs_tally(const dvs_entry *es, size_t n, int *runs, int *failing, int *errors) {
   for (size_t i = 0; i < n; i++) {
     const cJSON *eng;
     *errors += es[i].error[0] != 0;
@@ -279,7 +278,7 @@ static void tally(const entry *es, size_t n, int *runs, int *failing, int *error
 /* index.html: title, summary table, one section per scenario */
 static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n, int pass) {
   int runs = 0, failing = 0, errors = 0;
-  tally(es, n, &runs, &failing, &errors);
+  dvs_tally(es, n, &runs, &failing, &errors);
   fprintf(fp,
           "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
           "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"

@@ -35,6 +35,10 @@ static inline int engine_pass(const cJSON *eng) {
   return cJSON_IsTrue(item(eng, "pass"));
 }
 
+/* add to *runs the engine runs of the n scenarios of es, to *failing those
+ * that did not pass, to *errors the scenarios without a usable report */
+void dvs_tally(const dvs_entry *es, size_t n, int *runs, int *failing, int *errors);
+
 /* the JUnit XML of the n scenarios of es */
 void dvs_write_junit(FILE *fp, const dvs_entry *es, size_t n);
 

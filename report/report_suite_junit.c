@@ -139,11 +139,8 @@ static void put_errored(FILE *fp, const dvs_entry *e) {
 /* the <testsuite> of scenario e: its reference, then a test case per engine */
 static void put_scenario(FILE *fp, const dvs_entry *e) {
   const cJSON *ref = item(e->report, "reference"), *eng;
-  int tests = 0, failures = 0;
-  cJSON_ArrayForEach(eng, e->engines) {
-    tests++;
-    failures += !engine_pass(eng);
-  }
+  int tests = 0, failures = 0, errors = 0;
+  dvs_tally(e, 1, &tests, &failures, &errors);
   dv_report_escape_put(fp, "  <testsuite name=\"", e->name, 1, "\"");
   fprintf(fp, " tests=\"%d\" failures=\"%d\" errors=\"0\" time=\"%.6f\">\n", tests, failures,
           scenario_seconds(e));
@@ -170,16 +167,9 @@ static void put_scenario(FILE *fp, const dvs_entry *e) {
 void dvs_write_junit(FILE *fp, const dvs_entry *es, size_t n) {
   int tests = 0, failures = 0, errors = 0;
   double total = 0.0;
-  for (size_t i = 0; i < n; i++) {
-    const cJSON *eng;
-    errors += es[i].error[0] != 0;
-    tests += es[i].error[0] != 0; /* an errored scenario is a test case of its own */
-    cJSON_ArrayForEach(eng, es[i].engines) {
-      tests++;
-      failures += !engine_pass(eng);
-    }
-    total += scenario_seconds(&es[i]);
-  }
+  dvs_tally(es, n, &tests, &failures, &errors);
+  tests += errors; /* an errored scenario is a test case of its own */
+  for (size_t i = 0; i < n; i++) total += scenario_seconds(&es[i]);
   fprintf(fp,
           "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"diskval\" tests=\"%d\" "
           "failures=\"%d\" errors=\"%d\" time=\"%.6f\">\n",
