@@ -52,6 +52,15 @@ static void load(const char *path, const char *const *sets, size_t n, dv_scenari
   CHECK(status == DV_OK, "%s: %s", path, err.msg);
 }
 
+/* path with sets compared in engine alone, into c; the status */
+static int compare_one(const char *path, const char *const *sets, size_t nsets,
+                       const dv_engine_type *engine, dv_scenario *sc, dv_comparison *c,
+                       dv_error *err) {
+  const dv_engine_type *engines[] = {engine};
+  load(path, sets, nsets, sc);
+  return dv_run_scenario(sc, NULL, engines, 1, c, err);
+}
+
 /* the cylinder upright: its own reference, completed, upright throughout
  * (measured, printed below: |theta - pi/2| = 0; 1e-14 allows the dense output's rounding) */
 static void check_upright_cylinder(const char *path) {
@@ -59,9 +68,7 @@ static void check_upright_cylinder(const char *path) {
   const char *const sets[] = {"engines.mujoco.geom=cylinder"};
   dv_scenario sc;
   dv_error err = {{0}};
-  load(path, sets, 1, &sc);
-  const dv_engine_type *engines[] = {&dv_engine_mujoco};
-  const int status = dv_run_scenario(&sc, NULL, engines, 1, &c, &err);
+  const int status = compare_one(path, sets, 1, &dv_engine_mujoco, &sc, &c, &err);
   CHECK(status == DV_OK, "upright cylinder: %s", err.msg);
   if (status) return;
   const dv_engine_result *r = &c.r[0];
@@ -93,9 +100,7 @@ static void check_step_budget(const char *path) {
   const char *const sets[] = {"engines.mujoco.geom=cylinder", "engines.reduced.max_steps=1"};
   dv_scenario sc;
   dv_error err = {{0}};
-  load(path, sets, 2, &sc);
-  const dv_engine_type *engines[] = {&dv_engine_mujoco};
-  const int status = dv_run_scenario(&sc, NULL, engines, 1, &c, &err);
+  const int status = compare_one(path, sets, 2, &dv_engine_mujoco, &sc, &c, &err);
   printf("step budget 1: status %d: %s\n", status, err.msg);
   CHECK(status == DV_ENUMERIC && strstr(err.msg, "step budget spent"),
         "a spent step budget is not an error that says so: %d '%s'", status, err.msg);
@@ -108,9 +113,7 @@ static void check_fallback(const char *path) {
   const char *const sets[] = {"engines.matched.half_thickness=0.002"};
   dv_scenario sc;
   dv_error err = {{0}};
-  load(path, sets, 1, &sc);
-  const dv_engine_type *engines[] = {&dv_engine_matched};
-  const int status = dv_run_scenario(&sc, NULL, engines, 1, &c, &err);
+  const int status = compare_one(path, sets, 1, &dv_engine_matched, &sc, &c, &err);
   CHECK(status == DV_OK, "upright_stable: %s", err.msg);
   if (status) return;
   const dv_engine_result *r = &c.r[0];
