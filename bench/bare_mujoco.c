@@ -20,15 +20,6 @@
 
 enum { GEOM_THIN = 0, GEOM_ELLIPSOID = 2 }; /* [engines.mujoco] geom */
 
-static void read_pose(const mjData *d, dv_pose *p) {
-  double q[4] = {d->qpos[3], d->qpos[4], d->qpos[5], d->qpos[6]};
-  mju_normalize4(q);
-  mju_quat2Mat(p->R, q);
-  mju_copy3(p->pos, d->qpos);
-  mju_copy3(p->vel, d->qvel);
-  mju_mulMatVec(p->omega, p->R, d->qvel + 3, 3, 3);
-}
-
 static mjModel *load(const char *xml, int len, char *msg, int size) {
   mjVFS *vfs = calloc(1, sizeof *vfs);
   mjModel *m = NULL;
@@ -82,7 +73,7 @@ int main(int argc, char **argv) {
     const double t = red_grid_time(0.0, sc.output_dt, sc.duration, k);
     while (d->time < t - half) mj_step(m, d);
     dv_sample s;
-    read_pose(d, &pose);
+    dv_mujoco_read_pose(d, &pose);
     dv_sample_from_pose(&sc.disk, &shape, &pose, t, prev, &s);
     memcpy(prev, s.y, sizeof prev);
     dv_run_csv_row(fp, &s);

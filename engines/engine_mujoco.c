@@ -358,7 +358,7 @@ cleanup:
 }
 
 /* the body's pose from qpos/qvel (xpos/xmat lag one step behind after mj_step) */
-static void read_pose(const mjData *d, dv_pose *p) {
+void dv_mujoco_read_pose(const mjData *d, dv_pose *p) {
   double q[4] = {d->qpos[3], d->qpos[4], d->qpos[5], d->qpos[6]};
   mju_normalize4(q);
   mju_quat2Mat(p->R, q);
@@ -393,7 +393,7 @@ static int check_state(mujoco_engine *e) {
                      d->time);
   dv_pose p;
   double low[3], slip;
-  read_pose(d, &p);
+  dv_mujoco_read_pose(d, &p);
   /* runaway: E > E0 + |E0|/2 + m g r cannot come from a passive contact */
   const double energy = dv_pose_energy(&e->disk, &p);
   if (energy > e->e_max)
@@ -496,7 +496,7 @@ static int mujoco_advance(void *p, double t, dv_sample *out, dv_error *err) {
   if (e->status == DV_OK && trapped(step_to, &call, msg, sizeof msg))
     end_run(e, DV_OUTCOME_ERROR, DV_FAILURE_LIBRARY, "%s", msg);
   if (e->status < 0) return dv_fail(err, e->status, "%s", e->stats.detail);
-  read_pose(e->d, &pose);
+  dv_mujoco_read_pose(e->d, &pose);
   dv_sample_from_pose(&e->disk, &e->geom, &pose, e->status == DV_EVENT ? e->d->time : t, e->prev,
                       out);
   memcpy(e->prev, out->y, sizeof e->prev);
