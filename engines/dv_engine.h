@@ -68,6 +68,7 @@ typedef struct dv_engine_stats {
   dv_outcome outcome;
   dv_failure failure; /* DV_FAILURE_NONE unless the run failed */
   char detail[256];   /* why the run ended, when not completed */
+  char method[256];   /* how the run was computed, where a reader needs to know, or "" */
 } dv_engine_stats;
 
 /* what an engine is for */

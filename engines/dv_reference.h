@@ -12,7 +12,10 @@ typedef struct dv_reduced_settings {
   double rtol, atol;  /* of the integrator */
   double theta_limit; /* rad; every run ends where theta < limit or > pi - limit */
   int max_steps;      /* step budget of a run (red_solver.h's progress guard) */
+  int fold;           /* DV_FOLD_*: later periods from the first (red_period.h) */
 } dv_reduced_settings;
+
+enum { DV_FOLD_PERIOD = 0, DV_FOLD_OFF };
 
 /* [engines.matched]: the geometry-matched reference, table in engine_matched.c */
 typedef struct dv_matched_settings {

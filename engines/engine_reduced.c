@@ -11,12 +11,14 @@
 #include "red_reference.h"
 #include "dv_reference.h"
 #include "engine_scene.h"
+#include "red_period.h"
 #include "red_rolling.h"
 
 typedef struct reduced_engine {
   red_reference ref;
   red_rolling thin; /* the same disk in Newton-Euler form, for the contact force */
   red_integrator *in;
+  red_period *period; /* NULL: step to the end */
   double t_end;
   int event;
 } reduced_engine;
@@ -35,6 +37,7 @@ static void reduced_free(void *p) {
   reduced_engine *e = p;
   if (!e) return;
   red_integrator_free(e->in);
+  red_period_free(e->period);
   free(e);
 }
 
@@ -49,19 +52,42 @@ static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
   e->in = red_integrator_alloc(&e->ref.sys, red_steppers[s->integrator], s->rtol, s->atol, err);
   if (!e->in) return reduced_free(e), NULL;
   red_integrator_set_max_steps(e->in, s->max_steps);
+  /* only a free-stepping integrator's step ends carry its dense output */
+  if (s->fold == DV_FOLD_PERIOD && red_steppers[s->integrator]->caps & RED_CAP_DENSE) {
+    e->period = red_period_alloc(&sc->disk, s->rtol, s->atol, err);
+    if (!e->period) return reduced_free(e), NULL;
+    red_integrator_observe(e->in, red_period_record, e->period);
+  }
   return e;
 }
 
 static int reduced_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   reduced_engine *e = p;
   e->event = -1;
+  if (e->period && red_period_reset(e->period, 0.0, state, err)) return DV_ESYSTEM;
   return red_integrator_reset(e->in, 0.0, e->t_end, state, err);
+}
+
+/* y at t from the recorded or folded period; 1 where it has no answer */
+static int from_period(reduced_engine *e, double t, double *y, dv_error *err) {
+  if (!e->period || red_period_state(e->period) == RED_PERIOD_OFF) return 1;
+  if (!red_period_covers(e->period, t)) {
+    const int status = red_integrator_step_to(e->in, t, err);
+    if (status) return status;
+  }
+  if (!red_period_covers(e->period, t)) return 1; /* an event, or no fold */
+  e->event = -1;
+  return red_period_eval(e->period, t, y);
 }
 
 static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
   reduced_engine *e = p;
   double y[RED_NSTATE], s[RR_NSTATE];
-  const int status = red_integrator_advance(e->in, t, &out->t, y, &e->event, err);
+  int status = from_period(e, t, y, err);
+  if (status == DV_OK)
+    out->t = t;
+  else if (status > 0)
+    status = red_integrator_advance(e->in, t, &out->t, y, &e->event, err);
   red_rolling_from_state(&e->thin, y, s);
   dv_reference_sample(&e->thin, s, out);
   memcpy(out->y, y, sizeof y); /* exactly the integrated state, not its round trip */
@@ -74,6 +100,7 @@ static void reduced_stats(const void *p, dv_engine_stats *out) {
   dv_engine_limit_detail(e->event == RED_EVENT_THETA_LOW, e->ref.theta_limit, NAN, detail,
                          sizeof detail);
   dv_reference_stats(e->in, e->event, detail, out);
+  if (e->period) snprintf(out->method, sizeof out->method, "%s", red_period_note(e->period));
 }
 
 static const char *integrator_at(size_t i) {
@@ -120,6 +147,8 @@ static int reduced_check(dv_scenario *sc, void *block, dv_setting_issue *issue) 
   return -1;
 }
 
+static const char *const FOLDS[] = {"period", "off", NULL};
+
 #define AT(field) offsetof(dv_reduced_settings, field)
 #define OPEN (DV_SETTING_OPEN_LO | DV_SETTING_OPEN_HI)
 
@@ -134,6 +163,9 @@ static const dv_setting_spec KEYS[] = {
     {"max_steps", DV_SETTING_INT, AT(max_steps), 0, 0, NAN, 1, 1e9, NULL, NULL, "",
      "step budget of a reference run: past it the run ends with an error; default: 1000 steps "
      "per shortest time scale of the scene, at least 1e6"},
+    {"fold", DV_SETTING_CHOICE, AT(fold), 0, 0, 0, 0, 0, FOLDS, NULL, "",
+     "period: once the reduced state closes over a nutation period, later times come from that "
+     "period moved by the disk's symmetries (gsl-rk8pd only); off: step to the end"},
 };
 
 static const dv_settings_section SETTINGS = {"reduced", KEYS, sizeof KEYS / sizeof KEYS[0],

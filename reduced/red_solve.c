@@ -29,6 +29,9 @@ struct red_integrator {
   int short_steps;       /* steps in a row shorter than min_step */
   double min_step;       /* s */
   char stalled[200];     /* why the progress guard ended the run, or "" */
+  red_step_fn observer;  /* told every accepted step's end, or NULL */
+  void *observer_ctx;
+  int paused; /* the observer asked to stop stepping */
 };
 
 red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_type *type,
@@ -47,6 +50,11 @@ red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_ty
 
 void red_integrator_set_max_steps(red_integrator *in, long max_steps) {
   in->max_steps = max_steps > 0 ? max_steps : RED_DEFAULT_MAX_STEPS;
+}
+
+void red_integrator_observe(red_integrator *in, red_step_fn fn, void *ctx) {
+  in->observer = fn;
+  in->observer_ctx = ctx;
 }
 
 const char *red_integrator_stalled(const red_integrator *in) {
@@ -78,6 +86,7 @@ int red_integrator_reset(red_integrator *in, double t0, double t_end, const doub
   in->steps = 0;
   in->short_steps = 0;
   in->stalled[0] = '\0';
+  in->paused = 0;
   const double scale = in->sys->frequency ? 1.0 / in->sys->frequency(y0, in->sys->params) : 0.0;
   in->min_step = RED_MIN_STEP_FRACTION * (scale > 0.0 && isfinite(scale) ? scale : t_end - t0);
   eval_events(in->sys, t0, y0, in->g);
@@ -155,23 +164,34 @@ static int step_once(red_integrator *in, double t_max, dv_error *err) {
   }
   memcpy(in->g, g, sizeof g);
   in->t_step = t1;
-  return in->event < 0 ? check_progress(in, t0, t1, t_max, err) : DV_OK;
+  if (in->event >= 0) return DV_OK;
+  if (in->observer && in->observer(t1, y, in->observer_ctx)) in->paused = 1;
+  return check_progress(in, t0, t1, t_max, err);
+}
+
+int red_integrator_step_to(red_integrator *in, double t_out, dv_error *err) {
+  const double t_max = in->type->caps & RED_CAP_DENSE ? in->t_end : fmin(t_out, in->t_end);
+  in->paused = 0;
+  while (in->event < 0 && !in->paused && in->t_step < fmin(t_out, in->t_end)) {
+    const int status = step_once(in, t_max, err);
+    if (status) return status;
+  }
+  return DV_OK;
 }
 
 int red_integrator_advance(red_integrator *in, double t_out, double *t, double *y, int *event,
                            dv_error *err) {
-  int status = DV_OK;
-  const int dense = in->type->caps & RED_CAP_DENSE;
   if (t_out <= in->t0) { /* ARKODE cannot interpolate before its first step */
     *t = in->t0;
     *event = -1;
     memcpy(y, in->y0, in->sys->dim * sizeof(double));
     return DV_OK;
   }
-  while (in->event < 0 && in->t_step < fmin(t_out, in->t_end)) {
-    status = step_once(in, dense ? in->t_end : fmin(t_out, in->t_end), err);
-    if (status) return status;
-  }
+  int status;
+  do /* past any pause the observer asked for */
+    status = red_integrator_step_to(in, t_out, err);
+  while (!status && in->paused);
+  if (status) return status;
   *event = in->event;
   if (in->event >= 0 && in->t_event <= t_out) {
     in->done = 1;

@@ -94,6 +94,13 @@ red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_ty
 /* the step budget of the runs that follow (<= 0: RED_DEFAULT_MAX_STEPS) */
 void red_integrator_set_max_steps(red_integrator *in, long max_steps);
 
+/* told the end of every accepted step that has no event in it (y: the state
+ * there); a non-zero return pauses the stepping (red_integrator_step_to) */
+typedef int (*red_step_fn)(double t, const double *y, void *ctx);
+
+/* the observer of the runs that follow (NULL: none) */
+void red_integrator_observe(red_integrator *in, red_step_fn fn, void *ctx);
+
 /* why the run stalled (the progress guard), or "" */
 const char *red_integrator_stalled(const red_integrator *in);
 
@@ -106,6 +113,10 @@ int red_integrator_reset(red_integrator *in, double t0, double t_end, const doub
  * Once an event is reached, further calls return DV_EVENT again. */
 int red_integrator_advance(red_integrator *in, double t_out, double *t, double *y, int *event,
                            dv_error *err);
+
+/* step until a step ends at or past t_out (or t_end), at an event, or where
+ * the observer pauses; no output. Returns DV_OK or < 0 */
+int red_integrator_step_to(red_integrator *in, double t_out, dv_error *err);
 
 void red_integrator_stats(const red_integrator *in, red_stats *out);
 void red_integrator_free(red_integrator *in); /* NULL-safe */

@@ -9,26 +9,20 @@
  * the method from the step's start: no interpolation error there either. */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
-#include <gsl/gsl_poly.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "red_gsl_words.h"
-#include "red_solver.h"
+#include "red_hermite.h"
 
-#define NODES 4
+#define NODES RED_HERMITE_NODES
 
 /* The interpolation error is about 2e-5 (w h)^8 for the fastest frequency w
  * of the motion, so h <= KAPPA rtol^(1/8) / w keeps it near rtol. KAPPA is
  * measured: the theta error of the dense output against a 1e-14 run stepped
  * onto the samples stays below rtol for rtol 1e-10 ... 1e-13 (bench_reduced). */
 #define KAPPA 4.7
-
-/* a step end: time, y and y' */
-typedef struct gsl_node {
-  double t, y[RED_MAX_DIM], f[RED_MAX_DIM];
-} gsl_node;
 
 typedef struct gsl_stepper {
   const red_system *sys;
@@ -47,10 +41,9 @@ typedef struct gsl_stepper {
   int uncovered;         /* steps longer than the bound among the interpolant's last NODES - 1 */
   int nodes;             /* history length, <= NODES */
   int oldest;            /* ring index of the oldest node */
-  gsl_node ring[NODES];  /* the history, a ring: a step writes one node, moves none */
-  double dd[RED_MAX_DIM][2 * NODES]; /* divided differences */
-  double z[2 * NODES];
-  int dd_valid; /* dd matches the nodes */
+  red_node ring[NODES];  /* the history, a ring: a step writes one node, moves none */
+  red_hermite hermite;   /* through the nodes, when valid */
+  int hermite_valid;
 } gsl_stepper;
 
 static int gsl_rhs(double t, const double y[], double f[], void *p) {
@@ -62,7 +55,7 @@ static int gsl_rhs(double t, const double y[], double f[], void *p) {
 }
 
 /* the k-th node of the history, oldest first */
-static gsl_node *node(gsl_stepper *s, int k) {
+static red_node *node(gsl_stepper *s, int k) {
   return &s->ring[(s->oldest + k) % NODES];
 }
 
@@ -74,7 +67,7 @@ static int push_node(gsl_stepper *s, const double *f_node, dv_error *err) {
     s->oldest = (s->oldest + 1) % NODES;
     s->nodes--;
   }
-  gsl_node *q = node(s, s->nodes);
+  red_node *q = node(s, s->nodes);
   q->t = s->t;
   memcpy(q->y, s->y, n * sizeof(double));
   if (f_node)
@@ -82,7 +75,7 @@ static int push_node(gsl_stepper *s, const double *f_node, dv_error *err) {
   else if (gsl_rhs(s->t, s->y, q->f, s))
     return dv_fail(err, DV_ENUMERIC, "state left the domain");
   s->nodes++;
-  s->dd_valid = 0;
+  s->hermite_valid = 0;
   return DV_OK;
 }
 
@@ -167,7 +160,7 @@ static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
  * (shorter than the step it took, so within its tolerance) */
 static int step_onto(gsl_stepper *s, double t, double *y, dv_error *err) {
   const size_t n = s->sys->dim;
-  const gsl_node *start = node(s, s->nodes - 2);
+  const red_node *start = node(s, s->nodes - 2);
   double yerr[RED_MAX_DIM], f[RED_MAX_DIM];
   memcpy(y, start->y, n * sizeof(double));
   memcpy(f, start->f, n * sizeof(double));
@@ -186,20 +179,13 @@ static int gsl_dense(void *p, double t, double *y, dv_error *err) {
   s->query_gap = fabs(t - s->last_query);
   s->last_query = t;
   if (s->uncovered) return step_onto(s, t, y, err);
-  if (!s->dd_valid) {
-    double tn[NODES], yn[NODES], fn[NODES];
-    for (int k = 0; k < s->nodes; k++) tn[k] = node(s, k)->t;
-    for (size_t i = 0; i < s->sys->dim; i++) {
-      for (int k = 0; k < s->nodes; k++) {
-        yn[k] = node(s, k)->y[i];
-        fn[k] = node(s, k)->f[i];
-      }
-      gsl_poly_dd_hermite_init(s->dd[i], s->z, tn, yn, fn, (size_t)s->nodes);
-    }
-    s->dd_valid = 1;
+  if (!s->hermite_valid) {
+    const red_node *nodes[NODES];
+    for (int k = 0; k < s->nodes; k++) nodes[k] = node(s, k);
+    red_hermite_init(&s->hermite, s->sys->dim, nodes, (size_t)s->nodes);
+    s->hermite_valid = 1;
   }
-  for (size_t i = 0; i < s->sys->dim; i++)
-    y[i] = gsl_poly_dd_eval(s->dd[i], s->z, 2 * (size_t)s->nodes, t);
+  red_hermite_eval(&s->hermite, t, y);
   return DV_OK;
 }
 

@@ -145,6 +145,7 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON_AddNumberToObject(ref, "rtol", dv_reference_settings(sc)->rtol);
   cJSON_AddStringToObject(ref, "outcome", dv_outcome_name(c->thin_stats.outcome));
   cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
+  cJSON_AddStringToObject(ref, "method", c->thin_stats.method);
   cJSON_AddItemToObject(ref, "horizon", dv_io_json_number(c->horizon));
   cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   cJSON_AddStringToObject(ref, "version", thin->version());
@@ -178,6 +179,7 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
           integrator_name(sc), dv_reference_settings(sc)->rtol,
           dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",
           c->thin_stats.detail, c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  if (c->thin_stats.method[0]) fprintf(fp, "Reference method: %s.\n\n", c->thin_stats.method);
   fprintf(fp,
           "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
           "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
@@ -222,7 +224,8 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
 }
 
 #define PORTRAIT_POINTS 400
-#define LEVEL_COLOUR 8 /* grey: the energy level, apart from the black reference and the engines */
+#define LEVEL_COLOUR 8 /* grey: the energy level, apart from the black reference and the engines \
+                        */
 
 /* theta and p_theta = (A + m r^2) theta' of a trajectory, for the phase plane */
 static void phase_coordinates(const red_disk *dk, const dv_traj *tr, double *th, double *p) {
@@ -270,22 +273,21 @@ static int draw_portraits(const char *dir, const dv_comparison *c, portrait *pt,
   /* phase plane: the level set, then the reference and every engine */
   dv_plot_curve ph[2 + 1 + DV_MAX_ENGINES];
   size_t n = 0;
-  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, pt->th, pt->up, NULL, DV_CURVE_LINE,
-                            LEVEL_COLOUR};
+  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, pt->th,      pt->up,
+                            NULL,          DV_CURVE_LINE,   LEVEL_COLOUR};
   ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, pt->th, pt->dn, NULL, DV_CURVE_LINE, LEVEL_COLOUR};
   for (size_t k = 0; k <= c->n; k++) {
     const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
     phase_coordinates(dk, tr, pt->traj[k], pt->traj[k] + tr->n);
-    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)",
-                              tr->n,
-                              pt->traj[k],
-                              pt->traj[k] + tr->n,
-                              NULL,
-                              DV_CURVE_LINE,
-                              dv_report_plot_engine_colour(k ? c->r[k - 1].engine->name
-                                                             : dv_engine_of_role(
-                                                                   DV_ENGINE_THIN_REFERENCE)
-                                                                   ->name)};
+    ph[n++] = (dv_plot_curve){
+        k ? c->r[k - 1].engine->name : "reference (thin disk)",
+        tr->n,
+        pt->traj[k],
+        pt->traj[k] + tr->n,
+        NULL,
+        DV_CURVE_LINE,
+        dv_report_plot_engine_colour(k ? c->r[k - 1].engine->name
+                                       : dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name)};
   }
   snprintf(title, sizeof title, "%s: phase plane", c->sc->name);
   if (!status) status = dv_io_path(path, sizeof path, err, "%s/phase.svg", dir);

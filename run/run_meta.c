@@ -78,6 +78,7 @@ int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_s
   cJSON *s = cJSON_AddObjectToObject(o, "run");
   cJSON_AddStringToObject(s, "outcome", dv_outcome_name(st->outcome));
   cJSON_AddStringToObject(s, "detail", st->detail);
+  cJSON_AddStringToObject(s, "method", st->method);
   cJSON_AddNumberToObject(s, "steps", (double)st->steps);
   cJSON_AddNumberToObject(s, "rhs_evals", (double)st->rhs_evals);
   cJSON_AddNumberToObject(s, "slip_max", st->slip_max);

@@ -1,0 +1,287 @@
+/* red_period: record step ends, find a closed period of the reduced motion,
+ * and answer any later time by the disk's symmetries (red_period.h). */
+#include "red_period.h"
+
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_roots.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "red_hermite.h"
+
+/* the reduced state but theta', which is 0 at every maximum */
+static const int reduced[] = {RED_TH, RED_VPH, RED_VPS};
+#define NREDUCED (sizeof reduced / sizeof reduced[0])
+
+struct red_period {
+  red_disk disk;
+  double rtol, atol;
+  red_period_status status;
+  gsl_odeiv2_system sys; /* the reduced equations, for ... */
+  gsl_odeiv2_step *onto; /* ... one step of the method onto a maximum */
+  red_node *nodes;       /* step ends, times increasing */
+  size_t n, cap;
+  red_hermite hermite; /* over the step ending at node `cached` */
+  size_t cached;       /* 0: none */
+  int maxima;          /* maxima of theta found: 0, 1 or 2 */
+  double t_a, y_a[RED_NSTATE], t_b, y_b[RED_NSTATE];
+  double theta_lo, theta_hi; /* theta's range since t_a */
+  double size[RED_NSTATE];   /* the largest |y| since t_a, per component */
+  double T, dphi, dpsi;      /* the period, and what it adds to phi and psi */
+  char note[240];
+};
+
+static int gsl_rhs(double t, const double y[], double f[], void *disk) {
+  (void)t;
+  return red_rhs(disk, y, f) ? GSL_EDOM : GSL_SUCCESS;
+}
+
+red_period *red_period_alloc(const red_disk *disk, double rtol, double atol, dv_error *err) {
+  red_period *p = calloc(1, sizeof *p);
+  if (!p) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  p->disk = *disk;
+  p->rtol = rtol;
+  p->atol = atol;
+  p->sys = (gsl_odeiv2_system){gsl_rhs, NULL, RED_NSTATE, &p->disk};
+  p->onto = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, RED_NSTATE);
+  if (!p->onto) return red_period_free(p), dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  return p;
+}
+
+void red_period_free(red_period *p) {
+  if (!p) return;
+  if (p->onto) gsl_odeiv2_step_free(p->onto);
+  free(p->nodes);
+  free(p);
+}
+
+static void stop(red_period *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void stop(red_period *p, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  p->status = RED_PERIOD_OFF;
+  vsnprintf(p->note, sizeof p->note, fmt, ap);
+  va_end(ap);
+}
+
+/* append a step end with y' there */
+static int push(red_period *p, double t, const double *y) {
+  if (p->n == p->cap) {
+    const size_t cap = p->cap ? 2 * p->cap : 256;
+    red_node *nodes = cap <= RED_PERIOD_MAX_NODES ? realloc(p->nodes, cap * sizeof *nodes) : NULL;
+    if (!nodes) {
+      stop(p, "no fold: no closed period within %g step ends (to t = %.9g s)", (double)p->n, t);
+      return -1;
+    }
+    p->nodes = nodes;
+    p->cap = cap;
+  }
+  red_node *q = &p->nodes[p->n];
+  q->t = t;
+  memcpy(q->y, y, RED_NSTATE * sizeof(double));
+  if (red_rhs(&p->disk, q->y, q->f)) {
+    stop(p, "no fold: the state left the domain at t = %.9g s", t);
+    return -1;
+  }
+  p->n++;
+  return 0;
+}
+
+int red_period_reset(red_period *p, double t0, const double y0[RED_NSTATE], dv_error *err) {
+  p->n = 0;
+  p->cached = 0;
+  p->maxima = 0;
+  p->status = RED_PERIOD_RECORDING;
+  snprintf(p->note, sizeof p->note, "no fold: no period within the run");
+  if (push(p, t0, y0) && p->n == 0 && !p->nodes) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  return DV_OK;
+}
+
+/* the integrator's interpolant on the step ending at node i >= 1 */
+static const red_hermite *step_hermite(red_period *p, size_t i) {
+  if (p->cached != i) {
+    const red_node *nodes[RED_HERMITE_NODES];
+    const size_t first = i + 1 > RED_HERMITE_NODES ? i + 1 - RED_HERMITE_NODES : 0;
+    for (size_t k = first; k <= i; k++) nodes[k - first] = &p->nodes[k];
+    red_hermite_init(&p->hermite, RED_NSTATE, nodes, i + 1 - first);
+    p->cached = i;
+  }
+  return &p->hermite;
+}
+
+static double theta_rate(double t, void *ctx) {
+  red_period *p = ctx;
+  return red_hermite_eval_one(&p->hermite, RED_VTH, t);
+}
+
+/* y at t in the step ending at node i: one step of the method from the
+ * step's start, shorter than the step it took, so within its tolerance */
+static int step_onto(red_period *p, size_t i, double t, double *y) {
+  const red_node *start = &p->nodes[i - 1];
+  double yerr[RED_NSTATE], f[RED_NSTATE];
+  memcpy(y, start->y, sizeof yerr);
+  memcpy(f, start->f, sizeof f);
+  gsl_odeiv2_step_reset(p->onto);
+  return gsl_odeiv2_step_apply(p->onto, start->t, t - start->t, y, yerr, f, NULL, &p->sys);
+}
+
+/* where theta' falls through zero inside the step ending at node i, and y
+ * there: Brent's method on the interpolant, then Newton's on steps of the
+ * method (the maxima set the period, which every later period repeats) */
+static double locate_maximum(red_period *p, size_t i, double *y) {
+  const double ta = p->nodes[i - 1].t, tb = p->nodes[i].t;
+  double t = tb;
+  if (p->nodes[i].y[RED_VTH] != 0.0) {
+    step_hermite(p, i);
+    gsl_function fn = {theta_rate, p};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s || gsl_root_fsolver_set(s, &fn, ta, tb)) {
+      if (s) gsl_root_fsolver_free(s);
+      return NAN;
+    }
+    for (int iter = 0; iter < 200; iter++) {
+      if (gsl_root_fsolver_iterate(s)) break;
+      const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
+      if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
+    }
+    t = gsl_root_fsolver_root(s);
+    gsl_root_fsolver_free(s);
+  }
+  for (int iter = 0; iter < 3; iter++) {
+    double f[RED_NSTATE];
+    if (step_onto(p, i, t, y) || red_rhs(&p->disk, y, f) || !(f[RED_VTH] < 0.0)) return NAN;
+    t = fmin(tb, fmax(ta, t - y[RED_VTH] / f[RED_VTH]));
+  }
+  return step_onto(p, i, t, y) ? NAN : t;
+}
+
+/* the largest mismatch of the reduced state at t_b against t_a, in
+ * tolerances of each component's size over the period */
+static double closure(const red_period *p) {
+  double worst = 0.0;
+  for (size_t k = 0; k < NREDUCED; k++) {
+    const int j = reduced[k];
+    const double tol = p->rtol * p->size[j] + p->atol;
+    worst = fmax(worst, fabs(p->y_b[j] - p->y_a[j]) / tol);
+  }
+  return worst;
+}
+
+/* a second maximum: fold if the reduced state closes over a true nutation */
+static void close_period(red_period *p) {
+  const double amplitude = p->theta_hi - p->theta_lo;
+  const double amplitude_tol = RED_PERIOD_AMPLITUDE * (p->rtol * p->y_a[RED_TH] + p->atol);
+  const double mismatch = closure(p);
+  if (!(amplitude >= amplitude_tol)) {
+    stop(p, "no fold: theta's range over a period, %.3g rad, is below %.3g rad (a steady motion)",
+         amplitude, amplitude_tol);
+    return;
+  }
+  if (!(mismatch <= RED_PERIOD_CLOSURE)) {
+    stop(p,
+         "no fold: the reduced state after one period missed its start by %.3g tolerances at t "
+         "= %.9g s",
+         mismatch, p->t_b);
+    return;
+  }
+  p->T = p->t_b - p->t_a;
+  p->dphi = p->y_b[RED_PH] - p->y_a[RED_PH];
+  p->dpsi = p->y_b[RED_PS] - p->y_a[RED_PS];
+  p->status = RED_PERIOD_CLOSED;
+  snprintf(p->note, sizeof p->note,
+           "folded from t = %.9g s: nutation period %.12g s, theta %.6g..%.6g rad, the reduced "
+           "state closes within %.2g tolerances",
+           p->t_a, p->T, p->theta_lo, p->theta_hi, mismatch);
+}
+
+int red_period_record(double t, const double *y, void *ctx) {
+  red_period *p = ctx;
+  if (p->status != RED_PERIOD_RECORDING) return p->status == RED_PERIOD_CLOSED;
+  if (push(p, t, y)) return 0;
+  const size_t i = p->n - 1;
+  if (p->maxima) {
+    p->theta_lo = fmin(p->theta_lo, y[RED_TH]);
+    p->theta_hi = fmax(p->theta_hi, y[RED_TH]);
+    for (size_t k = 0; k < NREDUCED; k++)
+      p->size[reduced[k]] = fmax(p->size[reduced[k]], fabs(y[reduced[k]]));
+  }
+  if (!(p->nodes[i - 1].y[RED_VTH] > 0.0 && y[RED_VTH] <= 0.0)) return 0;
+  double *ym = p->maxima ? p->y_b : p->y_a;
+  const double tm = locate_maximum(p, i, ym);
+  if (!isfinite(tm)) {
+    stop(p, "no fold: a maximum of theta near t = %.9g s was not located", t);
+    return 0;
+  }
+  if (p->maxima++ == 0) {
+    p->t_a = tm;
+    p->theta_lo = p->theta_hi = ym[RED_TH];
+    for (size_t k = 0; k < NREDUCED; k++) p->size[reduced[k]] = fabs(ym[reduced[k]]);
+    return 0;
+  }
+  p->t_b = tm;
+  close_period(p);
+  return p->status == RED_PERIOD_CLOSED;
+}
+
+red_period_status red_period_state(const red_period *p) {
+  return p->status;
+}
+
+int red_period_covers(const red_period *p, double t) {
+  return p->status == RED_PERIOD_CLOSED || (p->n > 0 && t <= p->nodes[p->n - 1].t);
+}
+
+/* the recorded state at t in [t0, last step end] */
+static void recorded(red_period *p, double t, double *y) {
+  size_t lo = 0, hi = p->n - 1; /* nodes[lo].t < t <= nodes[hi].t */
+  if (t <= p->nodes[0].t) {
+    memcpy(y, p->nodes[0].y, RED_NSTATE * sizeof(double));
+    return;
+  }
+  if (p->cached && p->nodes[p->cached - 1].t < t && t <= p->nodes[p->cached].t)
+    lo = p->cached - 1, hi = p->cached;
+  while (hi - lo > 1) {
+    const size_t mid = lo + (hi - lo) / 2;
+    if (p->nodes[mid].t < t)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  if (t == p->nodes[hi].t)
+    memcpy(y, p->nodes[hi].y, RED_NSTATE * sizeof(double));
+  else
+    red_hermite_eval(step_hermite(p, hi), t, y);
+}
+
+int red_period_eval(red_period *p, double t, double y[RED_NSTATE]) {
+  if (p->status != RED_PERIOD_CLOSED || t <= p->t_b || t <= p->nodes[p->n - 1].t) {
+    recorded(p, t, y);
+    return DV_OK;
+  }
+  double k = floor((t - p->t_a) / p->T);
+  double tau = fma(-k, p->T, t);
+  if (tau < p->t_a) tau += p->T, k -= 1.0; /* rounding at a period's edge */
+  if (tau >= p->t_b) tau -= p->T, k += 1.0;
+  recorded(p, tau, y);
+  const double a = remainder(p->dphi, 2.0 * M_PI), half = sin(0.5 * a);
+  const double sum = half == 0.0 ? k : sin(0.5 * k * a) / half; /* |S_k| */
+  const double dx = y[RED_X] - p->y_a[RED_X];
+  const double dy = y[RED_Y] - p->y_a[RED_Y];
+  const double bx = p->y_b[RED_X] - p->y_a[RED_X], by = p->y_b[RED_Y] - p->y_a[RED_Y];
+  const double c = cos(k * a), s = sin(k * a);
+  const double cs = cos(0.5 * (k - 1.0) * a), ss = sin(0.5 * (k - 1.0) * a);
+  y[RED_X] = p->y_a[RED_X] + c * dx - s * dy + sum * (cs * bx - ss * by);
+  y[RED_Y] = p->y_a[RED_Y] + s * dx + c * dy + sum * (ss * bx + cs * by);
+  y[RED_PH] += k * p->dphi;
+  y[RED_PS] += k * p->dpsi;
+  return DV_OK;
+}
+
+const char *red_period_note(const red_period *p) {
+  return p->note;
+}

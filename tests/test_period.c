@@ -1,0 +1,140 @@
+/* test_period: the reference folds a periodic motion (red_period.h) without
+ * losing accuracy, and folds nothing else.
+ *
+ * - Folded against stepped: over 200 s and 2000 s of a spinning disk, and
+ *   100 s of the C = 0 disk, the default (folded) reference is as close to
+ *   a 1e-14 run stepped onto every output as the same integrator stepping
+ *   to the end, in theta, heading, contact path and energy.
+ * - Before the fold, the recorded period is the integrator's own output: the
+ *   samples up to the second maximum of theta equal those of the unfolded
+ *   run bit for bit (fine output, where both take the same steps).
+ * - A steady circle (no nutation) and a fall (an event inside the first
+ *   period) are not folded, and the run says why.
+ *
+ * argv[1]: tests/data/spin_coarse.ini, argv[2]: scenarios/c_zero.ini,
+ * argv[3]: scenarios/steady_circle.ini, argv[4]: scenarios/falling.ini
+ */
+#include <math.h>
+#include <string.h>
+
+#include "dv_test.h"
+#include "run_compare.h"
+#include "run_trajectory.h"
+
+typedef struct run {
+  dv_traj traj;
+  dv_engine_stats stats;
+  int status;
+} run;
+
+/* the reduced engine over path with overrides (NULL-terminated) */
+static run simulate(const char *path, const char *const *set) {
+  run r = {.status = 0};
+  size_t n = 0;
+  while (set[n]) n++;
+  dv_scenario sc;
+  dv_error err = {{0}};
+  r.status = dv_engine_load_scenario(path, set, n, &sc, &err);
+  if (!r.status)
+    r.status = dv_run_collect(&dv_engine_reduced, &sc, dv_run_traj_keep, &r.traj, &r.stats, &err);
+  CHECK(r.status >= 0, "%s: %s", path, err.msg);
+  return r;
+}
+
+typedef struct errors {
+  double theta, phi, path, energy;
+} errors;
+
+static errors against(const run *a, const run *ref) {
+  errors e = {0};
+  CHECK(a->traj.n == ref->traj.n, "samples %zu vs %zu", a->traj.n, ref->traj.n);
+  for (size_t i = 0; i < a->traj.n && i < ref->traj.n; i++) {
+    const dv_sample *p = &a->traj.s[i], *q = &ref->traj.s[i];
+    e.theta = fmax(e.theta, fabs(p->y[RED_TH] - q->y[RED_TH]));
+    e.phi = fmax(e.phi, fabs(p->y[RED_PH] - q->y[RED_PH]));
+    e.path = fmax(e.path, hypot(p->contact[0] - q->contact[0], p->contact[1] - q->contact[1]));
+    e.energy = fmax(e.energy, fabs(p->energy - q->energy) / fabs(q->energy));
+  }
+  return e;
+}
+
+static void release(run *r) {
+  dv_run_traj_free(&r->traj);
+}
+
+/* the folded reference is within `slack` of the unfolded one's errors against
+ * a 1e-14 run, or within floor of that run (its own rounding) */
+static void check_fold(const char *path, const char *duration, const char *dt, double slack,
+                       double floor) {
+  char d[64], o[64];
+  snprintf(d, sizeof d, "scenario.duration=%s", duration);
+  snprintf(o, sizeof o, "scenario.output_dt=%s", dt);
+  const char *tight[] = {d,
+                         o,
+                         "engines.reduced.integrator=gsl-rk8pd-stepped",
+                         "engines.reduced.rtol=1e-14",
+                         "engines.reduced.atol=1e-16",
+                         NULL};
+  const char *folded[] = {d, o, NULL};
+  const char *stepped[] = {d, o, "engines.reduced.fold=off", NULL};
+  run ref = simulate(path, tight), f = simulate(path, folded), s = simulate(path, stepped);
+  CHECK(strncmp(f.stats.method, "folded", 6) == 0, "%s: not folded: %s", path, f.stats.method);
+  CHECK(s.stats.method[0] == '\0', "%s: fold=off says '%s'", path, s.stats.method);
+  const errors ef = against(&f, &ref), es = against(&s, &ref);
+  printf(
+      "%s over %s s every %s s: folded (%ld steps) theta %.2e phi %.2e path %.2e energy %.2e; "
+      "stepped (%ld steps) theta %.2e phi %.2e path %.2e energy %.2e\n",
+      path, duration, dt, f.stats.steps, ef.theta, ef.phi, ef.path, ef.energy, s.stats.steps,
+      es.theta, es.phi, es.path, es.energy);
+  CHECK(ef.theta <= fmax(slack * es.theta, floor), "theta %.3g vs %.3g", ef.theta, es.theta);
+  CHECK(ef.phi <= fmax(slack * es.phi, floor), "phi %.3g vs %.3g", ef.phi, es.phi);
+  CHECK(ef.path <= fmax(slack * es.path, floor), "path %.3g vs %.3g", ef.path, es.path);
+  CHECK(ef.energy <= fmax(slack * es.energy, 1e-11), "energy %.3g vs %.3g", ef.energy, es.energy);
+  CHECK(f.stats.steps * 10 < s.stats.steps, "folded %ld steps, stepped %ld", f.stats.steps,
+        s.stats.steps);
+  release(&ref);
+  release(&f);
+  release(&s);
+}
+
+/* up to the fold, the same samples as the unfolded run, bit for bit */
+static void check_recorded(const char *path) {
+  const char *fine[] = {"scenario.duration=20", "scenario.output_dt=0.001", NULL};
+  const char *off[] = {"scenario.duration=20", "scenario.output_dt=0.001",
+                       "engines.reduced.fold=off", NULL};
+  run f = simulate(path, fine), s = simulate(path, off);
+  double t_a = NAN, T = NAN;
+  CHECK(sscanf(f.stats.method, "folded from t = %lf s: nutation period %lf", &t_a, &T) == 2,
+        "method: %s", f.stats.method);
+  size_t same = 0;
+  while (same < f.traj.n && same < s.traj.n && f.traj.s[same].t <= t_a + T &&
+         !memcmp(f.traj.s[same].y, s.traj.s[same].y, sizeof f.traj.s[same].y))
+    same++;
+  printf("recorded: the first %zu samples (to t = %g s; fold at %.9g s) equal bit for bit\n", same,
+         same ? f.traj.s[same - 1].t : 0.0, t_a + T);
+  CHECK(same > 0 && f.traj.s[same - 1].t + 0.001 > t_a + T, "differ at t = %g s",
+        same < f.traj.n ? f.traj.s[same].t : NAN);
+  release(&f);
+  release(&s);
+}
+
+static void check_not_folded(const char *path, const char *why) {
+  const char *none[] = {NULL};
+  run r = simulate(path, none);
+  printf("%s: %s\n", path, r.stats.method);
+  CHECK(strstr(r.stats.method, why) != NULL, "%s: '%s' does not say '%s'", path, r.stats.method,
+        why);
+  release(&r);
+}
+
+int main(int argc, char **argv) {
+  if (argc != 5) return fprintf(stderr, "usage: test_period SPIN C_ZERO STEADY FALLING\n"), 2;
+  /* slack and floors: ROUNDING and the measured errors in the header */
+  check_fold(argv[1], "200", "0.37", 1.5, 1e-10);
+  check_fold(argv[1], "2000", "1", 1.5, 1e-9);
+  check_fold(argv[2], "100", "0.01", 1.5, 1e-10);
+  check_recorded(argv[1]);
+  check_not_folded(argv[3], "steady motion");
+  check_not_folded(argv[4], "no period within the run");
+  return TEST_RESULT();
+}
