@@ -82,7 +82,7 @@ static int from_period(reduced_engine *e, double t, double *y, dv_error *err) {
 
 static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
   reduced_engine *e = p;
-  double y[RED_NSTATE], s[RR_NSTATE];
+  double y[RED_NSTATE] = {0}, s[RR_NSTATE];
   int status = from_period(e, t, y, err);
   if (status == DV_OK)
     out->t = t;

@@ -2,6 +2,7 @@
 #include "red_hermite.h"
 
 #include <gsl/gsl_poly.h>
+#include <string.h>
 
 void red_hermite_init(red_hermite *h, size_t dim, const red_node *const *nodes, size_t n) {
   double t[RED_HERMITE_NODES], y[RED_HERMITE_NODES], f[RED_HERMITE_NODES];
@@ -23,4 +24,13 @@ double red_hermite_eval_one(const red_hermite *h, size_t i, double t) {
 
 void red_hermite_eval(const red_hermite *h, double t, double *y) {
   for (size_t i = 0; i < h->dim; i++) y[i] = red_hermite_eval_one(h, i, t);
+}
+
+int red_node_step(gsl_odeiv2_step *method, const gsl_odeiv2_system *sys, const red_node *start,
+                  double t, double *y) {
+  double yerr[RED_MAX_DIM], f[RED_MAX_DIM];
+  memcpy(y, start->y, sys->dimension * sizeof(double));
+  memcpy(f, start->f, sys->dimension * sizeof(double));
+  gsl_odeiv2_step_reset(method);
+  return gsl_odeiv2_step_apply(method, start->t, t - start->t, y, yerr, f, NULL, sys);
 }

@@ -5,7 +5,6 @@
 #include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
-#include <gsl/gsl_roots.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,6 +12,7 @@
 #include <string.h>
 
 #include "red_hermite.h"
+#include "red_root.h"
 
 /* the reduced state but theta', which is 0 at every maximum */
 static const int reduced[] = {RED_TH, RED_VPH, RED_VPS};
@@ -119,15 +119,9 @@ static double theta_rate(double t, void *ctx) {
   return red_hermite_eval_one(&p->hermite, RED_VTH, t);
 }
 
-/* y at t in the step ending at node i: one step of the method from the
- * step's start, shorter than the step it took, so within its tolerance */
+/* y at t in the step ending at node i, by a step of the method */
 static int step_onto(red_period *p, size_t i, double t, double *y) {
-  const red_node *start = &p->nodes[i - 1];
-  double yerr[RED_NSTATE], f[RED_NSTATE];
-  memcpy(y, start->y, sizeof yerr);
-  memcpy(f, start->f, sizeof f);
-  gsl_odeiv2_step_reset(p->onto);
-  return gsl_odeiv2_step_apply(p->onto, start->t, t - start->t, y, yerr, f, NULL, &p->sys);
+  return red_node_step(p->onto, &p->sys, &p->nodes[i - 1], t, y);
 }
 
 /* where theta' falls through zero inside the step ending at node i, and y
@@ -139,18 +133,7 @@ static double locate_maximum(red_period *p, size_t i, double *y) {
   if (p->nodes[i].y[RED_VTH] != 0.0) {
     step_hermite(p, i);
     gsl_function fn = {theta_rate, p};
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s || gsl_root_fsolver_set(s, &fn, ta, tb)) {
-      if (s) gsl_root_fsolver_free(s);
-      return NAN;
-    }
-    for (int iter = 0; iter < 200; iter++) {
-      if (gsl_root_fsolver_iterate(s)) break;
-      const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
-      if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
-    }
-    t = gsl_root_fsolver_root(s);
-    gsl_root_fsolver_free(s);
+    if (red_brent(&fn, ta, tb, 0.0, 4.0 * DBL_EPSILON, &t)) return NAN;
   }
   for (int iter = 0; iter < 3; iter++) {
     double f[RED_NSTATE];

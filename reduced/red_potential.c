@@ -4,7 +4,7 @@
 #include "red_gsl_words.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+#include "red_root.h"
 #include <math.h>
 
 #include "red_invariants.h"
@@ -30,22 +30,6 @@ static double excess(double th, void *p) {
   return red_effective_potential(c->disk, c->f1, c->f2, th, &U) ? NAN : U - c->E;
 }
 
-static int brent(gsl_function *fn, double a, double b, double *root) {
-  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  if (!s) return GSL_ENOMEM;
-  int status = gsl_root_fsolver_set(s, fn, a, b);
-  for (int i = 0; status == GSL_SUCCESS && i < 200; i++) {
-    status = gsl_root_fsolver_iterate(s);
-    if (status) break;
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 1e-15,
-                               1e-14) == GSL_SUCCESS)
-      break;
-  }
-  *root = gsl_root_fsolver_root(s);
-  gsl_root_fsolver_free(s);
-  return status;
-}
-
 /* walk from th0 toward limit until U > E, then refine; *hit when never */
 static int turning_point(gsl_function *fn, double th0, double limit, double *out, int *hit) {
   const int n = 2000;
@@ -60,7 +44,7 @@ static int turning_point(gsl_function *fn, double th0, double limit, double *out
     const double b = (i == n) ? limit : th0 + i * step;
     const double gb = GSL_FN_EVAL(fn, b);
     if (!isfinite(gb)) return GSL_EDOM;
-    if (gb > 0.0) return brent(fn, fmin(a, b), fmax(a, b), out);
+    if (gb > 0.0) return red_brent(fn, fmin(a, b), fmax(a, b), 1e-15, 1e-14, out);
     a = b;
   }
   *out = limit;

@@ -2,7 +2,6 @@
  * interpolation, and events located by Brent's method (GSL) on it. */
 #include <float.h>
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +9,7 @@
 
 #include "red_solver.h"
 #include "red_gsl_words.h"
+#include "red_root.h"
 
 struct red_integrator {
   const red_system *sys;
@@ -107,19 +107,10 @@ static double event_on_dense(double t, void *p) {
 /* the sign change of event i inside (ta, tb) */
 static int locate(red_integrator *in, double ta, double tb, double *t_root) {
   gsl_function fn = {event_on_dense, in};
-  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  if (!s) return dv_fail(in->err, DV_ESYSTEM, "out of memory");
   in->status = 0;
-  int status = gsl_root_fsolver_set(s, &fn, ta, tb);
-  for (int iter = 0; status == GSL_SUCCESS && iter < 200; iter++) {
-    status = gsl_root_fsolver_iterate(s);
-    if (status || in->status) break;
-    double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
-    if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
-  }
-  *t_root = gsl_root_fsolver_root(s);
-  gsl_root_fsolver_free(s);
+  const int status = red_brent(&fn, ta, tb, 0.0, 4.0 * DBL_EPSILON, t_root);
   if (in->status) return in->status;
+  if (status == GSL_ENOMEM) return dv_fail(in->err, DV_ESYSTEM, "out of memory");
   if (status) return dv_fail(in->err, DV_ENUMERIC, "event location: %s", red_gsl_words(status));
   return DV_OK;
 }

@@ -159,13 +159,7 @@ static int gsl_step(void *p, double t_max, double *t, dv_error *err) {
 /* y at t inside the last step: one step of the method from the step's start
  * (shorter than the step it took, so within its tolerance) */
 static int step_onto(gsl_stepper *s, double t, double *y, dv_error *err) {
-  const size_t n = s->sys->dim;
-  const red_node *start = node(s, s->nodes - 2);
-  double yerr[RED_MAX_DIM], f[RED_MAX_DIM];
-  memcpy(y, start->y, n * sizeof(double));
-  memcpy(f, start->f, n * sizeof(double));
-  gsl_odeiv2_step_reset(s->onto);
-  if (gsl_odeiv2_step_apply(s->onto, start->t, t - start->t, y, yerr, f, NULL, &s->gsys))
+  if (red_node_step(s->onto, &s->gsys, node(s, s->nodes - 2), t, y))
     return dv_fail(err, DV_ENUMERIC, "state left the domain at t = %.17g", t);
   return DV_OK;
 }
