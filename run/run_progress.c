@@ -74,6 +74,7 @@ static void announce(const char *what, double seconds, int more, const char *bas
 /* a probe: the wall time from the first sample, up to the budget */
 typedef struct probe {
   double first, spent, t; /* s of wall time at the first sample, since then; simulated s */
+  double duration;        /* s simulated by the whole run */
   int stopped;            /* the budget ended it */
 } probe;
 
@@ -82,12 +83,15 @@ static int probe_sample(void *ctx, const dv_sample *s) {
   const double now = dv_clock_now();
   if (p->first < 0.0) return p->first = now, 0;
   p->spent = now - p->first, p->t = s->t;
-  return p->stopped = p->spent >= DV_PROGRESS_PROBE_S; /* non-zero ends the run */
+  const int short_run =
+      p->spent >= DV_PROGRESS_PROBE_MIN_S &&
+      p->spent * p->duration < p->t * DV_PROGRESS_WARN_S / DV_PROGRESS_PROBE_SHARE;
+  return p->stopped = p->spent >= DV_PROGRESS_PROBE_S || short_run; /* non-zero ends the run */
 }
 
 /* wall seconds a whole run of engine over sc will take, from a probe */
 static double estimate(const dv_engine_type *engine, const dv_scenario *sc) {
-  probe p = {-1.0, 0.0, 0.0, 0};
+  probe p = {-1.0, 0.0, 0.0, sc->duration, 0};
   dv_engine_stats st;
   P.probing = 1;
   dv_run_collect(engine, sc, probe_sample, &p, &st, NULL);

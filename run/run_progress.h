@@ -33,6 +33,10 @@
 #define DV_PROGRESS_CALIBRATE_S 0.5 /* s of wall time that set a run's estimate */
 #define DV_PROGRESS_WARN_S 60.0     /* s: runs longer than this are announced */
 #define DV_PROGRESS_PROBE_S 0.1     /* s of wall time a comparison's probe of an engine takes */
+/* ... or less, from this much on, once its engine's whole run projects to
+ * below DV_PROGRESS_WARN_S / DV_PROGRESS_PROBE_SHARE: short runs are not run twice in full */
+#define DV_PROGRESS_PROBE_MIN_S 0.01
+#define DV_PROGRESS_PROBE_SHARE 16.0
 
 /* turn progress on for command ("compare"); quiet: neither line nor warning;
  * stdout_busy: the command writes to stdout while it runs (no line when
