@@ -51,53 +51,50 @@ int diskval_scenario_load(const char *path, const char *const *overrides, size_t
   return DV_OK;
 }
 
-/* a scenario from code: defaults for every engine, the given disk, state and times */
+/* a scenario from code: every key checked and derived as a file's would be */
 int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
                          double duration, double output_dt, diskval_scenario **out,
                          diskval_error *err) {
   if (!disk || !initial || !out)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_new: NULL argument");
-  if (!(disk->radius > 0) || !(disk->mass > 0) || !(disk->gravity >= 0) ||
-      !isfinite(disk->radius) || !isfinite(disk->mass) || !isfinite(disk->gravity))
-    return dv_fail(as_dv(err), DV_EINPUT, "disk: radius and mass must be > 0, gravity >= 0");
-  if (!(duration > 0) || !isfinite(duration) || !(output_dt > 0) || output_dt > duration)
-    return dv_fail(as_dv(err), DV_EINPUT, "times: need 0 < output_dt <= duration");
-  if (!(initial->theta > 0 && initial->theta < M_PI))
-    return dv_fail(as_dv(err), DV_EINPUT, "initial: theta must be in (0, pi)");
-  char what[128];
   const char *nm = name && name[0] ? name : "scenario";
-  if (strlen(nm) >= sizeof((dv_scenario *)0)->name || dv_scenario_check_name(nm, what, sizeof what))
-    return dv_fail(as_dv(err), DV_EINPUT, "name: '%s' is not a scenario name", nm);
+  if (strlen(nm) >= sizeof((dv_scenario *)0)->name)
+    return dv_fail(as_dv(err), DV_EINPUT, "scenario.name: '%s' is too long", nm);
   diskval_scenario *s = calloc(1, sizeof *s);
   if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
   dv_scenario *sc = &s->sc;
   dv_engine_init_scenario(sc);
+  dv_scenario_core_defaults(sc);
   snprintf(sc->name, sizeof sc->name, "%s", nm);
-  sc->duration = duration;
-  sc->output_dt = output_dt;
-  sc->memory_budget = DV_MEMORY_BUDGET_GIB; /* a scenario file's default */
-  double samples;
-  const double need_gib = dv_scenario_memory_gib(sc, &samples);
-  if (need_gib > DV_MEMORY_BUDGET_GIB) {
-    free(s);
-    return dv_fail(as_dv(err), DV_EINPUT,
-                   "times: %.0f samples need about %.3g GiB of memory, more than %g GiB", samples,
-                   need_gib, DV_MEMORY_BUDGET_GIB);
-  }
-  sc->disk = red_disk_uniform(disk->radius, disk->mass, disk->gravity);
-  if (disk->A > 0 || disk->C > 0) {
-    sc->disk.A = disk->A;
-    sc->disk.C = disk->C;
-  }
-  sc->init_mode = DV_INIT_STATE;
-  sc->steady_circle_radius = NAN;
-  sc->steady_phi_dot = NAN;
-  const double y[RED_NSTATE] = {[RED_TH] = initial->theta,    [RED_VTH] = initial->theta_dot,
-                                [RED_VPH] = initial->phi_dot, [RED_VPS] = initial->psi_dot,
-                                [RED_PH] = initial->phi,      [RED_PS] = initial->psi,
-                                [RED_X] = initial->x,         [RED_Y] = initial->y};
-  memcpy(sc->initial, y, sizeof y);
-  const int status = dv_engine_derive_settings(sc, as_dv(err)); /* as a load derives them */
+  const struct {
+    const char *section, *key;
+    double v;
+  } keys[] = {
+      {"scenario", "duration", duration},
+      {"scenario", "output_dt", output_dt},
+      {"disk", "radius", disk->radius},
+      {"disk", "mass", disk->mass},
+      {"disk", "gravity", disk->gravity},
+      {"disk", "thickness", disk->thickness},
+      {"disk", "A", disk->A},
+      {"disk", "C", disk->C},
+      {"initial", "theta", initial->theta},
+      {"initial", "theta_dot", initial->theta_dot},
+      {"initial", "phi_dot", initial->phi_dot},
+      {"initial", "psi_dot", initial->psi_dot},
+      {"initial", "phi", initial->phi},
+      {"initial", "psi", initial->psi},
+      {"initial", "x", initial->x},
+      {"initial", "y", initial->y},
+  };
+  const int uniform = disk->A == 0.0 && disk->C == 0.0; /* the header's convention */
+  int status = DV_OK;
+  for (size_t i = 0; i < sizeof keys / sizeof keys[0] && !status; i++)
+    if (!(uniform && !strcmp(keys[i].section, "disk") &&
+          (keys[i].key[0] == 'A' || keys[i].key[0] == 'C')))
+      status = dv_scenario_set_core(sc, keys[i].section, keys[i].key, keys[i].v, as_dv(err));
+  if (!status) status = dv_scenario_check_core(sc, as_dv(err));
+  if (!status) status = dv_engine_derive_settings(sc, as_dv(err)); /* as a load derives them */
   if (status < 0) {
     free(s);
     return status;
@@ -112,6 +109,13 @@ int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *k
   if (!sc || !engine || !key || !value)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_set: NULL argument");
   return dv_scenario_set(&sc->sc, engine, key, value, as_dv(err));
+}
+
+/* the disk as the scenario holds it, moments derived where they were not given */
+void diskval_scenario_disk(const diskval_scenario *sc, diskval_disk *out) {
+  if (!sc || !out) return;
+  const red_disk *d = &sc->sc.disk;
+  *out = (diskval_disk){d->r, d->m, d->A, d->C, d->g, sc->sc.thickness};
 }
 
 /* the scenario's name */

@@ -105,6 +105,18 @@ typedef struct dv_scenario {
  * built in code). */
 void dv_scenario_init(dv_scenario *sc, const dv_settings_section *const *engines);
 
+/* a scenario built in code: [scenario], [disk] and [initial] at their
+ * defaults (as a file that gives no optional key) */
+void dv_scenario_core_defaults(dv_scenario *sc);
+
+/* set [SECTION] KEY of the core sections to v, checked as in a file */
+int dv_scenario_set_core(dv_scenario *sc, const char *section, const char *key, double v,
+                         dv_error *err);
+
+/* the core sections' checks and what they derive (the moments, a steady
+ * start), in a load's order; DV_OK or DV_EINPUT ("disk.C: ...") */
+int dv_scenario_check_core(dv_scenario *sc, dv_error *err);
+
 /* parse and validate path against the core sections and engines; overrides
  * are "section.key=value" strings applied after the file (as from --set).
  * Returns DV_OK or DV_EINPUT with err set. */

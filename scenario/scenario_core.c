@@ -202,3 +202,31 @@ const dv_settings_section dv_scenario_core[DV_NCORE_SECTIONS] = {
     SECTION("disk", DISK_KEYS, check_disk),
     SECTION("initial", INITIAL_KEYS, check_initial),
 };
+
+void dv_scenario_core_defaults(dv_scenario *sc) {
+  for (size_t s = 0; s < DV_NCORE_SECTIONS; s++) dv_settings_defaults(&dv_scenario_core[s], sc);
+}
+
+int dv_scenario_set_core(dv_scenario *sc, const char *section, const char *key, double v,
+                         dv_error *err) {
+  for (size_t s = 0; s < DV_NCORE_SECTIONS; s++) {
+    const dv_setting_spec *sp = strcmp(dv_scenario_core[s].name, section)
+                                    ? NULL
+                                    : dv_settings_find(&dv_scenario_core[s], key);
+    char what[320];
+    if (!sp) continue;
+    if (dv_setting_store(sp, v, sc, what, sizeof what))
+      return dv_fail(err, DV_EINPUT, "%s.%s: %s", section, key, what);
+    return DV_OK;
+  }
+  return dv_fail(err, DV_EINPUT, "%s.%s: no such setting", section, key);
+}
+
+int dv_scenario_check_core(dv_scenario *sc, dv_error *err) {
+  for (size_t s = 0; s < DV_NCORE_SECTIONS; s++) {
+    dv_setting_issue is = {0};
+    if (dv_scenario_core[s].check(sc, sc, &is))
+      return dv_fail(err, DV_EINPUT, "%s.%s: %s", is.section, is.key, is.what);
+  }
+  return DV_OK;
+}

@@ -55,6 +55,45 @@ static void check_in_code(void) {
         "1e7 samples: %s", err.msg);
 }
 
+/* a disk from code is checked as a file's [disk] and [initial]: bad values
+ * are refused with the key that holds them; moments derive from the thickness */
+static void check_disk_input(void) {
+  const diskval_state y0 = {.theta = 1.2, .psi_dot = 30.0};
+  const struct {
+    diskval_disk disk;
+    const char *key;
+  } bad[] = {
+      {{.radius = 0.1, .mass = 1, .A = 0.001, .C = 0.003, .gravity = 9.81}, "disk.C"},
+      {{.radius = 0.1, .mass = 1, .A = NAN, .C = 0.001, .gravity = 9.81}, "disk.A"},
+      {{.radius = 0.1, .mass = -1, .gravity = 9.81}, "disk.mass"},
+      {{.radius = 0.1, .mass = 1, .gravity = 9.81, .thickness = 0.2}, "disk.thickness"},
+      {{.radius = INFINITY, .mass = 1, .gravity = 9.81}, "disk.radius"},
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+    diskval_error err = {{0}};
+    diskval_scenario *sc = NULL;
+    const int s = diskval_scenario_new("bad", &bad[i].disk, &y0, 1, 0.1, &sc, &err);
+    CHECK(s == DISKVAL_EINPUT && !sc && strncmp(err.msg, bad[i].key, strlen(bad[i].key)) == 0,
+          "%s: status %d, '%s'", bad[i].key, s, err.msg);
+    diskval_scenario_free(sc);
+  }
+  diskval_error err = {{0}};
+  diskval_scenario *sc = NULL;
+  const diskval_state nan_rate = {.theta = 1.2, .theta_dot = NAN};
+  const diskval_disk thick = {.radius = 0.1, .mass = 2.0, .gravity = 9.81, .thickness = 0.03};
+  CHECK(diskval_scenario_new("x", &thick, &nan_rate, 1, 0.1, &sc, &err) == DISKVAL_EINPUT &&
+            strstr(err.msg, "initial.theta_dot"),
+        "NaN rate: %s", err.msg);
+  CHECK(diskval_scenario_new("thick", &thick, &y0, 1, 0.1, &sc, &err) == 0, "thick: %s", err.msg);
+  diskval_disk got = {0};
+  diskval_scenario_disk(sc, &got);
+  /* a solid cylinder: A = m (r^2 / 4 + t^2 / 12), C = m r^2 / 2 */
+  CHECK_NEAR(got.A, 2.0 * (0.01 / 4 + 0.0009 / 12), 1e-17, "A of the thick disk");
+  CHECK_NEAR(got.C, 2.0 * 0.01 / 2, 1e-17, "C of the thick disk"); /* a few ulps */
+  CHECK_NEAR(got.thickness, 0.03, 0, "thickness");
+  diskval_scenario_free(sc);
+}
+
 /* a shipped scenario: MuJoCo's verdict, and errors by the convention */
 static void check_file(const char *dir) {
   char path[1024];
@@ -98,6 +137,7 @@ int main(int argc, char **argv) {
     }
   }
   check_in_code();
+  check_disk_input();
   check_file(argv[1]);
   return TEST_RESULT();
 }

@@ -44,9 +44,12 @@ typedef struct diskval_scenario diskval_scenario;
 typedef struct diskval_trajectory diskval_trajectory;
 
 /* the disk: radius (m), mass (kg), moments A about a diameter and C about the
- * axis (kg m^2; both 0: a uniform disk), gravity (m/s^2) */
+ * axis (kg m^2; both 0: a uniform disk of that thickness), gravity (m/s^2),
+ * full thickness (m, less than the diameter; 0: the thin disk). Checked as
+ * a scenario file's [disk] (e.g. C <= 2A) */
 typedef struct diskval_disk {
   double radius, mass, A, C, gravity;
+  double thickness;
 } diskval_disk;
 
 /* the state: tilt theta (rad, pi/2 upright), its rate, the heading and spin
@@ -89,7 +92,8 @@ DISKVAL_API const char *diskval_version(void);
 DISKVAL_API int diskval_scenario_load(const char *path, const char *const *overrides, size_t n,
                                       diskval_scenario **out, diskval_error *err);
 
-/* a scenario from code, engine settings derived as a load would; 0 < output_dt <= duration (s) */
+/* a scenario from code, every value checked and engine settings derived as a load
+ * would (errors name the file's key: "disk.C: ..."); 0 < output_dt <= duration (s) */
 DISKVAL_API int diskval_scenario_new(const char *name, const diskval_disk *disk,
                                      const diskval_state *initial, double duration,
                                      double output_dt, diskval_scenario **out, diskval_error *err);
@@ -102,6 +106,9 @@ DISKVAL_API int diskval_scenario_set(diskval_scenario *sc, const char *engine, c
 DISKVAL_API const char *diskval_scenario_name(const diskval_scenario *sc);
 DISKVAL_API double diskval_scenario_duration(const diskval_scenario *sc);
 DISKVAL_API void diskval_scenario_initial(const diskval_scenario *sc, diskval_state *out);
+
+/* the scenario's disk, its moments derived where not given */
+DISKVAL_API void diskval_scenario_disk(const diskval_scenario *sc, diskval_disk *out);
 
 /* free a scenario (NULL-safe) */
 DISKVAL_API void diskval_scenario_free(diskval_scenario *sc);
