@@ -2,6 +2,7 @@
  * engines and scenario layers. Only the diskval_* functions are exported. */
 #include "diskval/diskval.h"
 
+#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,8 +37,8 @@ const char *diskval_version(void) {
 }
 
 /* load a scenario file against every engine's settings table */
-int diskval_scenario_load(const char *path, const char *const *overrides, size_t n,
-                          diskval_scenario **out, diskval_error *err) {
+static int scenario_load(const char *path, const char *const *overrides, size_t n,
+                         diskval_scenario **out, diskval_error *err) {
   if (!path || !out || (n && !overrides))
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_load: NULL argument");
   diskval_scenario *s = calloc(1, sizeof *s);
@@ -52,9 +53,9 @@ int diskval_scenario_load(const char *path, const char *const *overrides, size_t
 }
 
 /* a scenario from code: every key checked and derived as a file's would be */
-int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
-                         double duration, double output_dt, diskval_scenario **out,
-                         diskval_error *err) {
+static int scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
+                        double duration, double output_dt, diskval_scenario **out,
+                        diskval_error *err) {
   if (!disk || !initial || !out)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_new: NULL argument");
   const char *nm = name && name[0] ? name : "scenario";
@@ -164,8 +165,8 @@ static int push(void *ctx, const dv_sample *s) {
 }
 
 /* run engine over sc into a new trajectory */
-int diskval_run(const diskval_scenario *sc, const char *engine, diskval_trajectory **out,
-                diskval_error *err) {
+static int run(const diskval_scenario *sc, const char *engine, diskval_trajectory **out,
+               diskval_error *err) {
   if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_run: NULL argument");
   const dv_engine_type *e = find_engine(engine, err);
   if (!e) return DV_EINPUT;
@@ -232,8 +233,8 @@ int diskval_compare_trajectories(const diskval_trajectory *engine,
 }
 
 /* run engine on sc and judge it against its reference */
-int diskval_compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
-                    diskval_error *err) {
+static int compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
+                   diskval_error *err) {
   if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_compare: NULL argument");
   const dv_engine_type *e[2] = {find_engine(engine, err), NULL};
   if (!e[0]) return DV_EINPUT;
@@ -262,4 +263,40 @@ double diskval_metric(const diskval_metrics *m, const char *name) {
   for (size_t i = 0; i < m->n && i < DISKVAL_MAX_METRICS; i++)
     if (m->name[i] && strcmp(m->name[i], name) == 0) return m->value[i];
   return NAN;
+}
+
+/* the exported entry points that compute: GSL reports its errors as statuses there
+ * (its default handler would abort the caller's process), the caller's handler
+ * is back on return */
+int diskval_scenario_load(const char *path, const char *const *overrides, size_t n,
+                          diskval_scenario **out, diskval_error *err) {
+  gsl_error_handler_t *handler = gsl_set_error_handler_off();
+  const int status = scenario_load(path, overrides, n, out, err);
+  gsl_set_error_handler(handler);
+  return status;
+}
+
+int diskval_scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
+                         double duration, double output_dt, diskval_scenario **out,
+                         diskval_error *err) {
+  gsl_error_handler_t *handler = gsl_set_error_handler_off();
+  const int status = scenario_new(name, disk, initial, duration, output_dt, out, err);
+  gsl_set_error_handler(handler);
+  return status;
+}
+
+int diskval_run(const diskval_scenario *sc, const char *engine, diskval_trajectory **out,
+                diskval_error *err) {
+  gsl_error_handler_t *handler = gsl_set_error_handler_off();
+  const int status = run(sc, engine, out, err);
+  gsl_set_error_handler(handler);
+  return status;
+}
+
+int diskval_compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
+                    diskval_error *err) {
+  gsl_error_handler_t *handler = gsl_set_error_handler_off();
+  const int status = compare(sc, engine, out, err);
+  gsl_set_error_handler(handler);
+  return status;
 }

@@ -14,8 +14,9 @@
 #include "red_hermite.h"
 #include "red_root.h"
 
-/* the reduced state but theta', which is 0 at every maximum */
-static const int reduced[] = {RED_TH, RED_VPH, RED_VPS};
+/* the reduced state; theta' is 0 at both maxima only where they are located
+ * right, which is what shows an error in the period */
+static const int reduced[] = {RED_TH, RED_VTH, RED_VPH, RED_VPS};
 #define NREDUCED (sizeof reduced / sizeof reduced[0])
 
 struct red_period {
@@ -73,9 +74,13 @@ static void stop(red_period *p, const char *fmt, ...) {
 static int push(red_period *p, double t, const double *y) {
   if (p->n == p->cap) {
     const size_t cap = p->cap ? 2 * p->cap : 256;
-    red_node *nodes = cap <= RED_PERIOD_MAX_NODES ? realloc(p->nodes, cap * sizeof *nodes) : NULL;
+    if (cap > RED_PERIOD_MAX_NODES) {
+      stop(p, "no fold: no closed period within %zu step ends (to t = %.9g s)", p->n, t);
+      return -1;
+    }
+    red_node *nodes = realloc(p->nodes, cap * sizeof *nodes);
     if (!nodes) {
-      stop(p, "no fold: no closed period within %g step ends (to t = %.9g s)", (double)p->n, t);
+      stop(p, "no fold: no memory to record the period (at t = %.9g s)", t);
       return -1;
     }
     p->nodes = nodes;
@@ -92,6 +97,15 @@ static int push(red_period *p, double t, const double *y) {
   return 0;
 }
 
+/* the first maximum of theta: the period starts there */
+static void first_maximum(red_period *p, double t, const double *y) {
+  p->maxima = 1;
+  p->t_a = t;
+  memcpy(p->y_a, y, sizeof p->y_a);
+  p->theta_lo = p->theta_hi = y[RED_TH];
+  for (size_t k = 0; k < NREDUCED; k++) p->size[reduced[k]] = fabs(y[reduced[k]]);
+}
+
 int red_period_reset(red_period *p, double t0, const double y0[RED_NSTATE], dv_error *err) {
   p->n = 0;
   p->cached = 0;
@@ -99,6 +113,8 @@ int red_period_reset(red_period *p, double t0, const double y0[RED_NSTATE], dv_e
   p->status = RED_PERIOD_RECORDING;
   snprintf(p->note, sizeof p->note, "no fold: no period within the run");
   if (push(p, t0, y0) && p->n == 0 && !p->nodes) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (p->n && y0[RED_VTH] == 0.0 && p->nodes[0].f[RED_VTH] < 0.0) /* it starts at a maximum */
+    first_maximum(p, t0, y0);
   return DV_OK;
 }
 
@@ -177,9 +193,9 @@ static void close_period(red_period *p) {
   p->dpsi = p->y_b[RED_PS] - p->y_a[RED_PS];
   p->status = RED_PERIOD_CLOSED;
   snprintf(p->note, sizeof p->note,
-           "folded from t = %.9g s: nutation period %.12g s, theta %.6g..%.6g rad, the reduced "
-           "state closes within %.2g tolerances",
-           p->t_a, p->T, p->theta_lo, p->theta_hi, mismatch);
+           "folded from t = %.9g s: nutation period %.12g s, theta from %.9g rad over a range of "
+           "%.3g rad, the reduced state closes within %.2g tolerances",
+           p->t_a, p->T, p->theta_lo, amplitude, mismatch);
 }
 
 int red_period_record(double t, const double *y, void *ctx) {
@@ -200,12 +216,11 @@ int red_period_record(double t, const double *y, void *ctx) {
     stop(p, "no fold: a maximum of theta near t = %.9g s was not located", t);
     return 0;
   }
-  if (p->maxima++ == 0) {
-    p->t_a = tm;
-    p->theta_lo = p->theta_hi = ym[RED_TH];
-    for (size_t k = 0; k < NREDUCED; k++) p->size[reduced[k]] = fabs(ym[reduced[k]]);
+  if (p->maxima == 0) {
+    first_maximum(p, tm, ym);
     return 0;
   }
+  p->maxima = 2;
   p->t_b = tm;
   close_period(p);
   return p->status == RED_PERIOD_CLOSED;
@@ -242,6 +257,7 @@ static void recorded(red_period *p, double t, double *y) {
 }
 
 int red_period_eval(red_period *p, double t, double y[RED_NSTATE]) {
+  if (!red_period_covers(p, t)) return DV_EINPUT;
   if (p->status != RED_PERIOD_CLOSED || t <= p->t_b || t <= p->nodes[p->n - 1].t) {
     recorded(p, t, y);
     return DV_OK;

@@ -17,6 +17,10 @@
  * dpsi = psi_b - psi_a. The recorder takes the step ends of a free-stepping
  * 8th-order integrator (red_integrator_observe) with y' there; between them
  * the state is the integrator's own degree-7 Hermite output (red_hermite).
+ * That output keeps the tolerance only where the integrator's steps are
+ * bounded by the motion's frequency (red_step_gsl.c), which they are while
+ * nothing asks it for dense output: while recording, every output must come
+ * from here (red_period_covers), not from the integrator.
  *
  * It folds only a motion that shows it is periodic: the reduced state at t_b
  * within RED_PERIOD_CLOSURE tolerances of the one at t_a, and a nutation
@@ -58,7 +62,7 @@ red_period_status red_period_state(const red_period *p);
 /* whether red_period_eval answers t */
 int red_period_covers(const red_period *p, double t);
 
-/* the state at t (covered); returns DV_OK */
+/* the state at t; DV_OK, or DV_EINPUT where t is not covered */
 int red_period_eval(red_period *p, double t, double y[RED_NSTATE]);
 
 /* what was found: the period and its closure, or why there is no fold */

@@ -3,8 +3,12 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
+#include <math.h>
 
 int red_brent(gsl_function *fn, double a, double b, double epsabs, double epsrel, double *root) {
+  const double fa = GSL_FN_EVAL(fn, a), fb = GSL_FN_EVAL(fn, b);
+  if (!isfinite(fa) || !isfinite(fb)) return GSL_EBADFUNC;
+  if ((fa < 0.0 && fb < 0.0) || (fa > 0.0 && fb > 0.0)) return GSL_EINVAL; /* not GSL's abort */
   gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
   if (!s) return GSL_ENOMEM;
   int status = gsl_root_fsolver_set(s, fn, a, b);
