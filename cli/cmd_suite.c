@@ -26,7 +26,8 @@ static const char HELP[] =
     "compare does, N at a time in separate processes (default: the number of cores),\n"
     "then write DIR/index.html, DIR/summary.json and the JUnit XML (default\n"
     "DIR/junit.xml). Every scenario file is checked before anything is written.\n"
-    "A scenario still running after S seconds (--timeout, default 600; 0: no limit) is\n"
+    "A scenario (with --verify: a scenario and engine) still running after S seconds\n"
+    "(--timeout, default 600; 0: no limit; none under mpirun) is\n"
     "ended and reported as an error, \"timed out after S s\". One run at a time writes\n"
     "into DIR: a second one is refused.\n"
     "--stability also finds, per scenario and engine, the largest timestep that stays\n"
@@ -115,7 +116,8 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
   if (!code && dv_io_make_dirs(o->out, &err)) code = dv_cli_error("suite", "%s", err.msg);
   const int ran = code ? DV_OK
                        : dv_search_verify_suite(files->items, names, n, sets->items, sets->n,
-                                                engines, ne, o->jobs, cases, &err);
+                                                engines, ne, o->jobs, o->timeout, cases, &err);
+  if (!code && ran < 0) code = dv_cli_error("suite", "%s", err.msg);
   char junit[1100];
   snprintf(junit, sizeof junit, "%s/junit.xml", o->out);
   if (!code && ran == DV_OK &&

@@ -3,6 +3,7 @@
 
 #include <cjson/cJSON.h>
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -51,7 +52,7 @@ static void verify_task(size_t k, void *result, void *ctx) {
 int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
                            const char *const *sets, size_t nsets,
                            const dv_engine_type *const *engines, size_t nengines, int jobs,
-                           dv_verify_case *cases, dv_error *err) {
+                           double timeout, dv_verify_case *cases, dv_error *err) {
   for (size_t k = 0; k < n * nengines; k++) {
     memset(&cases[k], 0, sizeof cases[k]);
     snprintf(cases[k].scenario, sizeof cases[k].scenario, "%s", names[k / nengines]);
@@ -60,12 +61,20 @@ int dv_search_verify_suite(const char *const *paths, const char *const *names, s
     snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
   }
   const suite_job j = {paths, sets, nsets, engines, nengines};
+  unsigned char *done = calloc(n * nengines, 1);
+  if (!done) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  const dv_exec_options opt = {jobs, dv_run_progress_on_result, done, timeout};
   dv_run_progress_tasks_begin("verification", n * nengines);
-  const int pool = dv_exec_pool_run(n * nengines, sizeof *cases, verify_task, (void *)&j, cases,
-                                    jobs, dv_run_progress_on_result);
+  const int pool = dv_exec_pool(n * nengines, sizeof *cases, verify_task, (void *)&j, cases, &opt);
   dv_run_progress_tasks_end();
-  if (pool < 0) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  return pool == 1 ? DV_EVENT : DV_OK; /* DV_EVENT: an MPI worker rank */
+  for (size_t k = 0; k < n * nengines; k++)
+    if (done[k] == DV_EXEC_TIMED_OUT)
+      snprintf(cases[k].message, sizeof cases[k].message, "timed out after %g s", timeout);
+  free(done);
+  if (pool == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (pool == DV_EXEC_INTERRUPTED)
+    return dv_fail(err, DV_ESYSTEM, "interrupted by a signal: nothing written");
+  return pool == DV_EXEC_WORKER ? DV_EVENT : DV_OK; /* DV_EVENT: an MPI worker rank */
 }
 
 /* the one line that says how a case ended */

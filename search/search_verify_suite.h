@@ -25,11 +25,12 @@ typedef struct dv_verify_case {
 } dv_verify_case;
 
 /* verify every (scenario, engine): paths[i] loaded with sets; results in
- * cases[i * nengines + j] (the caller's, n x nengines) */
+ * cases[i * nengines + j] (the caller's, n x nengines); a case still running
+ * after timeout s (<= 0: no limit; none under MPI) is an error, "timed out" */
 int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
                            const char *const *sets, size_t nsets,
                            const dv_engine_type *const *engines, size_t nengines, int jobs,
-                           dv_verify_case *cases, dv_error *err);
+                           double timeout, dv_verify_case *cases, dv_error *err);
 
 /* verify.md and verify.json in dir, and the JUnit XML at junit */
 int dv_search_verify_write(const char *dir, const char *junit, const dv_verify_case *cases,

@@ -3,6 +3,7 @@
 #   - a scenario over --timeout is ended and reported as an error, "timed out
 #     after N s", on stdout, in summary.json, junit.xml and index.html; the
 #     other scenario is still reported, and nothing temporary is left;
+#   - so is a case of --verify (scenario and engine) over --timeout;
 #   - a scenario that errors replaces its earlier (passing) report by its
 #     failure with the real cause, in every output;
 #   - a second run into a directory another run holds (.diskval.lock) is
@@ -53,6 +54,17 @@ check 'grep -q "$why" out/index.html' "timeout: index.html does not say '$why'"
 check '[ ! -e out/slow/reduced.csv ] && grep -q "$why" out/slow/report.json' \
   "timeout: the earlier report of slow is still there"
 check '[ -z "$(find out -name "*.tmp.*" -o -name "*.old.*")" ]' "timeout: temporaries remain"
+
+# --verify under the same limit: the slow case is an error, the fast one converges
+start=$(date +%s)
+"$dv" suite fast.ini slow.ini --verify --engines mujoco --out vout --timeout 5 >stdout 2>stderr
+code=$?
+took=$(($(date +%s) - start))
+check '[ $code -eq 2 ] && [ $took -lt 15 ]' "verify timeout: exit $code after $took s, want 2 within 15 s"
+check 'grep -q "| slow | mujoco |.*error: $why" vout/verify.md' \
+  "verify timeout: verify.md does not say so: $(cat vout/verify.md)"
+check 'grep -q "failure message=\"error: $why\"" vout/junit.xml' "verify timeout: junit.xml lacks '$why'"
+check 'grep -q "| fast | mujoco |.*converges" vout/verify.md' "verify timeout: the fast case did not converge"
 
 # an error inside the run (the reference's step budget) replaces the report
 scenario slow 1
