@@ -7,6 +7,7 @@
 #include "cli_args.h"
 #include "dv_engine.h"
 #include "search_attribute.h"
+#include "run_progress.h"
 
 static const char HELP[] =
     "usage: diskval attribute SCENARIO --engine NAME [--set section.key=value]...\n"
@@ -65,6 +66,7 @@ int dv_cli_attribute(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("attribute", a.quiet, 0);
   int code = DV_EXIT_OK;
   dv_attribution at;
   dv_error err = {{0}};

@@ -6,6 +6,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "search_best.h"
+#include "run_progress.h"
 
 static const char HELP[] =
     "usage: diskval best SCENARIO --engine NAME --theta-tol X [--set section.key=value]...\n"
@@ -62,6 +63,7 @@ int dv_cli_best(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("best", a.quiet, 0);
   int code;
   dv_search *s = calloc(1, sizeof *s);
   dv_error err = {{0}};

@@ -14,6 +14,7 @@
 #include "io_file.h"
 #include "report_plot_cells.h"
 #include "exec_pool.h"
+#include "run_progress.h"
 #include "run_scenario.h"
 #include "report_suite_run.h"
 #include "search_sweep.h"
@@ -35,7 +36,8 @@ static const char HELP[] =
     "else it 'wobbles'. Writes DIR (default: map): map.csv, and map_<engine>.svg: the\n"
     "cells coloured by outcome, the critical spin Omega_c = sqrt(m g r A / (C (C +\n"
     "m r^2))) over them and, in each engine's map, a cross on every cell whose\n"
-    "outcome differs from the reference's.\n";
+    "outcome differs from the reference's.\n"
+    "--quiet: no progress line on a terminal (cells done, time left).\n";
 
 /* |theta - pi/2| below which a cell stays up (rad) */
 #define STAYS_UP_BAND 0.1
@@ -291,7 +293,10 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
   cell *cells = calloc(n, sizeof *cells);
   if (!cells) return dv_cli_error("map", "out of memory");
   for (size_t k = 0; k < n; k++) cells[k].outcome = FAILED;
-  const int pool = dv_exec_pool_run(n, sizeof *cells, cell_task, mp, cells, jobs, NULL);
+  dv_run_progress_tasks_begin("cell", n);
+  const int pool =
+      dv_exec_pool_run(n, sizeof *cells, cell_task, mp, cells, jobs, dv_run_progress_on_result);
+  dv_run_progress_tasks_end();
   if (pool == 1) { /* a worker rank */
     free(cells);
     return DV_EXIT_OK;
@@ -320,6 +325,7 @@ int dv_cli_map(int argc, char **argv) {
   if (parsed != DV_CLI_RUN) return parsed;
   dv_vary c, spin;
   map mp = {.c = &c, .spin = &spin, .duration = duration};
+  dv_run_progress_start("map", a.quiet, 0);
   int code = read_disk(&a, &mp);
   if (!code) code = run_map(&mp, cspec, sspec, engines, out, jobs);
   dv_cli_args_free(&cmd, &a);

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # check_progress_line.sh DISKVAL SCENARIO: the progress line of long runs
 # (README, "Progress line").
-#  - under a pseudo-terminal (script(1)) simulate, compare, verify, suite and
-#    sweep draw it (\r, the engine, "t T/D s", "left"; tasks "scenario k/n"),
+#  - under a pseudo-terminal (script(1)) simulate, compare, verify, suite,
+#    sweep and map draw it (\r, the engine, "t T/D s", "left"; tasks "scenario k/n"),
 #    clear it at the end, and the suite's task processes draw nothing;
 #  - with stderr in a file, or with --quiet, there is no line;
 #  - what the commands write (CSV, JSON, reports, stdout) is byte-identical
@@ -106,6 +106,10 @@ sed 's|sfile|stty|' sfile.out | cmp -s - stty.out || { echo "FAIL: suite stdout 
 same stty/summary.json sfile/summary.json "suite summary.json"
 on_tty squiet.log "'$dv' suite s --out squiet --jobs 2 --quiet > /dev/null"
 no_line squiet.log "suite --quiet on a terminal"
+
+# map: cells counted
+on_tty map.log "'$dv' map --c 0.1,0.2 --spin 20,30 --duration 3 --engines mujoco --out mp --jobs 2 > /dev/null"
+has_line map.log 'cell 4/4  ' "map"
 
 # sweep: points counted
 on_tty sweep.log "'$dv' sweep '$sc' --engine mujoco --vary timestep=1e-3,5e-4 --out sw --jobs 2 > /dev/null"
