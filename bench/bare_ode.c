@@ -13,23 +13,13 @@
 
 #include "dv_engine.h"
 #include "dv_pose.h"
+#include "engine_ode_body.h"
 #include "engine_ode_thin.h"
 #include "red_solver.h"
 #include "run_trajectory.h"
 
 static double setting(const dv_scenario *sc, const char *key) {
   return dv_scenario_get(sc, "ode", key);
-}
-
-static void read_pose(dBodyID body, dv_pose *p) {
-  const dReal *pos = dBodyGetPosition(body), *R = dBodyGetRotation(body);
-  const dReal *v = dBodyGetLinearVel(body), *w = dBodyGetAngularVel(body);
-  for (int i = 0; i < 3; i++) {
-    p->pos[i] = pos[i];
-    p->vel[i] = v[i];
-    p->omega[i] = w[i];
-    for (int j = 0; j < 3; j++) p->R[3 * i + j] = R[4 * i + j];
-  }
 }
 
 int main(int argc, char **argv) {
@@ -74,13 +64,7 @@ int main(int argc, char **argv) {
 
   dv_pose pose;
   dv_pose_from_state(&shape, sc.initial, &pose);
-  dMatrix3 R = {0};
-  for (int i = 0; i < 3; i++)
-    for (int j = 0; j < 3; j++) R[4 * i + j] = pose.R[3 * i + j];
-  dBodySetPosition(body, pose.pos[0], pose.pos[1], pose.pos[2]);
-  dBodySetRotation(body, R);
-  dBodySetLinearVel(body, pose.vel[0], pose.vel[1], pose.vel[2]);
-  dBodySetAngularVel(body, pose.omega[0], pose.omega[1], pose.omega[2]);
+  dv_ode_write_pose(body, &pose);
   double prev[RED_NSTATE];
   memcpy(prev, sc.initial, sizeof prev);
   fputs(DV_CSV_HEADER "\n", fp);
@@ -98,7 +82,7 @@ int main(int argc, char **argv) {
       dJointGroupEmpty(group);
     }
     dv_sample s;
-    read_pose(body, &pose);
+    dv_ode_read_pose(body, &pose);
     dv_sample_from_pose(&sc.disk, &shape, &pose, t, prev, &s);
     memcpy(prev, s.y, sizeof prev);
     dv_run_csv_row(fp, &s);

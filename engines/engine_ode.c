@@ -34,6 +34,7 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "engine_ode_body.h"
 #include "engine_ode_thin.h"
 #include "engine_scene.h"
 #include "engine_shape.h"
@@ -217,18 +218,6 @@ static int ode_failed(ode_engine *e, dv_failure failure, dv_error *err, const ch
   return dv_fail(err, DV_ENUMERIC, "%s: %s", dv_outcome_name(outcome), e->st.detail);
 }
 
-/* the body's pose and velocities (world frame) */
-static void ode_read_pose(const ode_engine *e, dv_pose *p) {
-  const dReal *pos = dBodyGetPosition(e->body), *R = dBodyGetRotation(e->body);
-  const dReal *v = dBodyGetLinearVel(e->body), *w = dBodyGetAngularVel(e->body);
-  for (int i = 0; i < 3; i++) {
-    p->pos[i] = pos[i];
-    p->vel[i] = v[i];
-    p->omega[i] = w[i];
-    for (int j = 0; j < 3; j++) p->R[3 * i + j] = R[4 * i + j];
-  }
-}
-
 /* all 18 pose numbers are finite */
 static int ode_pose_finite(const dv_pose *p) {
   double sum = 0.0;
@@ -250,7 +239,7 @@ static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
   } else {
     e->broken = 1;
     dv_pose p;
-    ode_read_pose(e, &p);
+    dv_ode_read_pose(e->body, &p);
     status = ode_pose_finite(&p)
                  ? ode_failed(e, DV_FAILURE_LIBRARY, err, "ODE error: %s", ode_message)
                  : ode_failed(e, DV_FAILURE_NAN, err, "non-finite state (ODE: %s)", ode_message);
@@ -346,17 +335,11 @@ static int ode_place(ode_engine *e, void *arg, dv_error *err) {
   const double *state = arg;
   dv_pose p;
   dv_pose_from_state(&e->geom, state, &p);
-  dMatrix3 R = {0};
-  for (int i = 0; i < 3; i++)
-    for (int j = 0; j < 3; j++) R[4 * i + j] = p.R[3 * i + j];
   dJointGroupEmpty(e->group);
-  dBodySetPosition(e->body, p.pos[0], p.pos[1], p.pos[2]);
-  dBodySetRotation(e->body, R);
-  dBodySetLinearVel(e->body, p.vel[0], p.vel[1], p.vel[2]);
-  dBodySetAngularVel(e->body, p.omega[0], p.omega[1], p.omega[2]);
+  dv_ode_write_pose(e->body, &p);
   dBodySetForce(e->body, 0.0, 0.0, 0.0);
   dBodySetTorque(e->body, 0.0, 0.0, 0.0);
-  ode_read_pose(e, &p);
+  dv_ode_read_pose(e->body, &p);
   e->e0 = dv_pose_energy(&e->disk, &p);
   e->e_max = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   ode_collide(e, 0);
@@ -385,7 +368,7 @@ static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
 static int ode_check_state(ode_engine *e, dv_error *err) {
   const double dt = e->set.timestep, t = e->k * dt;
   dv_pose p;
-  ode_read_pose(e, &p);
+  dv_ode_read_pose(e->body, &p);
   if (!ode_pose_finite(&p))
     return ode_failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
   const double energy = dv_pose_energy(&e->disk, &p);
@@ -444,7 +427,7 @@ static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
   if (status == DV_OK && e->k > e->k_checked) status = ode_check_state(e, err);
   if (status < 0) return status;
   dv_pose p;
-  ode_read_pose(e, &p);
+  dv_ode_read_pose(e->body, &p);
   dv_sample_from_pose(&e->disk, &e->geom, &p, status == DV_EVENT ? e->k * dt : g->t, e->prev_y,
                       g->out);
   g->out->contacts = e->ncontacts;
