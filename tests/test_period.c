@@ -8,8 +8,9 @@
  *   a 1e-14 run stepped onto every output as the same integrator stepping
  *   to the end, in theta, heading, contact path and energy.
  * - Before the fold, the recorded period is the integrator's own output: the
- *   samples up to the fold (the maximum of theta that closes the period) equal those of the
- * unfolded run bit for bit (fine output, where both take the same steps).
+ *   samples up to the fold (the maximum of theta that closes the period)
+ *   equal those of the unfolded run bit for bit (fine output, where both
+ *   take the same steps).
  * - 40 random disks and starts (fixed seed): the same, case by case.
  * - A steady circle (no nutation) and a fall (an event inside the first
  *   period) are not folded, and the run says why.
