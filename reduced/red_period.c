@@ -281,6 +281,12 @@ int red_period_eval(red_period *p, double t, double y[RED_NSTATE]) {
   return DV_OK;
 }
 
+int red_period_orbit(const red_period *p, double *t_a, double *T, double *dphi, double *dpsi) {
+  if (p->status != RED_PERIOD_CLOSED) return DV_EINPUT;
+  *t_a = p->t_a, *T = p->T, *dphi = p->dphi, *dpsi = p->dpsi;
+  return DV_OK;
+}
+
 const char *red_period_note(const red_period *p) {
   return p->note;
 }

@@ -65,6 +65,11 @@ int red_period_covers(const red_period *p, double t);
 /* the state at t; DV_OK, or DV_EINPUT where t is not covered */
 int red_period_eval(red_period *p, double t, double y[RED_NSTATE]);
 
+/* the period found: it starts at *t_a (s), lasts *T (s), and phi and psi
+ * advance by *dphi, *dpsi over it (rad); DV_OK, or DV_EINPUT before a
+ * period is closed */
+int red_period_orbit(const red_period *p, double *t_a, double *T, double *dphi, double *dpsi);
+
 /* what was found: the period and its closure, or why there is no fold */
 const char *red_period_note(const red_period *p);
 
