@@ -21,13 +21,17 @@ static const char HELP[] =
     "Analyse the initial state of SCENARIO with the reduced equations:\n"
     "energy E and the integrals f1, f2; the upright critical spin; the range of\n"
     "theta (turning points of the effective potential); and, when the initial\n"
-    "state is a steady motion, its rates and linear stability (eigenvalues).\n"
+    "state is a steady motion, its rates and linear stability (eigenvalues); else,\n"
+    "where theta nutates between turning points, the nutation period and what phi\n"
+    "and psi advance over it (quadratures over the effective potential).\n"
     "  --json   one JSON object on stdout instead of text\n";
 
 typedef struct analysis {
   double E, f1, f2, k, crit, range[2];
   int falls, steady, stable;
   double eig[RED_NREDUCED][2];
+  int nutates;        /* a nutation between two turning points */
+  double nutation[3]; /* its period (s), the advances of phi and psi over it (rad) */
 } analysis;
 
 static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
@@ -44,6 +48,9 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   if (status) return status;
   an->steady = red_is_steady(d, y, 1e-9);
   if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
+  an->nutates = !an->falls && an->range[0] < an->range[1];
+  /* 256 points: within 1e-9 of the integrated period (test_period_quadrature) */
+  if (an->nutates) return red_nutation(d, y, an->range, 256, an->nutation, err);
   return DV_OK;
 }
 
@@ -81,6 +88,14 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   } else {
     cJSON_AddNullToObject(o, "steady");
   }
+  if (an->nutates) {
+    cJSON *n = cJSON_AddObjectToObject(o, "nutation");
+    cJSON_AddNumberToObject(n, "period", an->nutation[0]);
+    cJSON_AddNumberToObject(n, "phi_advance", an->nutation[1]);
+    cJSON_AddNumberToObject(n, "psi_advance", an->nutation[2]);
+  } else {
+    cJSON_AddNullToObject(o, "nutation");
+  }
   char *text = cJSON_Print(o);
   cJSON_Delete(o);
   return text;
@@ -97,6 +112,9 @@ static void print_text(const dv_scenario *sc, const analysis *an) {
          an->falls ? "  (reaches the theta limit: the disk lies down)" : "");
   if (!an->steady) {
     printf("steady            no (theta_dot = %g rad/s)\n", y[RED_VTH]);
+    if (an->nutates)
+      printf("nutation          period %.10g s; phi advances %.10g rad, psi %.10g rad a period\n",
+             an->nutation[0], an->nutation[1], an->nutation[2]);
     return;
   }
   printf("steady            phi_dot %.15g, psi_dot %.15g rad/s, contact radius %.12g m\n",

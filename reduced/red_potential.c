@@ -4,6 +4,7 @@
 #include "red_gsl_words.h"
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include "red_root.h"
 #include <math.h>
 
@@ -76,5 +77,43 @@ int red_theta_range(const red_disk *dk, const double y[RED_NSTATE], double theta
                            &range[1], &hi_hit);
   if (status) return dv_fail(err, DV_ENUMERIC, "turning points: %s", red_gsl_words(status));
   *falls = lo_hit || hi_hit;
+  return DV_OK;
+}
+
+typedef struct nutation_ctx {
+  const red_disk *disk;
+  double f1, f2, E, lo, hi;
+  int rate; /* 0: 1 (the period), 1: v_phi, 2: v_psi */
+  int failed;
+} nutation_ctx;
+
+/* 2 / |theta'| times the rate, times dtheta / ds = sqrt((theta - lo)(hi - theta)) */
+static double nutation_integrand(double s, void *p) {
+  nutation_ctx *c = p;
+  const double th = 0.5 * (c->lo + c->hi) - 0.5 * (c->hi - c->lo) * cos(s);
+  const double mr2 = c->disk->m * c->disk->r * c->disk->r;
+  double U, v[2] = {1.0, 1.0};
+  if (red_effective_potential(c->disk, c->f1, c->f2, th, &U) ||
+      (c->rate && red_rates_from_invariants(c->disk, th, c->f1, c->f2, &v[0], &v[1]))) {
+    c->failed = 1;
+    return 0.0;
+  }
+  const double rate = c->rate ? v[c->rate - 1] : 1.0;
+  return 2.0 * rate * sqrt((c->disk->A + mr2) * (th - c->lo) * (c->hi - th) / (2.0 * (c->E - U)));
+}
+
+int red_nutation(const red_disk *dk, const double y[RED_NSTATE], const double range[2], size_t n,
+                 double out[3], dv_error *err) {
+  nutation_ctx c = {dk, 0.0, 0.0, red_energy(dk, y), range[0], range[1], 0, 0};
+  if (!(range[0] < range[1])) return dv_fail(err, DV_EINPUT, "no nutation: theta is steady");
+  if (red_invariants(dk, y, &c.f1, &c.f2))
+    return dv_fail(err, DV_ENUMERIC, "invariants undefined at theta = %g", y[RED_TH]);
+  gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc(n);
+  if (!t) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  gsl_function fn = {nutation_integrand, &c};
+  for (c.rate = 0; c.rate < 3; c.rate++) out[c.rate] = gsl_integration_glfixed(&fn, 0.0, M_PI, t);
+  gsl_integration_glfixed_table_free(t);
+  if (c.failed || !isfinite(out[0] + out[1] + out[2]))
+    return dv_fail(err, DV_ENUMERIC, "the nutation's quadrature failed (special functions)");
   return DV_OK;
 }

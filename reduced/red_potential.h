@@ -24,4 +24,19 @@ int red_effective_potential(const red_disk *disk, double f1, double f2, double t
 int red_theta_range(const red_disk *disk, const double y[RED_NSTATE], double theta_limit,
                     double range[2], int *falls, dv_error *err);
 
+/* the nutation between the turning points range (red_theta_range, not
+ * falling) on the level set of y: its period T (s) and the advances of phi
+ * and psi over it (rad), out = {T, dphi, dpsi}, as quadratures
+ *
+ *   T = 2 int dtheta / |theta'|,  dphi = 2 int v_phi dtheta / |theta'|, ...
+ *   |theta'| = sqrt(2 (E - U(theta)) / (A + m r^2))
+ *
+ * with theta = mid - half cos(s), which removes the inverse square roots at
+ * the ends, by an n-point Gauss-Legendre rule (GSL). Near the turning points
+ * E - U is the difference of two close numbers: the result is good to about
+ * what halving n changes (1e-9 relative for the hypergeometric U, 1e-11 at
+ * C = 0). Returns DV_OK, or < 0 where the special functions fail. */
+int red_nutation(const red_disk *disk, const double y[RED_NSTATE], const double range[2], size_t n,
+                 double out[3], dv_error *err);
+
 #endif
