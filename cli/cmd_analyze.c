@@ -26,12 +26,16 @@ static const char HELP[] =
     "and psi advance over it (quadratures over the effective potential).\n"
     "  --json   one JSON object on stdout instead of text\n";
 
+/* the nutation is shown where halving its quadrature's points moves it less */
+#define NUTATION_RESOLUTION 1e-8
+
 typedef struct analysis {
   double E, f1, f2, k, crit, range[2];
   int falls, steady, stable;
   double eig[RED_NREDUCED][2];
-  int nutates;        /* a nutation between two turning points */
-  double nutation[3]; /* its period (s), the advances of phi and psi over it (rad) */
+  int nutates;            /* a nutation between two turning points, resolved */
+  double nutation[3];     /* its period (s), the advances of phi and psi over it (rad) */
+  char nutation_why[160]; /* why a nutation's numbers are not shown, or "" */
 } analysis;
 
 static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
@@ -48,9 +52,19 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   if (status) return status;
   an->steady = red_is_steady(d, y, 1e-9);
   if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
-  an->nutates = !an->falls && an->range[0] < an->range[1];
-  /* 256 points: within 1e-9 of the integrated period (test_period_quadrature) */
-  if (an->nutates) return red_nutation(d, y, an->range, 256, an->nutation, err);
+  if (an->falls || !(an->range[0] < an->range[1])) return DV_OK;
+  /* 256 points: within 1e-9 of the integrated period (test_period_quadrature);
+   * a nutation too small for E - U to stand above rounding is said, not failed */
+  dv_error why = {{0}};
+  double resolution = NAN;
+  an->nutates = red_nutation(d, y, an->range, an->nutation, &resolution, &why) == DV_OK &&
+                resolution <= NUTATION_RESOLUTION;
+  if (!an->nutates && !why.msg[0])
+    snprintf(why.msg, sizeof why.msg, "the quadrature moves by %.2g with half its points",
+             resolution);
+  if (!an->nutates)
+    snprintf(an->nutation_why, sizeof an->nutation_why, "not resolved over %.3g rad: %.100s",
+             an->range[1] - an->range[0], why.msg);
   return DV_OK;
 }
 
@@ -96,6 +110,7 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   } else {
     cJSON_AddNullToObject(o, "nutation");
   }
+  if (an->nutation_why[0]) cJSON_AddStringToObject(o, "nutation_note", an->nutation_why);
   char *text = cJSON_Print(o);
   cJSON_Delete(o);
   return text;
@@ -115,6 +130,8 @@ static void print_text(const dv_scenario *sc, const analysis *an) {
     if (an->nutates)
       printf("nutation          period %.10g s; phi advances %.10g rad, psi %.10g rad a period\n",
              an->nutation[0], an->nutation[1], an->nutation[2]);
+    else if (an->nutation_why[0])
+      printf("nutation          %s\n", an->nutation_why);
     return;
   }
   printf("steady            phi_dot %.15g, psi_dot %.15g rad/s, contact radius %.12g m\n",

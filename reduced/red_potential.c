@@ -99,21 +99,36 @@ static double nutation_integrand(double s, void *p) {
     return 0.0;
   }
   const double rate = c->rate ? v[c->rate - 1] : 1.0;
+  if (!(c->E - U > 0.0)) c->failed = 1; /* rounding has crossed the turning point */
   return 2.0 * rate * sqrt((c->disk->A + mr2) * (th - c->lo) * (c->hi - th) / (2.0 * (c->E - U)));
 }
 
-int red_nutation(const red_disk *dk, const double y[RED_NSTATE], const double range[2], size_t n,
-                 double out[3], dv_error *err) {
+/* the three quadratures with an n-point rule */
+static int nutation_rule(nutation_ctx *c, size_t n, double out[3]) {
+  gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc(n);
+  if (!t) return DV_ESYSTEM;
+  gsl_function fn = {nutation_integrand, c};
+  for (c->rate = 0; c->rate < 3; c->rate++)
+    out[c->rate] = gsl_integration_glfixed(&fn, 0.0, M_PI, t);
+  gsl_integration_glfixed_table_free(t);
+  return DV_OK;
+}
+
+int red_nutation(const red_disk *dk, const double y[RED_NSTATE], const double range[2],
+                 double out[3], double *resolution, dv_error *err) {
   nutation_ctx c = {dk, 0.0, 0.0, red_energy(dk, y), range[0], range[1], 0, 0};
+  double half[3];
   if (!(range[0] < range[1])) return dv_fail(err, DV_EINPUT, "no nutation: theta is steady");
   if (red_invariants(dk, y, &c.f1, &c.f2))
     return dv_fail(err, DV_ENUMERIC, "invariants undefined at theta = %g", y[RED_TH]);
-  gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc(n);
-  if (!t) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  gsl_function fn = {nutation_integrand, &c};
-  for (c.rate = 0; c.rate < 3; c.rate++) out[c.rate] = gsl_integration_glfixed(&fn, 0.0, M_PI, t);
-  gsl_integration_glfixed_table_free(t);
-  if (c.failed || !isfinite(out[0] + out[1] + out[2]))
-    return dv_fail(err, DV_ENUMERIC, "the nutation's quadrature failed (special functions)");
+  if (nutation_rule(&c, 256, out) || nutation_rule(&c, 128, half))
+    return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (c.failed || !isfinite(out[0] + out[1] + out[2] + half[0] + half[1] + half[2]))
+    return dv_fail(
+        err, DV_ENUMERIC,
+        "E - U(theta) is within the special functions' rounding near the turning points");
+  *resolution = fabs(half[0] / out[0] - 1.0);
+  for (int k = 1; k < 3; k++)
+    *resolution = fmax(*resolution, fabs(half[k] - out[k]) / fmax(1.0, fabs(out[k])));
   return DV_OK;
 }

@@ -32,11 +32,13 @@ int red_theta_range(const red_disk *disk, const double y[RED_NSTATE], double the
  *   |theta'| = sqrt(2 (E - U(theta)) / (A + m r^2))
  *
  * with theta = mid - half cos(s), which removes the inverse square roots at
- * the ends, by an n-point Gauss-Legendre rule (GSL). Near the turning points
- * E - U is the difference of two close numbers: the result is good to about
- * what halving n changes (1e-9 relative for the hypergeometric U, 1e-11 at
- * C = 0). Returns DV_OK, or < 0 where the special functions fail. */
-int red_nutation(const red_disk *disk, const double y[RED_NSTATE], const double range[2], size_t n,
-                 double out[3], dv_error *err);
+ * the ends, by a 256-point Gauss-Legendre rule (GSL). Near the turning points
+ * E - U is the difference of two close numbers, so *resolution says how far
+ * 128 points move the results (relative to T, and to 1 rad for the
+ * advances): about 1e-9 for the hypergeometric U, 1e-11 at C = 0. Returns
+ * DV_OK, or < 0 where the special functions fail or E - U falls to rounding
+ * (a nutation too small to resolve). */
+int red_nutation(const red_disk *disk, const double y[RED_NSTATE], const double range[2],
+                 double out[3], double *resolution, dv_error *err);
 
 #endif
