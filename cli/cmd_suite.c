@@ -118,23 +118,29 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
                        : dv_search_verify_suite(files->items, names, n, sets->items, sets->n,
                                                 engines, ne, o->jobs, o->timeout, cases, &err);
   if (!code && ran < 0) code = dv_cli_error("suite", "%s", err.msg);
+  const int written = !code && (ran == DV_OK || ran == DV_VERIFY_SUITE_INTERRUPTED);
   char junit[1100];
   snprintf(junit, sizeof junit, "%s/junit.xml", o->out);
-  if (!code && ran == DV_OK &&
-      dv_search_verify_write(o->out, o->junit ? o->junit : junit, cases, n * ne, &err))
+  if (written && dv_search_verify_write(o->out, o->junit ? o->junit : junit, cases, n * ne, &err))
     code = dv_cli_error("suite", "%s", err.msg);
-  size_t converge = 0, skipped = 0;
-  for (size_t k = 0; !code && ran == DV_OK && k < n * ne; k++) {
-    if (cases[k].status < 0) code = DV_EXIT_ERROR;
+  size_t converge = 0, skipped = 0, errors = 0;
+  for (size_t k = 0; !code && written && k < n * ne; k++) {
+    if (cases[k].status < 0 && ++errors)
+      printf("%s: %s: error: %s\n", cases[k].scenario, cases[k].engine, cases[k].message);
     skipped += cases[k].status == DV_EVENT;
     converge += cases[k].status == 0 && cases[k].v.verdict == DV_CONVERGES;
   }
+  if (!code && errors) code = DV_EXIT_ERROR;
   if (!code && converge + skipped < n * ne) code = DV_EXIT_FAIL;
-  if (ran == DV_OK && (code == DV_EXIT_OK || code == DV_EXIT_FAIL || converge))
+  if (written && (code == DV_EXIT_OK || code == DV_EXIT_FAIL || converge))
     printf(
         "%zu of %zu engine runs converge to the reference (%zu skipped: the scenario names "
         "other engines); report: %s/verify.md\n",
         converge, n * ne - skipped, skipped, o->out);
+  if (written && ran == DV_VERIFY_SUITE_INTERRUPTED) {
+    dv_cli_error("suite", "interrupted: the cases that ended are in %s/verify.md", o->out);
+    code = 130; /* 128 + SIGINT, as shells report it, and as a compare suite exits */
+  }
   free(names);
   free(cases);
   return code;

@@ -37,7 +37,9 @@ int red_theta_range(const red_disk *disk, const double y[RED_NSTATE], double the
  * 128 points move the results (relative to T, and to 1 rad for the
  * advances): about 1e-9 for the hypergeometric U, 1e-11 at C = 0. Returns
  * DV_OK, or < 0 where the special functions fail or E - U falls to rounding
- * (a nutation too small to resolve). */
+ * (a nutation too small to resolve). Near a separatrix E - U also nearly
+ * vanishes inside the range, which the fixed rule does not resolve either:
+ * *resolution then says so. */
 int red_nutation(const red_disk *disk, const double y[RED_NSTATE], const double range[2],
                  double out[3], double *resolution, dv_error *err);
 

@@ -59,6 +59,8 @@ int dv_search_verify_suite(const char *const *paths, const char *const *names, s
     snprintf(cases[k].engine, sizeof cases[k].engine, "%s", engines[k % nengines]->name);
     cases[k].status = DV_ESYSTEM; /* until its task reports */
     snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
+    for (int i = 0; i < DV_VERIFY_LEVELS; i++) cases[k].v.step[i] = cases[k].v.error[i] = NAN;
+    cases[k].v.order = cases[k].v.extrapolated = NAN;
   }
   const suite_job j = {paths, sets, nsets, engines, nengines};
   unsigned char *done = calloc(n * nengines, 1);
@@ -67,14 +69,18 @@ int dv_search_verify_suite(const char *const *paths, const char *const *names, s
   dv_run_progress_tasks_begin("verification", n * nengines);
   const int pool = dv_exec_pool(n * nengines, sizeof *cases, verify_task, (void *)&j, cases, &opt);
   dv_run_progress_tasks_end();
-  for (size_t k = 0; k < n * nengines; k++)
-    if (done[k] == DV_EXEC_TIMED_OUT)
+  for (size_t k = 0; k < n * nengines; k++) {
+    if (done[k] == DV_EXEC_TIMED_OUT) {
       snprintf(cases[k].message, sizeof cases[k].message, "timed out after %g s", timeout);
+      cases[k].wall_s = timeout;
+    } else if (done[k] != DV_EXEC_ARRIVED && pool == DV_EXEC_INTERRUPTED) {
+      snprintf(cases[k].message, sizeof cases[k].message, "not run: interrupted");
+    }
+  }
   free(done);
   if (pool == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  if (pool == DV_EXEC_INTERRUPTED)
-    return dv_fail(err, DV_ESYSTEM, "interrupted by a signal: nothing written");
-  return pool == DV_EXEC_WORKER ? DV_EVENT : DV_OK; /* DV_EVENT: an MPI worker rank */
+  if (pool == DV_EXEC_INTERRUPTED) return DV_VERIFY_SUITE_INTERRUPTED;
+  return pool == DV_EXEC_WORKER ? DV_VERIFY_SUITE_WORKER : DV_OK;
 }
 
 /* the one line that says how a case ended */

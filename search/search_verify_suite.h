@@ -24,9 +24,16 @@ typedef struct dv_verify_case {
   dv_verification v;
 } dv_verify_case;
 
+/* what dv_search_verify_suite returns besides DV_OK and errors */
+enum {
+  DV_VERIFY_SUITE_WORKER = 1,     /* an MPI worker rank: rank 0 has the cases */
+  DV_VERIFY_SUITE_INTERRUPTED = 2 /* SIGINT or SIGTERM: the cases that ended are filled in */
+};
+
 /* verify every (scenario, engine): paths[i] loaded with sets; results in
  * cases[i * nengines + j] (the caller's, n x nengines); a case still running
- * after timeout s (<= 0: no limit; none under MPI) is an error, "timed out" */
+ * after timeout s (<= 0: no limit; none under MPI) is an error, "timed out",
+ * and a case with no result has NaN errors */
 int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
                            const char *const *sets, size_t nsets,
                            const dv_engine_type *const *engines, size_t nengines, int jobs,

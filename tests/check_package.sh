@@ -37,7 +37,7 @@ fi
 lib=$(compgen -G "$prefix/lib*/libdiskval.so" | head -1)
 [ -n "$lib" ] || fail "not installed: libdiskval.so"
 soname=$(readelf -d "$lib" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
-[ "$soname" = libdiskval.so.0 ] || fail "soname '$soname', expected libdiskval.so.0"
+[[ $soname =~ ^libdiskval\.so\.0\.[0-9]+$ ]] || fail "soname '$soname', expected libdiskval.so.0.MINOR"
 echo "installed: $prefix (soname $soname)"
 
 # only the public API is exported
@@ -88,7 +88,7 @@ for p in libgsl27 libsundials-cvode libode8 libmujoco2.2.2; do
   grep -q "$p" <<<"$depends" || fail ".deb does not depend on $p: $depends"
 done
 contents=$(dpkg-deb -c "$deb")
-for f in ./usr/bin/diskval ./usr/lib/.*libdiskval.so.0 ./usr/include/diskval/diskval.h \
+for f in ./usr/bin/diskval ./usr/lib/.*libdiskval.so.0.[0-9]* ./usr/include/diskval/diskval.h \
   ./usr/share/diskval/scenarios/steady_circle.ini ./usr/lib/.*cmake/diskval/diskvalConfig.cmake \
   ./usr/lib/.*pkgconfig/diskval.pc; do
   grep -q " $f" <<<"$contents" || fail ".deb holds no $f"

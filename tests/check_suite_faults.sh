@@ -61,8 +61,9 @@ start=$(date +%s)
 code=$?
 took=$(($(date +%s) - start))
 check '[ $code -eq 2 ] && [ $took -lt 15 ]' "verify timeout: exit $code after $took s, want 2 within 15 s"
-check 'grep -q "| slow | mujoco |.*error: $why" vout/verify.md' \
-  "verify timeout: verify.md does not say so: $(cat vout/verify.md)"
+check 'grep -q "| slow | mujoco | nan, nan, nan, nan | error: $why" vout/verify.md' \
+  "verify timeout: verify.md does not say so (or shows errors it never measured): $(cat vout/verify.md)"
+check 'grep -q "^slow: mujoco: error: $why$" stdout' "verify timeout: stdout does not say so: $(cat stdout)"
 check 'grep -q "failure message=\"error: $why\"" vout/junit.xml' "verify timeout: junit.xml lacks '$why'"
 check 'grep -q "| fast | mujoco |.*converges" vout/verify.md' "verify timeout: the fast case did not converge"
 

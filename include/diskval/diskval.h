@@ -8,6 +8,9 @@
  * -2 numerical failure, -3 I/O or memory); on error err->msg says why (err
  * may be NULL). Objects are owned by the caller and freed with their _free
  * function (NULL-safe); out-parameters are written only on success.
+ * One thread at a time: the engines' and GSL's error handlers are process-wide
+ * (the computing calls switch GSL's aborting handler off while they run and
+ * put the caller's back); run in parallel in processes, as diskval suite does.
  */
 #ifndef DISKVAL_H
 #define DISKVAL_H
