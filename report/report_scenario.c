@@ -224,8 +224,8 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
 }
 
 #define PORTRAIT_POINTS 400
-#define LEVEL_COLOUR 8 /* grey: the energy level, apart from the black reference and the engines \
-                        */
+/* grey: the energy level, apart from the black reference and the engines */
+#define LEVEL_COLOUR 8
 
 /* theta and p_theta = (A + m r^2) theta' of a trajectory, for the phase plane */
 static void phase_coordinates(const red_disk *dk, const dv_traj *tr, double *th, double *p) {
