@@ -7,6 +7,7 @@
 #     directories of its own left, another live process's kept.
 # The file systems are tmpfs mounts: skipped (77) where mounting is not allowed.
 set -u
+. "$(dirname "$0")/check_lib.sh"
 diskval=$1
 scenarios=$2
 work=$(mktemp -d)
@@ -19,8 +20,6 @@ if ! mount -t tmpfs -o ro,size=64k tmpfs "$ro" 2>/dev/null ||
   echo "SKIP: cannot mount a tmpfs here"
   exit 77
 fi
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 
 # read-only
 "$diskval" suite "$scenarios/falling.ini" --out "$ro/report" 2>"$work/err"; code=$?

@@ -9,14 +9,13 @@
 #     in one line, exit 2; output on stdout that cannot be written (/dev/full)
 #     is exit 2 with one line saying so.
 set -u
+. "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
 dv=${1:?usage: check_output_faults.sh DISKVAL SCENARIO_DIR}
 sc=${2:?usage: check_output_faults.sh DISKVAL SCENARIO_DIR}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 set -m # background runs get SIGINT like a foreground one (no job control: ignored)
 
 # the 60 s scene in MuJoCo takes 20 s: still running when the signal comes

@@ -14,14 +14,13 @@
 # at 1 s take 0.7 s together; slow.ini at 60 s takes over 20 s (MuJoCo alone:
 # 20 s), so a 5 s limit is 7x the fast run and a quarter of the slow one.
 set -u
+. "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
 dv=${1:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
 sc=${2:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 # scenario NAME DURATION: a copy of the 60 s long_horizon scene as NAME.ini
 scenario() {
   sed -e "s/^name = .*/name = $1/" -e "s/^duration = .*/duration = $2/" \
