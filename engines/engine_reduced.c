@@ -76,7 +76,6 @@ static int from_period(reduced_engine *e, double t, double *y, dv_error *err) {
     if (status) return status;
   }
   if (!red_period_covers(e->period, t)) return 1; /* an event, or no fold */
-  e->event = -1;
   return red_period_eval(e->period, t, y);
 }
 

@@ -258,7 +258,8 @@ static void recorded(red_period *p, double t, double *y) {
 
 int red_period_eval(red_period *p, double t, double y[RED_NSTATE]) {
   if (!red_period_covers(p, t)) return DV_EINPUT;
-  if (p->status != RED_PERIOD_CLOSED || t <= p->t_b || t <= p->nodes[p->n - 1].t) {
+  if (p->status != RED_PERIOD_CLOSED ||
+      t <= p->nodes[p->n - 1].t) { /* recorded up to t_b and past */
     recorded(p, t, y);
     return DV_OK;
   }
