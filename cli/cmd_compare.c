@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "io_lock.h"
+#include "report_suite_dir.h"
 #include "report_suite_run.h"
 #include "run_progress.h"
 #include "run_scenario.h"
@@ -40,7 +41,8 @@ int dv_cli_compare(int argc, char **argv) {
     code = dv_cli_error("compare", "%s", err.msg);
   else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
-  else if (dv_io_make_dirs(out, &err) || dv_io_lock_dir(out, &lock, &err))
+  else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
+           dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
     code = dv_cli_error("compare", "%s", err.msg);
   else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &explain, &err)) == DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.name, err.msg);

@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "io_file.h"
+#include "io_owned.h"
 #include "report_plot_cells.h"
 #include "exec_pool.h"
 #include "run_progress.h"
@@ -287,7 +288,7 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
     return dv_cli_error("map", "%s", err.msg);
   if (!engines) default_engines(mp);
   while (mp->engines[mp->nengines]) mp->nengines++;
-  if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err)) /* a bad --out fails at once */
+  if (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err)) /* a bad --out fails at once */
     return dv_cli_error("map", "%s", err.msg);
   const size_t n = mp->nengines * mp->c->n * mp->spin->n;
   cell *cells = calloc(n, sizeof *cells);

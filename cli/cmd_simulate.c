@@ -7,6 +7,7 @@
 #include "dv_engine.h"
 #include "run_meta.h"
 #include "io_file.h"
+#include "io_lock.h"
 #include "run_progress.h"
 #include "run_trajectory.h"
 
@@ -36,15 +37,20 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
   if (!engine) return dv_cli_unknown_engine("simulate", engine_name);
   char meta_path[1100];
   snprintf(meta_path, sizeof meta_path, "%s.json", out_path);
-  const int to_stdout = !strcmp(out_path, "-"),
-            forces_to_stdout = forces_path && !strcmp(forces_path, "-");
-  if (forces_path &&
-      (to_stdout ? forces_to_stdout : !forces_to_stdout && dv_io_same_file(forces_path, out_path)))
-    return dv_cli_usage_error("simulate", "--out '%s' and --forces '%s' name the same file",
-                              out_path, forces_path);
-  if (forces_path && !to_stdout && !forces_to_stdout && dv_io_same_file(forces_path, meta_path))
-    return dv_cli_usage_error("simulate", "--forces '%s' is the file --out writes beside '%s'",
-                              forces_path, out_path);
+  const char *const outputs[] = {out_path, forces_path, meta_path};
+  const char *const what[] = {"--out", "--forces", "the metadata --out writes beside it"};
+  const size_t nout = strcmp(out_path, "-") ? 3 : 2;
+  for (size_t i = 0; i < nout; i++) /* no output over the input, or over another output */
+    if (outputs[i] && strcmp(outputs[i], "-")) {
+      if (dv_io_same_file(outputs[i], scenario))
+        return dv_cli_usage_error("simulate", "%s '%s' is the scenario file", what[i], outputs[i]);
+      for (size_t k = 0; k < i; k++)
+        if (outputs[k] && strcmp(outputs[k], "-") && dv_io_same_file(outputs[i], outputs[k]))
+          return dv_cli_usage_error("simulate", "%s '%s' and %s '%s' name the same file", what[k],
+                                    outputs[k], what[i], outputs[i]);
+    }
+  if (forces_path && !strcmp(forces_path, "-") && !strcmp(out_path, "-"))
+    return dv_cli_usage_error("simulate", "--out and --forces both write to stdout");
   dv_scenario sc;
   dv_error err = {{0}};
   if (dv_engine_load_scenario(scenario, sets->items, sets->n, &sc, &err)) {
@@ -66,18 +72,17 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
             dv_outcome_name(stats.outcome), err.msg);
     return DV_EXIT_ERROR;
   }
-  if (dv_io_commit(&out, &err) || (forces_path && dv_io_commit(&forces, &err))) {
-    dv_io_abort(&forces);
+  /* the CSV and its metadata go into place together: another run writing the
+   * same names waits, so the pair is always one run's */
+  const int held = dv_io_hold_dir_of(out.path[0] ? out.path : ".");
+  int bad = dv_io_commit(&out, &err) || (forces_path && dv_io_commit(&forces, &err));
+  dv_io_abort(&forces);
+  if (!bad && strcmp(out_path, "-") != 0 && !out.direct) /* metadata beside a regular file */
+    bad = dv_run_meta_write(meta_path, engine, &sc, &stats, &err);
+  dv_io_release_dir(held);
+  if (bad) {
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
-  }
-  if (strcmp(out_path, "-") != 0 && !out.direct) { /* metadata beside a regular file */
-    char meta[1100];
-    snprintf(meta, sizeof meta, "%s.json", out_path);
-    if (dv_run_meta_write(meta, engine, &sc, &stats, &err)) {
-      fprintf(stderr, "diskval simulate: %s\n", err.msg);
-      return DV_EXIT_ERROR;
-    }
   }
   if (status == DV_EVENT)
     fprintf(stderr, "diskval simulate: %s: %s: the run ended early: %s\n", sc.name, engine->name,

@@ -11,6 +11,8 @@
 #include "cli_args.h"
 #include "exec_mpi.h"
 #include "io_lock.h"
+#include "io_owned.h"
+#include "report_suite_dir.h"
 #include "report_suite.h"
 #include "report_suite_run.h"
 #include "run_progress.h"
@@ -97,6 +99,47 @@ static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenar
       if (!strcmp(scs[k].name, scs[i].name))
         return dv_cli_error("suite", "%s and %s both name their scenario '%s'", scs[k].path,
                             scs[i].path, scs[k].name);
+  }
+  return DV_EXIT_OK;
+}
+
+/* the files the suite writes into --out, besides the scenarios' directories */
+static const char *const suite_files[] = {"index.html", "summary.json",   "junit.xml",
+                                          "verify.md",  "verify.json",    "stability.html",
+                                          "stability.md", "stability.json", NULL};
+
+/* before anything runs: --out may take the suite's files and directories
+ * (io_owned.h), and the JUnit file is none of the run's inputs or other outputs */
+static int check_outputs(const suite_opts *o, const dv_cli_list *files, const dv_scenario *scs,
+                         dv_error *err) {
+  const char *const *inputs = (const char *const *)files->items;
+  if (dv_report_dir_check(o->out, scs, files->n, NULL, 0, err)) return DV_EXIT_ERROR;
+  for (const char *const *f = suite_files; *f; f++) {
+    char path[1100];
+    if (dv_io_path(path, sizeof path, err, "%s/%s", o->out, *f)) return DV_EXIT_ERROR;
+    for (size_t i = 0; i < files->n; i++)
+      if (dv_io_same_file(inputs[i], path))
+        return dv_fail(err, DV_EINPUT, "%s: an input of this run is the suite's own %s", inputs[i],
+                       *f),
+               DV_EXIT_ERROR;
+    if (o->junit && strcmp(o->junit, "-") && strcmp(*f, "junit.xml") &&
+        dv_io_same_file(o->junit, path))
+      return dv_fail(err, DV_EINPUT, "--junit '%s' is the suite's own %s", o->junit, path),
+             DV_EXIT_ERROR;
+  }
+  if (!o->junit || !strcmp(o->junit, "-")) return DV_EXIT_OK;
+  for (size_t i = 0; i < files->n; i++)
+    if (dv_io_same_file(o->junit, inputs[i]))
+      return dv_fail(err, DV_EINPUT, "--junit '%s' is an input of this run (%s)", o->junit,
+                     inputs[i]),
+             DV_EXIT_ERROR;
+  for (size_t i = 0; i < files->n; i++) {
+    char dir[1100];
+    if (dv_io_path(dir, sizeof dir, err, "%s/%s", o->out, scs[i].name)) return DV_EXIT_ERROR;
+    if (dv_io_within(o->junit, dir) || dv_io_same_file(o->junit, dir))
+      return dv_fail(err, DV_EINPUT, "--junit '%s' lies inside %s, which this run replaces",
+                     o->junit, dir),
+             DV_EXIT_ERROR;
   }
   return DV_EXIT_OK;
 }
@@ -199,6 +242,8 @@ int dv_cli_suite(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  if (o.junit && !o.junit[0]) return dv_cli_usage_error("suite", "--junit needs a file name");
+  if (!o.out[0]) return dv_cli_usage_error("suite", "--out needs a directory");
   dv_run_progress_start("suite", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_cli_list files = {0};
@@ -215,10 +260,12 @@ int dv_cli_suite(int argc, char **argv) {
        !(causes = calloc(files.n, sizeof *causes))))
     code = dv_cli_error("suite", "out of memory");
   if (!code) code = load_all(&files, &a.sets, scs);
+  if (!code && check_outputs(&o, &files, scs, &err)) code = dv_cli_error("suite", "%s", err.msg);
   /* one run at a time in --out: it removes what dead runs left there (under
-   * mpirun, rank 0 holds the lock for all the ranks) */
-  if (!code && (dv_io_make_dirs(o.out, &err) ||
-                (dv_exec_mpi_rank() == 0 && dv_io_lock_dir(o.out, &lock, &err))))
+   * mpirun, rank 0 holds the lock for all the ranks); checked again once held */
+  if (!code && (dv_io_own_dir(o.out, &err) ||
+                (dv_exec_mpi_rank() == 0 && dv_io_lock_dir(o.out, &lock, &err)) ||
+                check_outputs(&o, &files, scs, &err)))
     code = dv_cli_error("suite", "%s", err.msg);
   if (!code && o.verify)
     code = verify(&o, &files, &a.sets, engines, scs);

@@ -8,6 +8,7 @@
 #include "cli_args.h"
 #include "exec_mpi.h"
 #include "io_file.h"
+#include "io_owned.h"
 #include "report_suite_run.h"
 #include "run_progress.h"
 #include "search_sweep.h"
@@ -114,7 +115,7 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
         check_values(scenario, sets, &vary[v], &err))
       return dv_cli_error("sweep", "%s", err.msg);
   /* the output directory before any run: a bad --out fails at once */
-  if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err))
+  if (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   if (dv_exec_mpi_size() > 1) s->checkpoint_dir = out; /* rank 0 keeps the tables current */
   if (dv_search_sweep_run(scenario, sets->items, sets->n, engine->name, vary, specs->n, jobs, s,

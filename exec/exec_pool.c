@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -37,7 +38,9 @@ static void on_stop(int sig) {
 }
 
 /* in task k's new process: default signals, the task, its result in its slot */
-static void run_child(const pool *p, size_t k) {
+static void run_child(const pool *p, size_t k, pid_t parent) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL); /* a task outlives no parent, not even a SIGKILLed one */
+  if (getppid() != parent) _exit(1);
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
   sigprocmask(SIG_SETMASK, &p->caller_mask, NULL); /* a pending stop ends it here */
@@ -121,8 +124,8 @@ static int run_forked(pool *p) {
     reap(p);
     while (!stop && p->running < jobs && next < p->n) {
       fflush(NULL); /* nothing buffered (by on_result too) is written twice */
-      const pid_t pid = fork();
-      if (pid == 0) run_child(p, next);
+      const pid_t self = getpid(), pid = fork();
+      if (pid == 0) run_child(p, next, self);
       if (pid < 0 && p->running > 0) break; /* again once one has ended */
       if (pid < 0) {
         finish(p, next, 0); /* no process at all: the task is not run */

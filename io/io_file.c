@@ -22,14 +22,6 @@ int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...) {
   return dv_fail(err, DV_EINPUT, "path too long: %.200s...", buf);
 }
 
-/* the temporaries of path that runs killed while writing it left behind */
-static void remove_stale_of(const char *path) {
-  char dir[1024], base[1024], prefix[1040];
-  snprintf(dir, sizeof dir, "%s", path);
-  snprintf(base, sizeof base, "%s", path);
-  snprintf(prefix, sizeof prefix, "%s.tmp.", basename(base));
-  dv_io_temp_remove_stale(dirname(dir), prefix);
-}
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   memset(out, 0, sizeof *out);
@@ -49,8 +41,11 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
     return DV_OK;
   }
   snprintf(out->path, sizeof out->path, "%s", path);
-  remove_stale_of(path);
-  if (dv_io_temp_template(out->tmp_path, sizeof out->tmp_path, path, err)) return DV_EINPUT;
+  char dir[sizeof out->path];
+  snprintf(dir, sizeof dir, "%s", path);
+  const char *where = dirname(dir);
+  dv_io_temp_remove_stale(where); /* what runs killed while writing here left */
+  if (dv_io_temp_template(out->tmp_path, sizeof out->tmp_path, where, err)) return DV_EINPUT;
   int fd = mkstemp(out->tmp_path);
   if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
   dv_io_temp_track(out->tmp_path);
@@ -131,9 +126,7 @@ int dv_io_make_dirs(const char *path, dv_error *err) {
   return DV_OK;
 }
 
-/* path with its directory resolved (symbolic links, ".", ".."): the file
- * itself need not exist; 0, or -1 when the directory cannot be resolved */
-static int canonical(const char *path, char *out, size_t size) {
+int dv_io_canonical(const char *path, char *out, size_t size) {
   char dir[4096], base[4096], real[PATH_MAX];
   if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir) return -1;
   snprintf(base, sizeof base, "%s", path);
@@ -147,6 +140,6 @@ int dv_io_same_file(const char *a, const char *b) {
   if (stat(a, &sa) == 0 && stat(b, &sb) == 0) /* a device (/dev/null) may take both */
     return S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
   char ca[PATH_MAX + 256], cb[PATH_MAX + 256];
-  if (canonical(a, ca, sizeof ca) || canonical(b, cb, sizeof cb)) return !strcmp(a, b);
+  if (dv_io_canonical(a, ca, sizeof ca) || dv_io_canonical(b, cb, sizeof cb)) return !strcmp(a, b);
   return !strcmp(ca, cb);
 }

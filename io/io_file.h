@@ -3,7 +3,7 @@
  * Output goes to a temporary file beside the target and is renamed over it
  * on commit; abort (or a failed write), SIGINT, SIGTERM or SIGHUP (with
  * dv_io_temp_clean_on_signals) remove it, and opening a path removes the
- * temporaries of that path left by dead runs (io_temp.h). "-" means stdout; an
+ * temporaries dead runs left in its directory (io_temp.h). "-" means stdout; an
  * existing device or pipe (/dev/null) is written in place, never replaced.
  * A path that does not fit its buffer is an error, never cut short.
  */
@@ -18,7 +18,7 @@
 typedef struct dv_io_file {
   FILE *fp;
   char path[1024];     /* final name, "" for stdout */
-  char tmp_path[1060]; /* temporary name while writing: PATH.tmp.PID.XXXXXX (io_temp.h) */
+  char tmp_path[1060]; /* temporary name while writing: DIR/.diskval-tmp.PID.XXXXXX (io_temp.h) */
   int direct;          /* a device or pipe: written in place */
 } dv_io_file;
 
@@ -36,6 +36,10 @@ int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...)
 /* a and b name the same file: the same regular file when both exist, else
  * the same path once their directories are resolved ("x", "./x", "d/../x") */
 int dv_io_same_file(const char *a, const char *b);
+
+/* path with its directory resolved (symbolic links, ".", ".."): the file
+ * itself need not exist; 0, or -1 when the directory cannot be resolved */
+int dv_io_canonical(const char *path, char *out, size_t size);
 
 /* mkdir -p */
 int dv_io_make_dirs(const char *path, dv_error *err);

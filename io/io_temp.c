@@ -1,15 +1,21 @@
 /* dv_io_temp: temporaries named after their owner; stale ones and signals. */
+#define _GNU_SOURCE /* getdents64 through syscall, O_DIRECTORY */
 #include "io_temp.h"
 
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <ftw.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
+
+#include "io_owned.h"
 
 enum { MAX_TRACKED = 16, TRACKED_PATH = 1100 };
 
@@ -20,28 +26,26 @@ static struct {
   char path[TRACKED_PATH];
 } tracked[MAX_TRACKED];
 
-int dv_io_temp_template(char *buf, size_t size, const char *prefix, dv_error *err) {
-  const int len = snprintf(buf, size, "%s.tmp.%ld.XXXXXX", prefix, (long)getpid());
+int dv_io_temp_template(char *buf, size_t size, const char *dir, dv_error *err) {
+  const int len = snprintf(buf, size, "%s/" DV_IO_TEMP_PREFIX "%ld.XXXXXX", dir, (long)getpid());
   if (len >= 0 && (size_t)len < size) return DV_OK;
-  return dv_fail(err, DV_EINPUT, "path too long: %.200s...", prefix);
+  return dv_fail(err, DV_EINPUT, "path too long: %.200s...", dir);
 }
 
-/* the pid written after marker in name, when the rest of name is what
- * follows a pid in that kind of temporary ("." and 6 characters, or nothing) */
-static long owner_after(const char *name, const char *marker, size_t tail) {
-  const char *at = NULL;
-  for (const char *p = name; (p = strstr(p, marker)); p++) at = p;
-  if (!at) return 0;
-  const char *digits = at + strlen(marker), *end = digits;
+/* the owner's pid in name when it is exactly .diskval-tmp.PID.XXXXXX, else 0 */
+static long owner_of(const char *name) {
+  const size_t plen = strlen(DV_IO_TEMP_PREFIX);
+  if (strncmp(name, DV_IO_TEMP_PREFIX, plen)) return 0;
+  const char *digits = name + plen, *end = digits;
   while (isdigit((unsigned char)*end)) end++;
-  if (end == digits || end - digits > 9) return 0;
-  if (tail == 0 ? *end != '\0' : (*end != '.' || strlen(end + 1) != tail)) return 0;
+  if (end == digits || end - digits > 9 || *end != '.' || strlen(end + 1) != 6) return 0;
+  for (const char *c = end + 1; *c; c++)
+    if (!isalnum((unsigned char)*c)) return 0;
   return strtol(digits, NULL, 10);
 }
 
 int dv_io_temp_is_stale(const char *name) {
-  long pid = owner_after(name, ".tmp.", 6);
-  if (!pid) pid = owner_after(name, ".old.", 0);
+  const long pid = owner_of(name);
   return pid > 0 && kill((pid_t)pid, 0) != 0 && errno == ESRCH;
 }
 
@@ -55,16 +59,22 @@ int dv_io_remove_tree(const char *path) {
   return nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
-int dv_io_temp_remove_stale(const char *dir, const char *prefix) {
+int dv_io_temp_remove_stale(const char *dir) {
   DIR *d = opendir(dir);
   if (!d) return 0;
-  const size_t plen = prefix ? strlen(prefix) : 0;
   int removed = 0;
   for (struct dirent *e; (e = readdir(d));) {
     char path[4096];
-    if (strncmp(e->d_name, prefix ? prefix : "", plen) || !dv_io_temp_is_stale(e->d_name)) continue;
+    if (!dv_io_temp_is_stale(e->d_name)) continue;
     const int len = snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-    if (len > 0 && (size_t)len < sizeof path && dv_io_remove_tree(path) == 0) removed++;
+    if (len < 0 || (size_t)len >= sizeof path) continue;
+    struct stat st;
+    if (lstat(path, &st)) continue;
+    /* a directory: a report diskval marked, or one that died before its mark */
+    if (S_ISDIR(st.st_mode) ? (dv_io_owned(path) ? dv_io_remove_tree(path) : rmdir(path))
+                            : S_ISREG(st.st_mode) ? unlink(path) : -1)
+      continue;
+    removed++;
   }
   closedir(d);
   return removed;
@@ -85,12 +95,28 @@ void dv_io_temp_forget(const char *path) {
     if (tracked[i].owner && !strcmp(tracked[i].path, path)) tracked[i].owner = 0;
 }
 
+/* rm of a directory of plain files, with async-signal-safe calls only */
+static void remove_flat_dir(const char *path) {
+  static char buf[8192];
+  const int fd = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+  if (fd < 0) return;
+  for (long n; (n = syscall(SYS_getdents64, fd, buf, sizeof buf)) > 0;)
+    for (long at = 0; at < n;) {
+      const struct dirent64 *e = (const struct dirent64 *)(buf + at);
+      if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) unlinkat(fd, e->d_name, 0);
+      at += e->d_reclen;
+    }
+  close(fd);
+  rmdir(path);
+}
+
 /* remove this process's temporaries (a forked child's copies of its
  * parent's slots are not its own), then die of sig */
 static void clean_and_die(int sig) {
   const pid_t self = getpid();
   for (int i = 0; i < MAX_TRACKED; i++)
-    if (tracked[i].owner == self) unlink(tracked[i].path);
+    if (tracked[i].owner == self && unlink(tracked[i].path) && (errno == EISDIR || errno == EPERM))
+      remove_flat_dir(tracked[i].path);
   signal(sig, SIG_DFL);
   raise(sig); /* delivered when the handler returns */
 }

@@ -447,9 +447,10 @@ int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error 
   const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
   const int dirlen = slash ? (int)(slash + 1 - path) : 0; /* with its '/' */
   if (!*base) return dv_fail(err, DV_EINPUT, "%s: no file name", path);
-  char prefix[PATH_MAX];
-  if (snprintf(prefix, sizeof prefix, "%.*s.%s", dirlen, path, base) >= (int)sizeof prefix ||
-      dv_io_temp_template(tmp, sizeof tmp, prefix, NULL))
+  char dir[PATH_MAX];
+  if (snprintf(dir, sizeof dir, "%.*s", dirlen ? dirlen - 1 : 1, dirlen ? path : ".") >=
+          (int)sizeof dir ||
+      dv_io_temp_template(tmp, sizeof tmp, dir, NULL))
     return dv_fail(err, DV_ESYSTEM, "%s: path too long", path);
   if (strstr(tmp, "%n")) /* PLplot would read it as a file family pattern */
     return dv_fail(err, DV_ESYSTEM, "%s: PLplot cannot write a path containing %%n", path);

@@ -10,40 +10,81 @@
 #include <unistd.h>
 
 #include "io_file.h"
+#include "io_owned.h"
 #include "io_temp.h"
 
 int dv_report_dir_begin(char *tmp, size_t size, const char *out_dir, const char *name,
                         dv_error *err) {
-  char prefix[1200], stale[200];
-  if (dv_io_path(prefix, sizeof prefix, err, "%s/.%s", out_dir, name) ||
-      dv_io_temp_template(tmp, size, prefix, err))
+  char final[1200];
+  if (dv_io_path(final, sizeof final, err, "%s/%s", out_dir, name) ||
+      dv_io_check_replaceable(final, err) || dv_io_temp_template(tmp, size, out_dir, err))
     return DV_EINPUT;
-  /* what runs killed while writing this report left (a suite also clears the rest) */
-  for (int k = 0; k < 2; k++)
-    if (!dv_io_path(stale, sizeof stale, NULL, k ? ".%s.old." : ".%s.tmp.", name))
-      dv_io_temp_remove_stale(out_dir, stale);
+  dv_io_temp_remove_stale(out_dir); /* what runs killed while writing here left */
   if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno));
+  dv_io_temp_track(tmp);
   const mode_t mask = umask(0);
   umask(mask);
   chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */
+  if (dv_io_mark(tmp, err)) return dv_report_dir_discard(tmp), DV_ESYSTEM;
   return DV_OK;
 }
 
+void dv_report_dir_discard(const char *tmp) {
+  dv_io_remove_tree(tmp);
+  dv_io_temp_forget(tmp);
+}
+
+/* move the report at final aside, into a new temporary directory of
+ * out_dir whose path goes into old; 0, or -1 when there is none */
+static int set_aside(const char *final, const char *out_dir, char *old, size_t size) {
+  if (!dv_io_owned(final) || dv_io_temp_template(old, size, out_dir, NULL) || !mkdtemp(old))
+    return -1;
+  if (rename(final, old) == 0) return 0; /* a directory replaces an empty one */
+  rmdir(old);
+  return -1;
+}
+
 int dv_report_dir_install(const char *tmp, const char *out_dir, const char *name, dv_error *err) {
-  char final[1200], old[1200];
+  char final[1200], old[1300];
   if (dv_io_path(final, sizeof final, err, "%s/%s", out_dir, name) ||
-      dv_io_path(old, sizeof old, err, "%s/.%s.old.%ld", out_dir, name, (long)getpid())) {
-    dv_io_remove_tree(tmp);
+      dv_io_check_replaceable(final, err)) {
+    dv_report_dir_discard(tmp);
     return DV_EINPUT;
   }
-  const int had_old = rename(final, old) == 0;
+  const int had_old = set_aside(final, out_dir, old, sizeof old) == 0;
   if (rename(tmp, final)) {
     dv_fail(err, DV_ESYSTEM, "%s: %s", final, strerror(errno));
     if (had_old) rename(old, final);
-    dv_io_remove_tree(tmp);
+    dv_report_dir_discard(tmp);
     return DV_ESYSTEM;
   }
+  dv_io_temp_forget(tmp);
   if (had_old) dv_io_remove_tree(old);
+  return DV_OK;
+}
+
+/* path (an input of the run) lies inside dir, which the run replaces */
+static int inside(const char *path, const char *dir, dv_error *err) {
+  if (!dv_io_within(path, dir)) return DV_OK;
+  return dv_fail(err, DV_EINPUT,
+                 "%s: an input of this run lies inside %s, which the run would replace; "
+                 "nothing was written: move it, or choose another --out",
+                 path, dir);
+}
+
+int dv_report_dir_check(const char *out_dir, const dv_scenario *scs, size_t n,
+                        const char *const *inputs, size_t ninputs, dv_error *err) {
+  struct stat st;
+  if (stat(out_dir, &st) == 0 && !S_ISDIR(st.st_mode))
+    return dv_fail(err, DV_EINPUT, "%s: not a directory", out_dir);
+  for (size_t i = 0; i < n; i++) {
+    char final[1200];
+    int status = dv_io_path(final, sizeof final, err, "%s/%s", out_dir, scs[i].name);
+    if (!status) status = dv_io_check_replaceable(final, err);
+    for (size_t k = 0; !status && k < n; k++) status = inside(scs[k].path, final, err);
+    for (size_t k = 0; !status && k < ninputs; k++) status = inside(inputs[k], final, err);
+    if (status) return status;
+  }
   return DV_OK;
 }
 
@@ -86,10 +127,11 @@ int dv_report_dir_write_error(const char *out_dir, const dv_scenario *sc, const 
                               dv_error *err) {
   char tmp[1300], final[1200];
   int status = dv_report_dir_begin(tmp, sizeof tmp, out_dir, sc->name, err);
-  if (!status && (status = write_error_files(tmp, sc, cause, err))) dv_io_remove_tree(tmp);
+  if (!status && (status = write_error_files(tmp, sc, cause, err))) dv_report_dir_discard(tmp);
   if (!status) status = dv_report_dir_install(tmp, out_dir, sc->name, err);
-  /* no error report: at least no earlier report that says something else */
-  if (status && !dv_io_path(final, sizeof final, NULL, "%s/%s", out_dir, sc->name))
+  /* no error report: at least no earlier report (of diskval's) that says something else */
+  if (status && !dv_io_path(final, sizeof final, NULL, "%s/%s", out_dir, sc->name) &&
+      dv_io_owned(final))
     dv_io_remove_tree(final);
   return status;
 }

@@ -56,7 +56,7 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
   } else if (!dv_report_dir_begin(tmp, sizeof tmp, out_dir, sc->name, err)) {
     code = compare_into(tmp, sc, sc->engines[0] ? own : engines, verbose, explain, err);
     if (code == DV_SUITE_ERROR)
-      dv_io_remove_tree(tmp);
+      dv_report_dir_discard(tmp);
     else if (dv_report_dir_install(tmp, out_dir, sc->name, err))
       code = DV_SUITE_ERROR;
   }
@@ -127,7 +127,7 @@ int dv_report_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_ty
       .jobs = jobs, .on_result = progress, .done = done, .timeout = timeout};
   /* left by runs that died here; by rank 0 only, before any task starts (a
    * pid means nothing on another host) */
-  if (dv_exec_mpi_rank() == 0) dv_io_temp_remove_stale(out_dir, NULL);
+  if (dv_exec_mpi_rank() == 0) dv_io_temp_remove_stale(out_dir);
   dv_run_progress_tasks_begin("scenario", n);
   const int pool = dv_exec_pool(n, sizeof *results, run_task, &s, results, &opt);
   dv_run_progress_tasks_end();
@@ -148,7 +148,7 @@ int dv_report_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_ty
   }
   /* the temporaries of the scenarios stopped or killed at their time limit */
   if ((pool == DV_EXEC_DONE || pool == DV_EXEC_INTERRUPTED) && dv_exec_mpi_rank() == 0)
-    dv_io_temp_remove_stale(out_dir, NULL);
+    dv_io_temp_remove_stale(out_dir);
   if (pool == DV_EXEC_INTERRUPTED)
     status =
         dv_fail(err, DV_EVENT, "interrupted: %zu of %zu scenarios finished, their reports in %s",

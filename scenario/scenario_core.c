@@ -28,6 +28,17 @@ int dv_scenario_check_name(const char *name, char *what, size_t size) {
                     "(not '.' or '..')",
                     name),
            -1;
+  if (name[0] == '.')
+    return snprintf(what, size, "'%.80s' starts with '.': such names are diskval's own", name), -1;
+  /* a suite writes its own files into OUT beside the scenarios' directories */
+  static const char *const own[] = {".html", ".json", ".xml", ".md"};
+  for (size_t k = 0; k < sizeof own / sizeof *own; k++)
+    if (n > strlen(own[k]) && !strcmp(name + n - strlen(own[k]), own[k]))
+      return snprintf(what, size,
+                      "'%.80s' ends in '%s', as the suite's own files (index.html, "
+                      "summary.json, junit.xml, verify.md) do: choose another name",
+                      name, own[k]),
+             -1;
   return 0;
 }
 

@@ -39,14 +39,14 @@ check '[ ! -e "$full/report/upright_stable" ] ||
   { grep -q "No space" "$full/report/upright_stable/report.json" &&
     [ "$(ls "$full/report/upright_stable")" = "$(printf "report.json\nreport.md")" ]; }' \
   "full disk: a half-written report remains: $(ls "$full/report/upright_stable" 2>&1)"
-check '[ -z "$(find "$full" -name "*.tmp*")" ]' "full disk: temporary files remain"
+check '[ -z "$(find "$full" -name ".diskval-tmp.*")" ]' "full disk: temporary files remain"
 "$diskval" simulate "$scenarios/upright_stable.ini" --engine reduced --out "$full/x.csv" 2>/dev/null
 code=$?
 check '[ $code -eq 2 ] && [ ! -e "$full/x.csv" ]' "full disk simulate: exit $code or a file left"
 
 # SIGINT in the middle of the default suite; a live process's temporary
 # there (this shell's pid) is not the suite's to remove
-mkdir -p "$work/int/.other.tmp.$$.abcdef"
+mkdir -p "$work/int/.diskval-tmp.$$.abcdef"
 "$diskval" suite "$scenarios" --out "$work/int" --jobs 2 >/dev/null 2>"$work/err" &
 pid=$!
 sleep 1
@@ -54,9 +54,9 @@ kill -INT "$pid"
 wait "$pid"; code=$?
 check '[ $code -eq 130 ]' "SIGINT: exit $code, want 130"
 check 'grep -q interrupted "$work/err"' "SIGINT: no message"
-check '[ -z "$(find "$work/int" -name ".*tmp*" ! -name ".other.tmp.$$.abcdef")" ]' \
+check '[ -z "$(find "$work/int" -name ".diskval-tmp.*" ! -name ".diskval-tmp.$$.abcdef")" ]' \
   "SIGINT: temporary directories remain"
-check '[ -d "$work/int/.other.tmp.$$.abcdef" ]' "SIGINT: another process's temporary was removed"
+check '[ -d "$work/int/.diskval-tmp.$$.abcdef" ]' "SIGINT: another process's temporary was removed"
 for d in "$work"/int/*/; do
   [ -d "$d" ] || continue
   check '[ -s "$d/report.json" ] && [ -s "$d/report.md" ]' "SIGINT: $d is incomplete"

@@ -25,7 +25,7 @@ start_long() {
   "$dv" simulate "$long" --engine mujoco --out "$1" --forces "$1.forces" 2>/dev/null &
   pid=$!
   for _ in $(seq 100); do
-    compgen -G "$1.tmp.$pid.*" >/dev/null && return
+    compgen -G ".diskval-tmp.$pid.*" >/dev/null && return
     sleep 0.05
   done
 }
@@ -36,19 +36,19 @@ for sig in INT TERM; do
   code=$?
   want=$((128 + $(kill -l "$sig")))
   check '[ $code -eq $want ]' "SIG$sig: exit $code, want $want (died of the signal)"
-  check '[ -z "$(ls | grep tmp)" ]' "SIG$sig: temporaries remain: $(ls | grep tmp)"
+  check '[ -z "$(ls -A | grep diskval-tmp)" ]' "SIG$sig: temporaries remain: $(ls -A | grep diskval-tmp)"
 done
 
 start_long kill.csv
 kill -KILL "$pid"
 wait "$pid"
-check '[ -n "$(compgen -G "kill.csv.tmp.$pid.*")" ]' "SIGKILL: no temporary to clean (the test proves nothing)"
-touch "kill.csv.tmp.$$.abcdef" # this shell's: alive
+check '[ -n "$(compgen -G ".diskval-tmp.$pid.*")" ]' "SIGKILL: no temporary to clean (the test proves nothing)"
+touch ".diskval-tmp.$$.abcdef" # this shell's: alive
 "$dv" simulate "$sc/falling.ini" --engine reduced --out kill.csv 2>/dev/null
 code=$?
 check '[ $code -eq 0 ] && [ -s kill.csv ]' "after SIGKILL: exit $code"
-check '[ -z "$(compgen -G "kill.csv.tmp.$pid.*")" ]' "the dead run's temporary was not removed"
-check '[ -e "kill.csv.tmp.$$.abcdef" ]' "a live process's temporary was removed"
+check '[ -z "$(compgen -G ".diskval-tmp.$pid.*")" ]' "the dead run's temporary was not removed"
+check '[ -e ".diskval-tmp.$$.abcdef" ]' "a live process's temporary was removed"
 
 # expect_refusal REGEX ARGS...: exit 2, one stderr line matching REGEX, no stdout
 expect_refusal() {

@@ -8,8 +8,9 @@
 #     failure with the real cause, in every output;
 #   - a second run into a directory another run holds (.diskval.lock) is
 #     refused in one line, exit 2, and touches nothing there;
-#   - temporaries of a dead run are removed by the next suite (all) or
-#     compare (its scenario's), those of a live process kept.
+#   - temporaries of a dead run (.diskval-tmp.PID.XXXXXX) are removed by the
+#     next suite or compare, those of a live process kept, and a directory of
+#     that name is removed only when diskval marked it (or it is empty).
 # Timings (diskval suite ... --jobs 2 on 2 busy cores): fast.ini and slow.ini
 # at 1 s take 0.7 s together; slow.ini at 60 s takes over 20 s (MuJoCo alone:
 # 20 s), so a 5 s limit is 7x the fast run and a quarter of the slow one.
@@ -52,7 +53,7 @@ check 'grep -q "<error message=\"$why\"" out/junit.xml' "timeout: junit.xml has 
 check 'grep -q "$why" out/index.html' "timeout: index.html does not say '$why'"
 check '[ ! -e out/slow/reduced.csv ] && grep -q "$why" out/slow/report.json' \
   "timeout: the earlier report of slow is still there"
-check '[ -z "$(find out -name "*.tmp.*" -o -name "*.old.*")" ]' "timeout: temporaries remain"
+check '[ -z "$(find out -name ".diskval-tmp.*")" ]' "timeout: temporaries remain"
 
 # --verify under the same limit: the slow case is an error, the fast one converges
 start=$(date +%s)
@@ -87,33 +88,45 @@ dead=$!
 wait "$dead"
 
 # a second run while another holds the directory: refused, nothing touched
-# (not even a dead run's temporary, which a run that went on would remove)
+# (not even a dead run's temporary, which a run that went on would remove);
+# the holder is a compare of the 60 s scene, ended once the check is done
 mkdir -p held
-touch "held/.other.tmp.$dead.abcdef" held/keep.txt
-exec 9>held/.diskval.lock # this shell holds the lock, as a running suite would
-flock -n 9 || echo "FAIL: cannot take the lock to hold it"
-(cd held && find . -exec stat -c '%n %s %Y' {} + | sort) >before
+"$dv" suite fast.ini --out held >/dev/null 2>&1 # a directory diskval made
+touch "held/.diskval-tmp.$dead.abcdef"
+scenario slow 60
+"$dv" compare slow.ini --out held --engines mujoco >/dev/null 2>&1 &
+holder=$!
+for _ in $(seq 200); do [ -e held/.diskval.lock ] && break; sleep 0.05; done
+snapshot() { (cd held && find . ! -name ".diskval-tmp.$holder.*" ! -path "./.diskval-tmp.$holder.*/*" \
+  ! -name .diskval.lock -exec stat -c '%n %s %Y' {} + | sort); }
+snapshot >before
 "$dv" suite fast.ini --out held >stdout 2>stderr; code=$?
-exec 9>&-
+snapshot >after
+kill -TERM "$holder"
+wait "$holder"
 check '[ $code -eq 2 ]' "lock: exit $code, want 2"
 check '[ "$(wc -l <stderr)" -eq 1 ] && grep -q "another diskval run is writing into this directory" stderr' \
   "lock: want one line saying why, got: $(cat stderr)"
 check '[ ! -s stdout ]' "lock: stdout: $(cat stdout)"
-(cd held && find . -exec stat -c '%n %s %Y' {} + | sort) >after
 check 'diff before after >/dev/null' "lock: the held directory changed: $(diff before after)"
 
-# temporaries of a dead run go, those of a live process stay
-mkdir -p out/.slow.tmp.$dead.abcdef out/.fast.tmp.$$.abcdef
-touch out/summary.json.tmp.$dead.abcdef
+# temporaries of a dead run go (a report directory diskval marked, an empty
+# one, a file), those of a live process stay, and nothing else of that shape
+scenario slow 1
+mkdir -p out/.diskval-tmp.$dead.abcdef out/.diskval-tmp.$dead.ghijkl out/.diskval-tmp.$$.abcdef
+echo "diskval output directory, format 1" >out/.diskval-tmp.$dead.abcdef/.diskval-report
+touch out/.diskval-tmp.$dead.mnopqr
 "$dv" suite fast.ini --out out >/dev/null 2>&1
-check '[ ! -e out/.slow.tmp.$dead.abcdef ] && [ ! -e out/summary.json.tmp.$dead.abcdef ]' \
-  "stale: a dead run's temporaries remain"
-check '[ -d out/.fast.tmp.$$.abcdef ]' "stale: a live process's temporary was removed"
-mkdir -p out/.fast.tmp.$dead.abcdef out/.fast.old.$dead
+check '[ -z "$(compgen -G "out/.diskval-tmp.$dead.*")" ]' \
+  "stale: a dead run's temporaries remain: $(compgen -G "out/.diskval-tmp.$dead.*")"
+check '[ -d out/.diskval-tmp.$$.abcdef ]' "stale: a live process's temporary was removed"
+mkdir -p out/.diskval-tmp.$dead.stuvwx out/.diskval-tmp.$dead.abcdef/keep
+touch out/.diskval-tmp.$dead.abcdef/keep/mine
 "$dv" compare fast.ini --out out >/dev/null 2>&1
-check '[ ! -e out/.fast.tmp.$dead.abcdef ] && [ ! -e out/.fast.old.$dead ]' \
-  "stale: compare left a dead run's temporaries of its scenario"
-check '[ -d out/.fast.tmp.$$.abcdef ]' "stale: compare removed a live process's temporary"
+check '[ ! -e out/.diskval-tmp.$dead.stuvwx ]' "stale: compare left a dead run's temporary"
+check '[ -e out/.diskval-tmp.$dead.abcdef/keep/mine ]' \
+  "stale: a directory diskval did not mark was removed for its name"
+check '[ -d out/.diskval-tmp.$$.abcdef ]' "stale: compare removed a live process's temporary"
 
 [ $fail -eq 0 ] && echo "suite faults: contained, with their causes"
 exit $fail

@@ -84,9 +84,9 @@ static int prepare(const char *fixtures, const char *dir) {
 
 static int ntemp; /* temporary files found by the walk below */
 
-/* nftw visitor: count dv_io_file's leftovers ("NAME.tmp.XXXXXX") */
+/* nftw visitor: count dv_io_file's leftovers (".diskval-tmp.PID.XXXXXX") */
 static int find_temp(const char *path, const struct stat *st, int flag, struct FTW *ftw) {
-  ntemp += strstr(path + ftw->base, ".tmp.") != NULL;
+  ntemp += strstr(path + ftw->base, ".diskval-tmp.") != NULL;
   return 0;
 }
 

@@ -1,0 +1,37 @@
+/* dv_io_owned: diskval replaces only what it made.
+ *
+ * Every directory diskval makes for its output (a scenario's report
+ * OUT/<name>/, the --out of suite, sweep and map) holds DV_IO_MARK, a file
+ * naming the format. diskval removes or replaces a directory only when it
+ * holds that mark; a path held by anything else is an error naming it, found
+ * before anything is written. A command that writes files of fixed names
+ * into --out (suite, sweep, map) takes only an --out that is new, empty, or
+ * marked, so a user's own index.html or summary.json there is never replaced.
+ */
+#ifndef DV_IO_OWNED_H
+#define DV_IO_OWNED_H
+
+#include "dv_error.h"
+
+#define DV_IO_MARK ".diskval-report"
+#define DV_IO_MARK_TEXT "diskval output directory, format 1\n"
+
+/* path is a directory holding the mark */
+int dv_io_owned(const char *path);
+
+/* put the mark into dir (a directory this process made or owns) */
+int dv_io_mark(const char *dir, dv_error *err);
+
+/* path may be made or replaced: it does not exist, or it is a directory
+ * holding the mark; else DV_EINPUT, err naming path and what is there */
+int dv_io_check_replaceable(const char *path, dv_error *err);
+
+/* make dir (mkdir -p) for a command's fixed-name outputs, or take an
+ * existing one that is empty (apart from diskval's lock and temporaries) or
+ * marked; the mark is put in; else DV_EINPUT naming dir */
+int dv_io_own_dir(const char *dir, dv_error *err);
+
+/* path lies inside dir (both resolved; dir need not exist: then no) */
+int dv_io_within(const char *path, const char *dir);
+
+#endif
