@@ -38,7 +38,7 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
   char meta_path[1100];
   snprintf(meta_path, sizeof meta_path, "%s.json", out_path);
   const char *const outputs[] = {out_path, forces_path, meta_path};
-  const char *const what[] = {"--out", "--forces", "the metadata --out writes beside it"};
+  const char *const what[] = {"--out", "--forces", "the metadata file --out writes beside it"};
   const size_t nout = strcmp(out_path, "-") ? 3 : 2;
   for (size_t i = 0; i < nout; i++) /* no output over the input, or over another output */
     if (outputs[i] && strcmp(outputs[i], "-")) {
@@ -46,11 +46,11 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
         return dv_cli_usage_error("simulate", "%s '%s' is the scenario file", what[i], outputs[i]);
       for (size_t k = 0; k < i; k++)
         if (outputs[k] && strcmp(outputs[k], "-") && dv_io_same_file(outputs[i], outputs[k]))
-          return dv_cli_usage_error("simulate", "%s '%s' and %s '%s' name the same file", what[k],
-                                    outputs[k], what[i], outputs[i]);
+          return dv_cli_usage_error("simulate", "%s '%s' is %s '%s': they name the same file",
+                                    what[i], outputs[i], what[k], outputs[k]);
     }
   if (forces_path && !strcmp(forces_path, "-") && !strcmp(out_path, "-"))
-    return dv_cli_usage_error("simulate", "--out and --forces both write to stdout");
+    return dv_cli_usage_error("simulate", "--out and --forces name the same file: stdout");
   dv_scenario sc;
   dv_error err = {{0}};
   if (dv_engine_load_scenario(scenario, sets->items, sets->n, &sc, &err)) {

@@ -68,7 +68,7 @@ expect "same file" simulate "$sc" --engine reduced --out a.csv --forces a.csv
 expect "same file" simulate "$sc" --engine reduced --out a.csv --forces ./a.csv
 expect "same file" simulate "$sc" --engine reduced --out "$work/a.csv" --forces a.csv
 expect "same file" simulate "$sc" --engine reduced --out - --forces -
-expect "the file --out writes beside 'a.csv'" simulate "$sc" --engine reduced --out a.csv \
+expect "the metadata file --out writes beside it 'a.csv.json'" simulate "$sc" --engine reduced --out a.csv \
   --forces ./a.csv.json
 [ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
 exit $fail
