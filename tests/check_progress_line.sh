@@ -84,9 +84,9 @@ for f in reduced.csv mujoco.csv ode.csv report.json; do
 done
 
 # verify: runs in this process; the same table
-on_tty ver.log "'$dv' verify '$sc' --engines mujoco > tty.ver"
+on_tty ver.log "'$dv' verify '$sc' --engines mujoco ${long[*]} > tty.ver"
 has_line ver.log 'short_circle mujoco  t ' "verify"
-"$dv" verify "$sc" --engines mujoco >file.ver 2>ver.err
+"$dv" verify "$sc" --engines mujoco "${long[@]}" >file.ver 2>ver.err
 no_line ver.err "verify, stderr in a file"
 same tty.ver file.ver "verify stdout"
 
