@@ -165,6 +165,14 @@ static double contact_side(const red_rolling *rr, const double *st, int *how) {
   return sign;
 }
 
+int red_rolling_tilt_acceleration(const red_rolling *rr, const double y[RED_NSTATE], double *thdd) {
+  double st[RR_NSTATE];
+  red_rolling_from_state(rr, y, st);
+  side_probe q = {rr, st, 0};
+  *thdd = tilt_acceleration(contact_side(rr, st, NULL), &q);
+  return q.status;
+}
+
 int red_rolling_dynamics(const red_rolling *rr, const double *st, double wdot[3], double force[3]) {
   return dynamics_on_side(rr, st, contact_side(rr, st, NULL), wdot, force);
 }

@@ -67,6 +67,9 @@ void red_rolling_to_state(const double *s, double y[RED_NSTATE]);
 int red_rolling_dynamics(const red_rolling *rr, const double *s, double omega_dot[3],
                          double force[3]);
 
+/* theta'' at the canonical state y, on the corner (or line) the disk stands on */
+int red_rolling_tilt_acceleration(const red_rolling *rr, const double y[RED_NSTATE], double *thdd);
+
 /* energy m v_G^2 / 2 + omega.I.omega / 2 + m g z_G (J) */
 double red_rolling_energy(const red_rolling *rr, const double *s);
 

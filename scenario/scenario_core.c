@@ -9,6 +9,7 @@
 
 #include "dv_format.h"
 #include "red_steady.h"
+#include "red_steady_thick.h"
 
 const char *const dv_metric_names[DV_NMETRICS] = {
     "theta_max_err", "theta_rms_err", "path_max_err",      "path_rms_err",   "path_hausdorff",
@@ -130,6 +131,16 @@ static int check_disk(dv_scenario *sc, void *block, dv_setting_issue *is) {
   return 0;
 }
 
+/* the rates of the steady motion of the cylinder the engines simulate */
+static int steady_thick(dv_scenario *sc, int has_radius, dv_error *e) {
+  double *y = sc->initial;
+  red_rolling rr;
+  red_rolling_init(&rr, &sc->disk, 0.5 * sc->thickness, 1.0, 0.0);
+  return has_radius ? red_steady_thick_from_radius(&rr, y[RED_TH], sc->steady_circle_radius,
+                                                   &y[RED_VPH], &y[RED_VPS], e)
+                    : red_steady_thick_from_phi_dot(&rr, y[RED_TH], y[RED_VPH], &y[RED_VPS], e);
+}
+
 /* [initial]: the rates given, or those of the steady motion asked for */
 static int check_initial(dv_scenario *sc, void *block, dv_setting_issue *is) {
   double *y = sc->initial;
@@ -153,12 +164,13 @@ static int check_initial(dv_scenario *sc, void *block, dv_setting_issue *is) {
                    "cannot be combined with %s (the steady motion fixes the rates)", steady_key);
   dv_error e;
   y[RED_VTH] = 0.0;
-  const int status =
-      has_radius
-          ? red_steady_from_radius(&sc->disk, y[RED_TH], sc->steady_circle_radius, &y[RED_VPH],
-                                   &y[RED_VPS], &e)
-          : red_steady_from_phi_dot(&sc->disk, y[RED_TH], sc->steady_phi_dot, &y[RED_VPS], &e);
   if (has_rate) y[RED_VPH] = sc->steady_phi_dot;
+  const int status = sc->thickness > 0.0 ? steady_thick(sc, has_radius, &e)
+                     : has_radius
+                         ? red_steady_from_radius(&sc->disk, y[RED_TH], sc->steady_circle_radius,
+                                                  &y[RED_VPH], &y[RED_VPS], &e)
+                         : red_steady_from_phi_dot(&sc->disk, y[RED_TH], sc->steady_phi_dot,
+                                                   &y[RED_VPS], &e);
   return status ? issue(is, "initial", steady_key, "%s", e.msg) : 0;
 }
 
