@@ -164,8 +164,8 @@ static int build_figure(figure *f, plot_kind kind, const dv_plot_input *in) {
   char name[160], missing[256] = "";
   dvp_escape(name, sizeof name, in->title, "");
   for (size_t k = 0; k <= in->nseries; k++) {
-    if (k == 0 && kind == PLOT_ERROR) continue; /* the thin reference has no error */
     const dv_plot_series *s = k ? &in->series[k - 1] : NULL;
+    if (kind == PLOT_ERROR && !(s && s->reference)) continue; /* a reference has no error */
     curve *c = &f->c[f->ncurves];
     c->colour =
         s ? (PLINT)(COL_SERIES + (dv_report_plot_engine_colour(s->label) - 1) % DVP_NPALETTE)

@@ -29,7 +29,8 @@
 typedef struct dv_plot_series {
   const char *label;        /* the engine's name, e.g. "mujoco": legend text and colour */
   const dv_traj *traj;      /* the engine's samples */
-  const dv_traj *reference; /* what its error is measured against (same times) */
+  const dv_traj *reference; /* what its error is measured against (same times); NULL: the
+                               series is a reference itself, drawn but not on the error plot */
 } dv_plot_series;
 
 typedef struct dv_plot_input {

@@ -337,6 +337,14 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
     plot.series[plot.nseries++] = (dv_plot_series){
         r->engine->name, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin};
   }
+  /* the reference a thick engine's verdict uses, drawn beside the thin one */
+  char matched_label[96] = "";
+  for (size_t i = 0; i < c->n && !matched_label[0]; i++)
+    if (c->r[i].half_thickness > 0.0 && plot.nseries < DV_PLOT_MAX_SERIES) {
+      snprintf(matched_label, sizeof matched_label, "reference (matched, thickness %.3g mm)",
+               2e3 * c->r[i].half_thickness);
+      plot.series[plot.nseries++] = (dv_plot_series){matched_label, &c->r[i].matched, NULL};
+    }
   if (!status) status = dv_report_plot_scenario(dir, &plot, err);
   if (!status) status = write_portraits(dir, c, err);
   if (!status) status = write_markdown(dir, c, err);
