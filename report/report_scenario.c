@@ -35,8 +35,9 @@ static cJSON *metrics_json(const double *v) {
 }
 
 /* the share of the discrepancy the stand-in's geometry explains,
- * 1 - err_matched / err_thin, where r was compared with its own geometry's
- * reference; null where it was not, with why */
+ * 1 - err_matched / err_thin, both errors over one window (the shorter of
+ * the two comparisons, up to the pointwise end), where r was compared with
+ * its own geometry's reference; null where it was not, with why */
 static cJSON *geometry_share_json(const dv_comparison *c, const dv_engine_result *r) {
   static const dv_metric_id metrics[] = {DV_THETA_MAX_ERR, DV_PATH_MAX_ERR};
   cJSON *g = cJSON_CreateObject();
@@ -50,16 +51,24 @@ static cJSON *geometry_share_json(const dv_comparison *c, const dv_engine_result
   else if (thin_ref)
     snprintf(why, sizeof why, "n/a: %s simulates the exact thin disk, no stand-in",
              r->engine->name);
+  const double window =
+      why[0] ? NAN : fmin(fmin(r->vs_ref.t_window, r->vs_thin.t_window), r->pointwise_end);
+  dv_metrics own = {{0}, 0, 0.0}, thin = own;
+  if (!why[0]) {
+    dv_run_compare(&r->traj, &r->matched, window, &own);
+    dv_run_compare(&r->traj, &c->thin, window, &thin);
+  }
   int negative = 0;
   for (size_t i = 0; i < sizeof metrics / sizeof metrics[0]; i++) {
-    const double thin = r->vs_thin.value[metrics[i]];
-    double v = !why[0] && thin > 0.0 ? 1.0 - r->vs_ref.value[metrics[i]] / thin : NAN;
+    const double e = thin.value[metrics[i]];
+    double v = !why[0] && e > 0.0 ? 1.0 - own.value[metrics[i]] / e : NAN;
     /* below this the two references differ by their own integration error
      * (measured -3e-13 where the thick disk rolls upright as the thin one) */
     if (fabs(v) < 1e-9) v = 0.0;
     negative |= v < 0.0;
     cJSON_AddItemToObject(g, dv_metric_names[metrics[i]], dv_io_json_number(v));
   }
+  cJSON_AddItemToObject(g, "window_end", dv_io_json_number(window));
   if (negative)
     snprintf(why, sizeof why,
              "negative: the engine is further from its own geometry's reference than from the "
