@@ -242,8 +242,11 @@ int dv_cli_suite(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
-  if (o.junit && !o.junit[0]) return dv_cli_usage_error("suite", "--junit needs a file name");
-  if (!o.out[0]) return dv_cli_usage_error("suite", "--out needs a directory");
+  if ((o.junit && !o.junit[0]) || !o.out[0]) {
+    dv_cli_args_free(&cmd, &a);
+    return dv_cli_usage_error("suite", "%s needs a %s", o.out[0] ? "--junit" : "--out",
+                              o.out[0] ? "file name" : "directory");
+  }
   dv_run_progress_start("suite", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_cli_list files = {0};
