@@ -82,8 +82,8 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
 }
 
 /* a window too short to judge: why into why, 0 when it is long enough */
-static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0,
-                            char *why, size_t size) {
+static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0, char *why,
+                            size_t size) {
   const double span = r->vs_ref.t_window - t0;
   if (r->vs_ref.n_window < DV_MIN_WINDOW_SAMPLES)
     snprintf(why, size, "%zu samples, at least %d needed", r->vs_ref.n_window,
@@ -99,8 +99,7 @@ static int window_too_short(const dv_comparison *c, const dv_engine_result *r, d
 /* the engine's lying down against the reference's (run_event.h) */
 static void judge_event(const dv_comparison *c, const dv_traj *ref, const dv_engine_stats *ref_st,
                         double valid_end, dv_engine_result *r) {
-  const dv_run_end eng = {0.0, 1, r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0,
-                          r->stats.lay_down};
+  const dv_run_end eng = {0.0, 1, r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0, r->stats.lay_down};
   const dv_run_end own = {0.0, 1, ref->n ? ref->s[ref->n - 1].t : 0.0, ref_st->lay_down};
   dv_run_event_judge(c->sc, r->engine->name, &eng, &own, c->nudged, valid_end, &r->event);
   if (r->event.agrees) return;

@@ -69,7 +69,7 @@ typedef struct dv_comparison {
   double horizon;             /* s: the reference is predictable up to here (run_horizon.h) */
   double spread[DV_NMETRICS]; /* what a nudge of the reference alone moves each metric by */
   dv_run_end nudged[2];       /* how the nudged reference runs ended */
-  double min_window;          /* s: the scene's shortest time scale; a shorter window is not judged */
+  double min_window;          /* s: the scene's shortest time scale (no shorter window judged) */
   size_t n;
   dv_engine_result r[DV_MAX_ENGINES];
   int pass; /* every engine passed */
