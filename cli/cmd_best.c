@@ -19,20 +19,29 @@ static const char HELP[] =
     "simulated second times the integrator's seconds per step, calibrated once as the\n"
     "median over its probes (printed with min and max). Prints every probe (meets,\n"
     "marginal: within X but above the margin, exceeds, failed) and the winner.\n"
-    "Exit status 1 when no probe meets 0.5 X.\n";
+    "A failed probe says why. Exit status 1 when no probe meets 0.5 X, 2 when no probe\n"
+    "could run at all.\n";
 
-/* every probe, the calibration, then the winner; exit 1 when none passes */
+/* every probe, the calibration, then the winner; exit 1 when none passes, 2
+ * when every probe failed (no run measured anything) */
 static int print_search(const dv_search *s) {
   printf("%-12s %12s %12s %12s %12s %s\n", "choice", "step", "theta err", "steps / sim s",
          "s / sim s", "state");
+  size_t failed = 0;
   for (size_t i = 0; i < s->nprobes; i++) {
     const dv_probe *p = &s->probes[i];
-    printf("%-12s %12.4g %12.3e %12.6g %12.4g %s", p->choice, p->step,
-           p->point.metric[DV_THETA_MAX_ERR], p->steps_per_sim_s, p->cost,
-           dv_probe_state_name(p->state));
-    if (p->state == DV_PROBE_FAILED) printf(" (%s)", dv_search_failure_mode(p));
+    char err[32] = "n/a"; /* a run that failed measured nothing */
+    if (p->state != DV_PROBE_FAILED)
+      snprintf(err, sizeof err, "%.3e", p->point.metric[DV_THETA_MAX_ERR]);
+    printf("%-12s %12.4g %12s %12.6g %12.4g %s", p->choice, p->step, err, p->steps_per_sim_s,
+           p->cost, dv_probe_state_name(p->state));
+    if (p->state == DV_PROBE_FAILED)
+      printf(" (%s: %s)", dv_search_failure_mode(p), p->point.detail[0] ? p->point.detail : "?");
     printf("\n");
+    failed += p->state == DV_PROBE_FAILED;
   }
+  if (s->nprobes && failed == s->nprobes)
+    return dv_cli_error("best", "no probe could run: %s", s->probes[0].point.detail);
   printf("cost calibration, s per step (median of the probes' runs, min..max):");
   for (size_t k = 0; k < s->nchoices; k++) {
     const dv_step_cost *c = &s->step_cost[k];

@@ -45,7 +45,7 @@ int dv_cli_compare(int argc, char **argv) {
            dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
     code = dv_cli_error("compare", "%s", err.msg);
   else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &explain, &err)) == DV_EXIT_ERROR)
-    dv_cli_error("compare", "%s: %s", sc.name, err.msg);
+    dv_cli_error("compare", "%s: %s", sc.path, err.msg);
   else
     printf("report: %s/%s/report.md\n", out, sc.name);
   dv_io_unlock_dir(out, lock);

@@ -175,11 +175,14 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
   }
   if (!code && errors) code = DV_EXIT_ERROR;
   if (!code && converge + skipped < n * ne) code = DV_EXIT_FAIL;
+  const int none = !code && written && skipped == n * ne; /* not judged, never a pass */
+  if (none) code = DV_EXIT_FAIL;
   if (written && (code == DV_EXIT_OK || code == DV_EXIT_FAIL || converge))
     printf(
         "%zu of %zu engine runs converge to the reference (%zu skipped: the scenario names "
         "other engines); report: %s/verify.md\n",
         converge, n * ne - skipped, skipped, o->out);
+  if (none) printf("not judged: every case was skipped, none verified\n");
   if (written && ran == DV_VERIFY_SUITE_INTERRUPTED) {
     dv_cli_error("suite", "interrupted: the cases that ended are in %s/verify.md", o->out);
     code = 130; /* 128 + SIGINT, as shells report it, and as a compare suite exits */

@@ -69,6 +69,9 @@ typedef struct dv_engine_stats {
   dv_failure failure; /* DV_FAILURE_NONE unless the run failed */
   char detail[256];   /* why the run ended, when not completed */
   char method[256];   /* how the run was computed, where a reader needs to know, or "" */
+  /* the run ended where the disk lies down (DV_OUTCOME_EVENT): -1 at theta_limit,
+   * +1 at pi - theta_limit; 0 otherwise */
+  int lay_down;
 } dv_engine_stats;
 
 /* what an engine is for */

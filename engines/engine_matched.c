@@ -79,6 +79,8 @@ static void matched_stats(const void *p, dv_engine_stats *out) {
                                            : "theta reached its lying-down limit",
            e->t_event);
   dv_reference_stats(e->in, e->event, detail, out);
+  if (out->outcome == DV_OUTCOME_EVENT && e->event <= RR_EVENT_THETA_HIGH)
+    out->lay_down = e->event == RR_EVENT_THETA_LOW ? -1 : 1;
 }
 
 #define AT(field) offsetof(dv_matched_settings, field)

@@ -403,6 +403,7 @@ static int check_state(mujoco_engine *e) {
   if (fabs(p.R[8]) > e->cos_limit) {
     char detail[sizeof e->stats.detail];
     dv_engine_limit_detail(p.R[8] > 0.0, e->theta_limit, d->time, detail, sizeof detail);
+    e->stats.lay_down = p.R[8] > 0.0 ? -1 : 1;
     return end_run(e, DV_OUTCOME_EVENT, DV_FAILURE_NONE, "%s", detail);
   }
   dv_pose_lowest_point(&e->geom, &p, low, &slip);

@@ -407,6 +407,7 @@ static int ode_step(ode_engine *e, dv_error *err) {
     if (isnan(nz)) return ode_check_state(e, err);
     dv_engine_limit_detail(nz > 0.0, e->theta_limit, e->k * dt, e->st.detail, sizeof e->st.detail);
     e->st.outcome = DV_OUTCOME_EVENT;
+    e->st.lay_down = nz > 0.0 ? -1 : 1;
     e->status = DV_EVENT;
     return DV_EVENT;
   }

@@ -99,6 +99,7 @@ static void reduced_stats(const void *p, dv_engine_stats *out) {
   dv_engine_limit_detail(e->event == RED_EVENT_THETA_LOW, e->ref.theta_limit, NAN, detail,
                          sizeof detail);
   dv_reference_stats(e->in, e->event, detail, out);
+  if (out->outcome == DV_OUTCOME_EVENT) out->lay_down = e->event == RED_EVENT_THETA_LOW ? -1 : 1;
   if (e->period) snprintf(out->method, sizeof out->method, "%s", red_period_note(e->period));
 }
 

@@ -25,7 +25,7 @@
  *         "wall_s": s, the run's wall-clock time (the timing fields: wall_*),
  *         "steps": n,
  *         "outcome": "agrees"|"exceeds tolerance"|"diverged"|"lost contact"
- *                    |"ended by event"|"error"|"not judged",
+ *                    |"ended by event"|"error"|"not judged"|"outside validity",
  *         "detail": TEXT,
  *         "pass": bool,
  *         "failures": [TEXT, ...]   "SCENARIO: ENGINE: METRIC = V > LIMIT",
@@ -46,6 +46,13 @@
  *         "reference_note": TEXT,   why that reference is not the one for its
  *                                   geometry (a thick one that crossed upright
  *                                   falls back to the thin disk), or ""
+ *         "event": null | {"agrees": bool, "why": TEXT ("" when it agrees),
+ *                          "from": s | null, "to": s | null (no latest),
+ *                          "runs": TEXT}: the engine's lying down against
+ *                                   the reference's and the nudged runs'
+ *                                   (run_event.h); null where neither the
+ *                                   engine nor its reference lay down inside
+ *                                   the window
  *         "reference": {"engine": "matched" | "reduced", "half_thickness": m,
  *                       "integrator": NAME, "rtol": x, "outcome": TEXT, "t_end": s,
  *                       "wall_s": s (its own run; 0: the thin one above)}:

@@ -101,6 +101,19 @@ static cJSON *engine_reference_json(const dv_comparison *c, const dv_engine_resu
   return o;
 }
 
+/* the lying-down judgement: null where neither the engine nor its reference lay down */
+static cJSON *event_json(const dv_engine_result *r) {
+  const dv_event_verdict *e = &r->event;
+  if (!e->judged) return cJSON_CreateNull();
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddBoolToObject(o, "agrees", e->agrees);
+  cJSON_AddStringToObject(o, "why", e->why);
+  cJSON_AddItemToObject(o, "from", dv_io_json_number(e->from));
+  cJSON_AddItemToObject(o, "to", dv_io_json_number(e->to));
+  cJSON_AddStringToObject(o, "runs", e->note);
+  return o;
+}
+
 static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON *o = metrics_json(r->vs_ref.value);
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
@@ -131,6 +144,7 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddStringToObject(o, "cause", r->cause);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
   cJSON_AddStringToObject(o, "reference_note", r->reference_note);
+  cJSON_AddItemToObject(o, "event", event_json(r));
   cJSON_AddItemToObject(o, "reference", engine_reference_json(c, r));
   cJSON_AddItemToObject(o, "vs_thin", metrics_json(r->vs_thin.value));
   cJSON_AddItemToObject(o, "geometry_share", geometry_share_json(c, r));
@@ -219,6 +233,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             r->engine->name, dv_run_verdict_name(r->verdict), r->decided, r->vs_ref.t_window,
             100 * r->window_fraction, r->pointwise_end);
     if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
+    if (r->event.judged)
+      fprintf(fp, "Lying down: %s%s%s.\n\n", r->event.agrees ? "agrees" : r->event.why,
+              r->event.agrees ? " with the reference: " : ": ", r->event.note);
     fprintf(fp,
             "| metric | value | limit | margin (value / limit) | limit from |\n"
             "|---|---|---|---|---|\n");
@@ -368,6 +385,7 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
             dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR],
             r->vs_ref.value[DV_PATH_MAX_ERR], r->pass ? "pass" : "FAIL");
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);
+    if (r->event.judged && r->event.agrees) fprintf(fp, "    lies down: %s\n", r->event.note);
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
   }
 }

@@ -8,6 +8,7 @@
 #include <time.h>
 
 #include "dv_reference.h"
+#include "engine_scene.h"
 #include "run_horizon.h"
 #include "run_limits.h"
 #include "run_progress.h"
@@ -80,18 +81,55 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
     snprintf(r->decided, sizeof r->decided, "every metric within its limit (%s)", part);
 }
 
-static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_engine_result *r) {
+/* a window too short to judge: why into why, 0 when it is long enough */
+static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0, char *why,
+                            size_t size) {
+  const double span = r->vs_ref.t_window - t0;
+  if (r->vs_ref.n_window < DV_MIN_WINDOW_SAMPLES)
+    snprintf(why, size, "%zu samples, at least %d needed", r->vs_ref.n_window,
+             DV_MIN_WINDOW_SAMPLES);
+  else if (span < c->min_window)
+    snprintf(why, size, "%g s, shorter than the scene's shortest time scale %g s", span,
+             c->min_window);
+  else
+    return 0;
+  return 1;
+}
+
+/* the engine's lying down against the reference's (run_event.h) */
+static void judge_event(const dv_comparison *c, const dv_traj *ref, const dv_engine_stats *ref_st,
+                        double valid_end, dv_engine_result *r) {
+  const dv_run_end eng = {0.0, 1, r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0, r->stats.lay_down};
+  const dv_run_end own = {0.0, 1, ref->n ? ref->s[ref->n - 1].t : 0.0, ref_st->lay_down};
+  dv_run_event_judge(c->sc, r->engine->name, &eng, &own, c->nudged, valid_end, &r->event);
+  if (r->event.agrees) return;
+  r->verdict = r->stats.lay_down ? DV_VERDICT_ENDED_BY_EVENT : DV_VERDICT_EXCEEDS;
+  add_failure(r, "%s: %s: %s: %s", c->sc->name, r->engine->name, r->event.why, r->event.note);
+}
+
+static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_stats *ref_st,
+                  double ref_end, int itself, dv_engine_result *r) {
+  const dv_scenario *sc = c->sc;
   const char *name = r->engine->name;
   const double t_ref = fmin(ref_end, ref->n ? ref->s[ref->n - 1].t : 0.0);
   const double t_eng = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   r->verdict = DV_VERDICT_AGREES;
   const double t0 = ref->n ? ref->s[0].t : 0.0, t_run = ref->n ? ref->s[ref->n - 1].t : 0.0;
   r->window_fraction = t_run > t0 ? (r->vs_ref.t_window - t0) / (t_run - t0) : 0.0;
-  if (r->status < 0 && t_eng < t_ref - 0.5 * sc->output_dt) {
+  char why[160];
+  if (itself) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r,
+                "%s: %s: not judged: %s is the reference it would be compared with (the same "
+                "engine on the same scenario): its errors are zero and measure nothing",
+                sc->name, name, name);
+  } else if (r->status < 0 && t_eng < t_ref - 0.5 * sc->output_dt) {
     const dv_verdict v = dv_run_verdict_of_outcome(r->stats.outcome);
     r->verdict = dv_run_verdict_failed(v) ? v : DV_VERDICT_ERROR;
     add_failure(r, "%s: %s: %s at t = %g s: %s", sc->name, name, dv_run_verdict_name(r->verdict),
                 t_eng, r->stats.detail);
+  } else if (r->status >= 0) {
+    judge_event(c, ref, ref_st, ref_end, r);
   }
   /* a window the reference's run does not fill (it ended before the first
    * samples, or left the validity window at once) measures nothing */
@@ -106,6 +144,10 @@ static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_
                 100 * r->window_fraction, t_run - t0, 100 * DV_MIN_WINDOW_FRACTION,
                 validity ? "the contact force rolling needs leaves the friction cone there"
                          : "the engine or the reference ended there");
+  } else if (r->verdict == DV_VERDICT_AGREES && window_too_short(c, r, t0, why, sizeof why)) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r, "%s: %s: not judged: the compared window, to t = %g s, is too short: %s",
+                sc->name, name, r->vs_ref.t_window, why);
   }
   const int judged =
       r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
@@ -122,6 +164,21 @@ static void judge(const dv_scenario *sc, const dv_traj *ref, double ref_end, dv_
     r->verdict = DV_VERDICT_ENDED_BY_EVENT;
   r->pass = r->nfailures == 0;
   say_decided(sc, r);
+}
+
+/* a reference run that failed: err names the run, what */
+static int reference_failed(int status, const char *what, dv_error *err) {
+  dv_error cause = *err;
+  return dv_fail(err, status, "%s: %s", what, cause.msg);
+}
+
+/* the shortest of the scene's own time scales (not its duration) */
+static double shortest_scale(const dv_scenario *sc) {
+  dv_scene_scales s;
+  dv_engine_scene_scales(sc, &s);
+  double t = INFINITY;
+  for (int k = 0; k < DV_SCALE_DURATION; k++) t = fmin(t, s.t[k]);
+  return t;
 }
 
 /* run type over sc into tr; wall time and stats */
@@ -144,13 +201,18 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
   dv_run_progress_plan(sc, ref_sc, engines, n); /* a long comparison says so first */
+  c->min_window = shortest_scale(sc);
   int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, &c->thin_wall_s, err);
-  if (status < 0) return status;
+  if (status < 0) {
+    char what[64];
+    snprintf(what, sizeof what, "the %s reference", thin->name);
+    return reference_failed(status, what, err);
+  }
   c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
   const double t_horizon = dv_clock_now();
-  status = dv_run_horizon(ref_sc, &c->thin, &c->horizon, c->spread, err);
+  status = dv_run_horizon(ref_sc, &c->thin, &c->horizon, c->spread, c->nudged, err);
   c->horizon_wall_s = dv_clock_now() - t_horizon;
-  if (status < 0) return status;
+  if (status < 0) return status; /* err names the nudged run */
   for (size_t i = 0; i < n; i++) {
     dv_engine_result *r = &c->r[c->n++];
     dv_error e = {{0}};
@@ -167,7 +229,12 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
           dv_scenario_set_number(&match, matched->name, "half_thickness", r->half_thickness, err);
       if (!status)
         status = run_into(matched, &match, &r->matched, &r->matched_stats, &r->matched_wall_s, err);
-      if (status < 0) return status;
+      if (status < 0) {
+        char what[128];
+        snprintf(what, sizeof what, "the %s reference (h = %g m) of %s", matched->name,
+                 r->half_thickness, engines[i]->name);
+        return reference_failed(status, what, err);
+      }
       ref = &r->matched;
       ref_end = INFINITY; /* the matched reference ends at its own validity limit */
       if (crossed_upright(&r->matched, &r->matched_stats)) {
@@ -205,7 +272,9 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                  c->spread[m]);
       }
     }
-    judge(sc, ref, ref_end, r);
+    const dv_engine_stats *ref_st = ref == &c->thin ? &c->thin_stats : &r->matched_stats;
+    const int itself = ref_sc == sc && engines[i] == (ref == &c->thin ? thin : matched);
+    judge(c, ref, ref_st, ref_end, itself, r);
     c->pass &= r->pass;
   }
   return DV_OK;

@@ -9,12 +9,20 @@
  * path_max_err, path_rms_err) cover the window up to the reference's
  * predictability horizon (run_horizon.h); the timing-insensitive ones
  * (path_hausdorff, theta_extrema_err, energy_drift, invariant_drift,
- * slip_max) the whole window.
+ * slip_max) the whole window. An engine's lying down is judged against the
+ * reference's and the nudged runs' (run_event.h).
+ *
+ * Not judged, never a pass: an engine that is the reference it would be
+ * compared with (the same engine on the same scenario: it measures nothing),
+ * and a window of fewer than DV_MIN_WINDOW_SAMPLES samples, or shorter than
+ * the scene's shortest time scale (engine_scene.h: spin, turning, wobble,
+ * growth, fall), or than DV_MIN_WINDOW_FRACTION of the reference's run.
  */
 #ifndef DV_RUN_H
 #define DV_RUN_H
 
 #include "run_compare.h"
+#include "run_event.h"
 #include "run_verdict.h"
 #include "dv_engine.h"
 #include "scenario.h"
@@ -23,6 +31,8 @@
 #define DV_MAX_FAILURES (DV_NMETRICS + 1)
 /* a compared window shorter than this share of the reference's run is not judged */
 #define DV_MIN_WINDOW_FRACTION 0.1
+/* nor one of fewer samples than this (the first is the shared start) */
+#define DV_MIN_WINDOW_SAMPLES 10
 
 typedef struct dv_engine_result {
   const dv_engine_type *engine;
@@ -42,6 +52,7 @@ typedef struct dv_engine_result {
   char decided[160];                /* which part decided the verdict, and why */
   char cause[96];                   /* an excess's dominant cause, from attribution ("": unknown) */
   char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
+  dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -57,6 +68,8 @@ typedef struct dv_comparison {
   double thin_valid_end;      /* where rolling stops describing the physics, s */
   double horizon;             /* s: the reference is predictable up to here (run_horizon.h) */
   double spread[DV_NMETRICS]; /* what a nudge of the reference alone moves each metric by */
+  dv_run_end nudged[2];       /* how the nudged reference runs ended */
+  double min_window;          /* s: the scene's shortest time scale (no shorter window judged) */
   size_t n;
   dv_engine_result r[DV_MAX_ENGINES];
   int pass; /* every engine passed */

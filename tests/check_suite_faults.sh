@@ -77,7 +77,7 @@ check '[ $code -eq 2 ]' "error: exit $code, want 2"
 check 'grep -q "^slow: error: .*$why" stdout' "error: stdout does not say so: $(cat stdout)"
 check '[ "$(summary pass slow)" = false ] && [[ "$(summary error slow)" == *"$why"* ]]' \
   "error: summary.json says pass $(summary pass slow), error $(summary error slow)"
-check 'grep -q "<error message=\"gsl-rk8pd $why" out/junit.xml && ! grep -q "cannot open" out/junit.xml' \
+check 'grep -q "<error message=\"the reduced reference: gsl-rk8pd $why" out/junit.xml && ! grep -q "cannot open" out/junit.xml' \
   "error: junit.xml lacks the real cause: $(grep "<error" out/junit.xml)"
 check 'grep -q "$why" out/index.html' "error: index.html lacks the cause"
 check '[ ! -e out/slow/theta.svg ]' "error: the earlier report's plots remain"
