@@ -107,16 +107,13 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
   size_t ne = 0;
   while (engines[ne]) ne++;
   const size_t n = files->n;
-  const char **names = malloc(n * sizeof *names);
   dv_verify_case *cases = calloc(n * ne, sizeof *cases);
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
-  if (!names || !cases) code = dv_cli_error("suite", "out of memory");
-  for (size_t i = 0; !code && i < n; i++) names[i] = scs[i].name;
+  if (!cases) code = dv_cli_error("suite", "out of memory");
   if (!code && dv_io_make_dirs(o->out, &err)) code = dv_cli_error("suite", "%s", err.msg);
-  const int ran = code ? DV_OK
-                       : dv_search_verify_suite(files->items, names, n, sets->items, sets->n,
-                                                engines, ne, o->jobs, o->timeout, cases, &err);
+  const int ran =
+      code ? DV_OK : dv_search_verify_suite(scs, n, engines, ne, o->jobs, o->timeout, cases, &err);
   if (!code && ran < 0) code = dv_cli_error("suite", "%s", err.msg);
   const int written = !code && (ran == DV_OK || ran == DV_VERIFY_SUITE_INTERRUPTED);
   char junit[1100];
@@ -141,7 +138,6 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
     dv_cli_error("suite", "interrupted: the cases that ended are in %s/verify.md", o->out);
     code = 130; /* 128 + SIGINT, as shells report it, and as a compare suite exits */
   }
-  free(names);
   free(cases);
   return code;
 }
@@ -159,8 +155,7 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
     dv_cli_error("suite", "%s", err.msg);
     return 130; /* 128 + SIGINT, as shells report it */
   }
-  if (o->stability &&
-      dv_search_stability_run(scs, n, engines, sets->items, sets->n, o->out, o->jobs, &err))
+  if (o->stability && dv_search_stability_run(scs, n, engines, o->out, o->jobs, &err))
     return dv_cli_error("suite", "stability: %s", err.msg);
   const char **dirs = malloc(n * sizeof *dirs);
   if (!dirs) return dv_cli_error("suite", "out of memory");
