@@ -118,10 +118,15 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
    * during the sweep, or a pipe, changes nothing) */
   if (dv_engine_load_scenario(scenario, sets->items, sets->n, sc, &err))
     return dv_cli_error("sweep", "%s", err.msg);
-  for (size_t v = 0; v < specs->n; v++)
+  for (size_t v = 0; v < specs->n; v++) {
     if (dv_search_vary_parse(specs->items[v], engine->name, &vary[v], &err) ||
         check_values(sc, &vary[v], &err))
       return dv_cli_error("sweep", "%s", err.msg);
+    for (size_t w = 0; w < v; w++) /* the later would silently win at every point */
+      if (!strcmp(vary[w].key, vary[v].key))
+        return dv_cli_usage_error("sweep", "--vary %s: %s is varied twice", specs->items[v],
+                                  vary[v].key);
+  }
   /* the output directory before any run: a bad --out fails at once */
   if (dv_exec_mpi_rank() == 0 && dv_io_make_dirs(out, &err))
     return dv_cli_error("sweep", "%s", err.msg);

@@ -65,7 +65,13 @@ static int apply(dv_scenario *sc, const char *text, dv_error *err) {
   const char *section = buf, *key = dot + 1, *value = eq + 1;
   if (!strncmp(section, "tolerance", 9) && (section[9] == '\0' || section[9] == '.'))
     return set_tolerance(sc, section, key, value, err);
-  if (!strncmp(section, "engines.", 8)) return dv_scenario_set(sc, section + 8, key, value, err);
+  if (!strncmp(section, "engines.", 8)) { /* the loader's words for what it does not know */
+    for (size_t i = 0; i < sc->nsections; i++)
+      if (!strcmp(sc->sections[i]->name, section + 8))
+        return dv_settings_find(sc->sections[i], key)
+                   ? dv_scenario_set(sc, section + 8, key, value, err)
+                   : dv_fail(err, DV_EINPUT, "%s.%s: unknown key in [%s]", section, key, section);
+  }
   for (size_t s = 0; s < DV_NCORE_SECTIONS; s++) {
     if (strcmp(dv_scenario_core[s].name, section)) continue;
     const dv_setting_spec *sp = dv_settings_find(&dv_scenario_core[s], key);

@@ -172,6 +172,8 @@ int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_ty
   if (pool == DV_EXEC_NOMEM) status = dv_fail(err, DV_ESYSTEM, "out of memory");
   if (!status && pool != DV_EXEC_WORKER) /* a worker rank: rank 0 writes */
     status = dv_search_stability_write(out_dir, rows, nt, err);
+  if (!status && pool == DV_EXEC_INTERRUPTED) /* written all the same: what ended */
+    status = dv_fail(err, DV_EVENT, "interrupted: the searches that did not end have no limit");
   free(rows);
   free(res);
   free(tk);

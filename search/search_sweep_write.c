@@ -137,7 +137,7 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
     }
     dv_format_precision(p->wall_per_sim_s, 6, num, sizeof num); /* timing: 6 digits say enough */
     fprintf(out.fp, ",%s,", num);
-    fprintf(out.fp, p->steps < 0 ? "NaN" : "%ld", p->steps); /* < 0: not run */
+    fprintf(out.fp, p->steps < 0 ? "nan" : "%ld", p->steps); /* < 0: not run */
     fprintf(out.fp, ",%s,%d\n", dv_run_verdict_name(p->verdict), p->pareto);
   }
   return dv_io_commit(&out, err);
