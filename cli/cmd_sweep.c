@@ -44,6 +44,18 @@ static int check_values(const dv_scenario *sc, const dv_vary *v, dv_error *err) 
   return status;
 }
 
+/* a key of another contact engine's section: no point of engine's sweep runs it */
+static const dv_engine_type *other_engine(const char *key, const dv_engine_type *engine) {
+  const char *dot = strrchr(key, '.');
+  if (strncmp(key, "engines.", 8) || !dot) return NULL;
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+    if (*e != engine && (*e)->role == DV_ENGINE_CONTACT &&
+        strlen((*e)->name) == (size_t)(dot - key - 8) &&
+        !strncmp(key + 8, (*e)->name, (size_t)(dot - key - 8)))
+      return *e;
+  return NULL;
+}
+
 /* the reference's own work-precision curves, for a contact engine's sweep */
 static int reference_curves(const dv_scenario *sc, int jobs, dv_sweep *ref, dv_error *err) {
   const dv_engine_type *e = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
@@ -122,6 +134,10 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
     if (dv_search_vary_parse(specs->items[v], engine->name, &vary[v], &err) ||
         check_values(sc, &vary[v], &err))
       return dv_cli_error("sweep", "%s", err.msg);
+    const dv_engine_type *other = other_engine(vary[v].key, engine);
+    if (other)
+      return dv_cli_usage_error("sweep", "--vary %s: a %s sweep never runs %s", specs->items[v],
+                                engine->name, other->name);
     for (size_t w = 0; w < v; w++) /* the later would silently win at every point */
       if (!strcmp(vary[w].key, vary[v].key))
         return dv_cli_usage_error("sweep", "--vary %s: %s is varied twice", specs->items[v],

@@ -47,8 +47,12 @@ int dv_cli_verify(int argc, char **argv) {
   dv_scenario sc; /* read once: every engine and step varies it in memory */
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
-  if (dv_cli_engine_list(list, engines, &err) ||
-      dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+  if (dv_cli_engine_list(list, engines, &err)) code = dv_cli_error("verify", "%s", err.msg);
+  for (size_t i = 0; !code && engines[i]; i++) /* not after the engines before it have run */
+    if (!engines[i]->contact || !engines[i]->search)
+      code = dv_cli_usage_error(
+          "verify", "--engines: %s is not a contact engine: nothing to verify", engines[i]->name);
+  if (!code && dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
     code = dv_cli_error("verify", "%s", err.msg);
   for (size_t i = 0; code != DV_EXIT_ERROR && engines[i]; i++) {
     dv_verification v;

@@ -42,6 +42,9 @@ expect "timestep: not a number: '1e-3x'" sweep "$sc" --engine mujoco --vary time
 expect "bogus: unknown key" sweep "$sc" --engine mujoco --vary bogus=1,2
 expect "integrator: .*rk5" sweep "$sc" --engine mujoco --vary integrator=rk5
 expect "timestep: -1 is outside" sweep "$sc" --engine mujoco --vary timestep=-1
+expect "engines.ode.timestep=1e-3: a mujoco sweep never runs ode" sweep "$sc" --engine mujoco \
+  --vary engines.ode.timestep=1e-3
+expect "^diskval verify: --engines: reduced is not a contact engine" verify "$sc" --engines mujoco,reduced
 expect "engines.mujoco.timestep is varied twice" sweep "$sc" --engine mujoco --vary timestep=1e-3 \
   --vary timestep=2e-3
 # an axis of the map's plots must increase: refused before any cell runs (the
