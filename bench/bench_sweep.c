@@ -17,7 +17,6 @@
 #include "run_trajectory.h"
 #include "dv_clock.h"
 
-
 static int discard(void *ctx, const dv_sample *s) {
   return 0;
 }
@@ -32,12 +31,14 @@ int main(int argc, char **argv) {
   dv_error err = {{0}};
   static dv_vary v;
   static dv_sweep s;
+  static dv_scenario short_sc, loaded;
   dv_search_vary_parse("timestep=1e-3..2e-4:16", "mujoco", &v, &err);
+  dv_engine_load_scenario(shortc, NULL, 0, &short_sc, &err);
 
   double t[2];
   for (int jobs = 1; jobs <= 2; jobs++) {
     const double t0 = dv_clock_now();
-    dv_search_sweep_run(shortc, NULL, 0, "mujoco", &v, 1, jobs, &s, &err);
+    dv_search_sweep_run(&short_sc, "mujoco", &v, 1, jobs, &s, &err);
     t[jobs - 1] = dv_clock_now() - t0;
     if (jobs == 2) break;
     dv_search_sweep_free(&s);
@@ -59,7 +60,8 @@ int main(int argc, char **argv) {
     dv_engine_stats st;
     const double t0 = dv_clock_now();
     dv_run_collect(&dv_engine_mujoco, &sc, discard, NULL, &st, &err);
-    engine += (dv_clock_now() - t0) * s.p[k].timed_runs; /* the compared run is the first timed one */
+    engine +=
+        (dv_clock_now() - t0) * s.p[k].timed_runs; /* the compared run is the first timed one */
     runs += s.p[k].timed_runs;
   }
   const double overhead = (t[0] - engine) / (double)s.n;
@@ -71,13 +73,14 @@ int main(int argc, char **argv) {
   const char *paths[2] = {circle, upright}, *names[2] = {"steady circle", "upright"};
   static dv_search b;
   for (int i = 0; i < 2; i++) {
-    dv_search_best(paths[i], NULL, 0, "reduced", 1e-10, &b, &err);
+    dv_engine_load_scenario(paths[i], NULL, 0, &loaded, &err);
+    dv_search_best(&loaded, "reduced", 1e-10, &b, &err);
     const double ref = b.best >= 0 ? b.probes[b.best].point.wall_per_sim_s : NAN;
     printf("%s: reference at theta error 1e-10: %s, %.3g s per simulated s\n", names[i],
            b.best >= 0 ? b.probes[b.best].choice : "-", ref);
     const char *engines[2] = {"mujoco", "ode"};
     for (int e = 0; e < 2; e++) {
-      dv_search_best(paths[i], NULL, 0, engines[e], 1e-3, &b, &err);
+      dv_search_best(&loaded, engines[e], 1e-3, &b, &err);
       if (b.best < 0) {
         printf("  %-7s cannot reach 1e-3 rad\n", engines[e]);
         continue;

@@ -35,8 +35,9 @@ struct dv_error;
 int dv_cli_engine_list(const char *list, const struct dv_engine_type **engines,
                        struct dv_error *err);
 
-/* the report layer's explainer of an engine's excess: attribution, with the
- * command's --set overrides (ctx: a dv_cli_list *) */
+/* the report layer's explainer of an engine's excess: attribution of the
+ * scenario as the command loaded it (its --set overrides applied: sets is
+ * kept for the callers, the file is not read again) */
 struct dv_report_explain;
 struct dv_cli_list;
 void dv_cli_explainer(const struct dv_cli_list *sets, struct dv_report_explain *out);

@@ -8,10 +8,10 @@
 
 /* dv_report_explain's cause: the dominant share of the engine's attribution */
 static int attribute(void *ctx, const dv_scenario *sc, const char *engine, char *out, size_t size) {
-  const dv_cli_list *sets = ctx;
   dv_attribution a;
   dv_error err = {{0}};
-  if (dv_search_attribute(sc->path, sets->items, sets->n, engine, &a, &err)) {
+  (void)ctx;
+  if (dv_search_attribute(sc, engine, &a, &err)) {
     snprintf(out, size, "unknown (%s)", err.msg);
     return 0;
   }

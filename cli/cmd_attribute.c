@@ -69,12 +69,15 @@ int dv_cli_attribute(int argc, char **argv) {
   dv_run_progress_start("attribute", a.quiet, 0);
   int code = DV_EXIT_OK;
   dv_attribution at;
+  dv_scenario sc; /* read once: every probe varies it in memory */
   dv_error err = {{0}};
   if (!engine)
     code = dv_cli_usage_error("attribute", "no --engine given");
   else if (!dv_engine_find(engine))
     code = dv_cli_unknown_engine("attribute", engine);
-  else if (dv_search_attribute(a.args.items[0], a.sets.items, a.sets.n, engine, &at, &err))
+  else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+    code = dv_cli_error("attribute", "%s", err.msg);
+  else if (dv_search_attribute(&sc, engine, &at, &err))
     code = dv_cli_error("attribute", "%s", err.msg);
   else
     print_attribution(engine, &at);

@@ -75,6 +75,7 @@ int dv_cli_best(int argc, char **argv) {
   dv_run_progress_start("best", a.quiet, 0);
   int code;
   dv_search *s = calloc(1, sizeof *s);
+  dv_scenario *sc = malloc(sizeof *sc); /* read once: every probe varies it in memory */
   dv_error err = {{0}};
   if (!engine)
     code = dv_cli_usage_error("best", "no --engine given");
@@ -82,13 +83,15 @@ int dv_cli_best(int argc, char **argv) {
     code = dv_cli_unknown_engine("best", engine);
   else if (isnan(tol))
     code = dv_cli_usage_error("best", "no --theta-tol given");
-  else if (!s)
+  else if (!s || !sc)
     code = dv_cli_error("best", "out of memory");
-  else if (dv_search_best(a.args.items[0], a.sets.items, a.sets.n, engine, tol, s, &err))
+  else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, sc, &err) ||
+           dv_search_best(sc, engine, tol, s, &err))
     code = dv_cli_error("best", "%s", err.msg);
   else
     code = print_search(s);
   free(s);
+  free(sc);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

@@ -226,7 +226,7 @@ static void default_engines(map *mp) {
 }
 
 /* the values of --option (a list or a log range) into out, every one a number
- * in (lo, hi]; errors name the option as typed */
+ * in (lo, hi], increasing (an axis of the plots); errors name the option as typed */
 static int parse_axis(const char *option, const char *spec, double lo, double hi,
                       const char *range_what, dv_vary *out) {
   char as_typed[160];
@@ -244,6 +244,10 @@ static int parse_axis(const char *option, const char *spec, double lo, double hi
     if (*end || !(v > lo && v <= hi))
       return dv_cli_usage_error("map", "--%s %s: '%s': %s must lie in (%.6g, %.6g]", option, spec,
                                 out->values[i], range_what, lo, hi);
+    /* checked here, not by the plot after every cell has run */
+    if (i > 0 && !(v > value(out, i - 1)))
+      return dv_cli_usage_error("map", "--%s %s: the values must increase ('%s' after '%s')",
+                                option, spec, out->values[i], out->values[i - 1]);
   }
   return DV_EXIT_OK;
 }

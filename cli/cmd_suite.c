@@ -150,16 +150,13 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
   size_t ne = 0;
   while (engines[ne]) ne++;
   const size_t n = files->n;
-  const char **names = malloc(n * sizeof *names);
   dv_verify_case *cases = calloc(n * ne, sizeof *cases);
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
-  if (!names || !cases) code = dv_cli_error("suite", "out of memory");
-  for (size_t i = 0; !code && i < n; i++) names[i] = scs[i].name;
+  if (!cases) code = dv_cli_error("suite", "out of memory");
   if (!code && dv_io_make_dirs(o->out, &err)) code = dv_cli_error("suite", "%s", err.msg);
-  const int ran = code ? DV_OK
-                       : dv_search_verify_suite(files->items, names, n, sets->items, sets->n,
-                                                engines, ne, o->jobs, o->timeout, cases, &err);
+  const int ran =
+      code ? DV_OK : dv_search_verify_suite(scs, n, engines, ne, o->jobs, o->timeout, cases, &err);
   if (!code && ran < 0) code = dv_cli_error("suite", "%s", err.msg);
   const int written = !code && (ran == DV_OK || ran == DV_VERIFY_SUITE_INTERRUPTED);
   char junit[1100];
@@ -187,7 +184,6 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
     dv_cli_error("suite", "interrupted: the cases that ended are in %s/verify.md", o->out);
     code = 130; /* 128 + SIGINT, as shells report it, and as a compare suite exits */
   }
-  free(names);
   free(cases);
   return code;
 }
@@ -201,25 +197,28 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
   const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, o->timeout, &explain,
                                           codes, causes, &err);
   if (ran == DV_SUITE_RUN_WORKER) return DV_EXIT_OK; /* an MPI worker rank: rank 0 reports */
-  if (ran == DV_EVENT) {
-    dv_cli_error("suite", "%s", err.msg);
-    return 130; /* 128 + SIGINT, as shells report it */
-  }
-  if (o->stability &&
-      dv_search_stability_run(scs, n, engines, sets->items, sets->n, o->out, o->jobs, &err))
-    return dv_cli_error("suite", "stability: %s", err.msg);
-  const char **dirs = malloc(n * sizeof *dirs);
+  int stopped = ran == DV_EVENT; /* the suite-level files then say what did not end */
+  if (stopped) dv_cli_error("suite", "%s", err.msg);
+  const int stable = o->stability && !stopped
+                         ? dv_search_stability_run(scs, n, engines, o->out, o->jobs, &err)
+                         : DV_OK;
+  if (stable < 0) return dv_cli_error("suite", "stability: %s", err.msg);
+  if (stable == DV_EVENT) stopped = 1, dv_cli_error("suite", "stability: %s", err.msg);
+  const char **dirs = malloc((2 * n + 1) * sizeof *dirs), **not_ended = dirs + n;
   if (!dirs) return dv_cli_error("suite", "out of memory");
   int code = DV_EXIT_OK;
   for (size_t i = 0; i < n; i++) {
     dirs[i] = scs[i].name;
+    not_ended[i] = codes[i] == DV_SUITE_NOT_ENDED ? causes[i].msg : NULL;
     if (codes[i] > code) code = codes[i] > DV_EXIT_ERROR ? DV_EXIT_ERROR : codes[i];
   }
   char junit[1100];
   snprintf(junit, sizeof junit, "%s/junit.xml", o->out);
-  const int written = dv_report_suite_write(o->out, dirs, n, o->junit ? o->junit : junit, &err);
+  const int written =
+      dv_report_suite_write_ended(o->out, dirs, not_ended, n, o->junit ? o->junit : junit, &err);
   free(dirs);
   if (written) return dv_cli_error("suite", "%s", err.msg);
+  if (stopped) return 130; /* 128 + SIGINT, as shells report it */
   for (size_t i = 0; i < n; i++)
     if (codes[i] == DV_EXIT_ERROR) printf("%s: error: %s\n", scs[i].name, causes[i].msg);
   printf("%zu scenarios: %s; report: %s/index.html\n", n,

@@ -29,28 +29,36 @@ static const char HELP[] =
     "before a sweep longer than a minute.\n";
 
 /* every varied value is a valid scenario value before anything runs */
-static int check_values(const char *scenario, const dv_cli_list *sets, const dv_vary *v,
-                        dv_error *err) {
-  const char **over = malloc((sets->n + 1) * sizeof *over);
-  if (!over) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  if (sets->n) memcpy(over, sets->items, sets->n * sizeof *over);
+static int check_values(const dv_scenario *sc, const dv_vary *v, dv_error *err) {
+  dv_scenario *with = malloc(sizeof *with);
+  if (!with) return dv_fail(err, DV_ESYSTEM, "out of memory");
   int status = DV_OK;
   for (size_t i = 0; !status && i < v->n; i++) {
     char text[256];
+    const char *over[1] = {text};
     snprintf(text, sizeof text, "%.100s=%.100s", v->key, v->values[i]);
-    over[sets->n] = text;
-    dv_scenario sc;
     dv_error e = {{0}};
-    if (dv_engine_load_scenario(scenario, over, sets->n + 1, &sc, &e))
+    if (dv_scenario_with(sc, over, 1, with, &e))
       status = dv_fail(err, DV_EINPUT, "--vary %s=%s: %s", v->key, v->values[i], e.msg);
   }
-  free(over);
+  free(with);
   return status;
 }
 
+/* a key of another contact engine's section: no point of engine's sweep runs it */
+static const dv_engine_type *other_engine(const char *key, const dv_engine_type *engine) {
+  const char *dot = strrchr(key, '.');
+  if (strncmp(key, "engines.", 8) || !dot) return NULL;
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+    if (*e != engine && (*e)->role == DV_ENGINE_CONTACT &&
+        strlen((*e)->name) == (size_t)(dot - key - 8) &&
+        !strncmp(key + 8, (*e)->name, (size_t)(dot - key - 8)))
+      return *e;
+  return NULL;
+}
+
 /* the reference's own work-precision curves, for a contact engine's sweep */
-static int reference_curves(const char *scenario, const dv_cli_list *sets, int jobs, dv_sweep *ref,
-                            dv_error *err) {
+static int reference_curves(const dv_scenario *sc, int jobs, dv_sweep *ref, dv_error *err) {
   const dv_engine_type *e = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   const dv_setting_spec *choice = dv_settings_find(e->settings, e->search->choice_key);
   char spec[512];
@@ -62,7 +70,7 @@ static int reference_curves(const char *scenario, const dv_cli_list *sets, int j
   if (dv_search_vary_parse(spec, e->name, &rv[0], err) ||
       dv_search_vary_parse(e->search->work_precision, e->name, &rv[1], err))
     return DV_EINPUT;
-  return dv_search_sweep_run(scenario, sets->items, sets->n, e->name, rv, 2, jobs, ref, err);
+  return dv_search_sweep_run(sc, e->name, rv, 2, jobs, ref, err);
 }
 
 /* one line a point: its values, theta error, cost, Pareto mark and verdict */
@@ -80,6 +88,14 @@ static void print_points(const dv_sweep *s) {
 
 /* per curve: the order where the errors fall, and the accuracy floor with its cause */
 static void print_curves(const dv_sweep *s) {
+  const dv_engine_type *e = dv_engine_find(s->engine);
+  if (!dv_search_sweep_fits_order(s)) { /* e.g. disk.radius: no order, no floor */
+    if (e && e->search && s->nvary)
+      printf("no order of convergence: %s is not %s's step (engines.%s.%s)\n",
+             s->vary[dv_search_sweep_curve_key(s)].key, s->engine, e->search->section,
+             e->search->step_key);
+    return;
+  }
   for (size_t k = 0; k < s->n; k++) {
     char label[96];
     dv_step_fit fit;
@@ -101,7 +117,8 @@ static void print_curves(const dv_sweep *s) {
 
 /* the command once its options are read; s and ref are the caller's */
 static int sweep(const char *scenario, const dv_cli_list *sets, const char *engine_name,
-                 const dv_cli_list *specs, const char *out, int jobs, dv_sweep *s, dv_sweep *ref) {
+                 const dv_cli_list *specs, const char *out, int jobs, dv_sweep *s, dv_sweep *ref,
+                 dv_scenario *sc) {
   if (!engine_name) return dv_cli_usage_error("sweep", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_cli_unknown_engine("sweep", engine_name);
@@ -110,31 +127,45 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
     return dv_cli_usage_error("sweep", "at most %d --vary options", DV_SWEEP_MAX_VARY);
   dv_vary vary[DV_SWEEP_MAX_VARY];
   dv_error err = {{0}};
-  for (size_t v = 0; v < specs->n; v++)
+  /* read once: every point is this scenario with its settings (a file edited
+   * during the sweep, or a pipe, changes nothing) */
+  if (dv_engine_load_scenario(scenario, sets->items, sets->n, sc, &err))
+    return dv_cli_error("sweep", "%s", err.msg);
+  for (size_t v = 0; v < specs->n; v++) {
     if (dv_search_vary_parse(specs->items[v], engine->name, &vary[v], &err) ||
-        check_values(scenario, sets, &vary[v], &err))
+        check_values(sc, &vary[v], &err))
       return dv_cli_error("sweep", "%s", err.msg);
+    const dv_engine_type *other = other_engine(vary[v].key, engine);
+    if (other)
+      return dv_cli_usage_error("sweep", "--vary %s: a %s sweep never runs %s", specs->items[v],
+                                engine->name, other->name);
+    for (size_t w = 0; w < v; w++) /* the later would silently win at every point */
+      if (!strcmp(vary[w].key, vary[v].key))
+        return dv_cli_usage_error("sweep", "--vary %s: %s is varied twice", specs->items[v],
+                                  vary[v].key);
+  }
   /* the output directory before any run: a bad --out fails at once */
   if (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   if (dv_exec_mpi_size() > 1) s->checkpoint_dir = out; /* rank 0 keeps the tables current */
-  if (dv_search_sweep_run(scenario, sets->items, sets->n, engine->name, vary, specs->n, jobs, s,
-                          &err) < 0)
+  if (dv_search_sweep_run(sc, engine->name, vary, specs->n, jobs, s, &err) < 0)
     return dv_cli_error("sweep", "%s", err.msg);
   /* not after an interrupted MPI run, whose ranks are going */
   const int with_ref = engine->role == DV_ENGINE_CONTACT && !s->interrupted;
-  if (with_ref && reference_curves(scenario, sets, jobs, ref, &err) < 0)
+  if (with_ref && reference_curves(sc, jobs, ref, &err) < 0)
     return dv_cli_error("sweep", "reference: %s", err.msg);
   if (dv_exec_mpi_rank() != 0) return DV_EXIT_OK; /* rank 0 writes */
-  if (!s->interrupted && dv_search_sweep_floor_causes(scenario, sets->items, sets->n, s, &err))
+  if (!s->interrupted && dv_search_sweep_floor_causes(sc, s, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   if (dv_search_sweep_write(out, s, with_ref ? ref : NULL, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   print_points(s);
   print_curves(s);
   printf("sweep: %s/sweep.csv, %s/work_precision.svg\n", out, out);
-  if (s->interrupted)
-    return dv_cli_error("sweep", "stopped early: the points not run are marked missing");
+  if (s->interrupted) {
+    dv_cli_error("sweep", "interrupted: the points not run are marked missing, their metrics NaN");
+    return 130; /* 128 + SIGINT, as shells report it, and as an interrupted suite exits */
+  }
   return DV_EXIT_OK;
 }
 
@@ -154,7 +185,10 @@ int dv_cli_sweep(int argc, char **argv) {
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("sweep", a.quiet, 0);
   dv_sweep s = {0}, ref = {0};
-  const int code = sweep(a.args.items[0], &a.sets, engine, &specs, out, jobs, &s, &ref);
+  dv_scenario *sc = malloc(sizeof *sc);
+  const int code = sc ? sweep(a.args.items[0], &a.sets, engine, &specs, out, jobs, &s, &ref, sc)
+                      : dv_cli_error("sweep", "out of memory");
+  free(sc);
   dv_search_sweep_free(&s);
   dv_search_sweep_free(&ref);
   dv_cli_args_free(&cmd, &a);

@@ -44,12 +44,19 @@ int dv_cli_verify(int argc, char **argv) {
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("verify", a.quiet, 0);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
+  dv_scenario sc; /* read once: every engine and step varies it in memory */
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
   if (dv_cli_engine_list(list, engines, &err)) code = dv_cli_error("verify", "%s", err.msg);
+  for (size_t i = 0; !code && engines[i]; i++) /* not after the engines before it have run */
+    if (!engines[i]->contact || !engines[i]->search)
+      code = dv_cli_usage_error(
+          "verify", "--engines: %s is not a contact engine: nothing to verify", engines[i]->name);
+  if (!code && dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+    code = dv_cli_error("verify", "%s", err.msg);
   for (size_t i = 0; code != DV_EXIT_ERROR && engines[i]; i++) {
     dv_verification v;
-    if (dv_search_verify(a.args.items[0], a.sets.items, a.sets.n, engines[i]->name, &v, &err))
+    if (dv_search_verify(&sc, engines[i]->name, &v, &err))
       code = dv_cli_error("verify", "%s", err.msg);
     else if (print_verification(engines[i]->name, &v))
       code = DV_EXIT_FAIL;

@@ -315,8 +315,9 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
 }
 
 /* load every report, then write the files: all opened before any is committed */
-int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs, size_t n,
-                          const char *junit_path, dv_error *err) {
+int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario_dirs,
+                                const char *const *not_ended, size_t n, const char *junit_path,
+                                dv_error *err) {
   dv_io_file outs[3];
   char paths[2][PATH_CAP];
   entry *es = NULL;
@@ -337,7 +338,12 @@ int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs,
   int pass = 1;
   if ((es = calloc(n ? n : 1, sizeof *es))) {
     for (size_t i = 0; i < n; i++) {
-      load_entry(out_dir, scenario_dirs[i], &es[i]);
+      if (not_ended && not_ended[i]) {
+        es[i].dir = es[i].name = scenario_dirs[i];
+        snprintf(es[i].error, sizeof es[i].error, "%s", not_ended[i]);
+      } else {
+        load_entry(out_dir, scenario_dirs[i], &es[i]);
+      }
       pass &= scenario_pass(&es[i]);
     }
     summary = summary_text(es, n, pass);
@@ -361,4 +367,9 @@ cleanup:
   free(es);
   free(summary);
   return status;
+}
+
+int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs, size_t n,
+                          const char *junit_path, dv_error *err) {
+  return dv_report_suite_write_ended(out_dir, scenario_dirs, NULL, n, junit_path, err);
 }

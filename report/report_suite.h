@@ -61,4 +61,12 @@
 int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs, size_t n,
                           const char *junit_path, dv_error *err);
 
+/* the same for a run that did not end (SIGINT): scenario i with
+ * not_ended[i] != NULL is a harness error with that text as its cause, and
+ * its directory (an earlier run's report, or none) is not read: the files
+ * describe this run only */
+int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario_dirs,
+                                const char *const *not_ended, size_t n, const char *junit_path,
+                                dv_error *err);
+
 #endif

@@ -141,9 +141,12 @@ int dv_report_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_ty
       fprintf(stderr, "diskval suite: %s: %s\n", scs[i].name, results[i].cause.msg);
   }
   for (size_t i = 0; i < n; i++) {
-    codes[i] =
-        done[i] == DV_EXEC_ARRIVED || pool == DV_EXEC_DONE ? results[i].code : DV_SUITE_ERROR;
+    codes[i] = done[i] == DV_EXEC_ARRIVED || pool == DV_EXEC_DONE ? results[i].code
+               : pool == DV_EXEC_INTERRUPTED                      ? DV_SUITE_NOT_ENDED
+                                                                  : DV_SUITE_ERROR;
     causes[i] = results[i].cause;
+    if (codes[i] == DV_SUITE_NOT_ENDED)
+      dv_fail(&causes[i], DV_EVENT, "did not end: the suite was interrupted");
     finished += done[i] == DV_EXEC_ARRIVED && codes[i] != DV_SUITE_ERROR;
   }
   /* the temporaries of the scenarios stopped or killed at their time limit */

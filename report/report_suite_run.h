@@ -21,7 +21,8 @@
 typedef enum dv_suite_result {
   DV_SUITE_PASS = 0,
   DV_SUITE_FAIL = 1,
-  DV_SUITE_ERROR = 2
+  DV_SUITE_ERROR = 2,
+  DV_SUITE_NOT_ENDED = 3 /* still running, or not started, when the suite was interrupted */
 } dv_suite_result;
 
 /* explains why an engine exceeds its limits (attribution lives above this
@@ -52,8 +53,9 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
  * is counted on the progress line (run_progress.h). SIGINT or SIGTERM
  * stops it: running scenarios are ended, their temporary directories
  * removed, finished
- * reports kept; returns DV_EVENT then (err says how many finished), else
- * DV_OK, or DV_SUITE_RUN_WORKER. */
+ * reports kept; the others' codes[] are DV_SUITE_NOT_ENDED (their
+ * directories hold an earlier run's report, or none); returns DV_EVENT then
+ * (err says how many finished), else DV_OK, or DV_SUITE_RUN_WORKER. */
 int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n,
                             const dv_engine_type *const *engines, const char *out_dir, int jobs,
                             double timeout, const dv_report_explain *explain, int *codes,

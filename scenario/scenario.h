@@ -98,6 +98,7 @@ typedef struct dv_scenario {
   char derived[DV_MAX_ENGINE_SECTIONS][DV_DERIVED_BYTES];
   unsigned derived_keys[DV_MAX_ENGINE_SECTIONS]; /* bit i: the section's key i was derived */
   unsigned given_keys[DV_MAX_ENGINE_SECTIONS];   /* bit i: the file, --set or code set key i */
+  unsigned core_given[3]; /* the same for [scenario], [disk], [initial] (dv_scenario_with) */
 } dv_scenario;
 
 /* engines: NULL-terminated, at most DV_MAX_ENGINE_SECTIONS, each named after
@@ -123,6 +124,14 @@ int dv_scenario_check_core(dv_scenario *sc, dv_error *err);
 int dv_scenario_load(const dv_settings_section *const *engines, const char *path,
                      const char *const *overrides, size_t noverrides, dv_scenario *sc,
                      dv_error *err);
+
+/* base with overrides ("section.key=value", as --set) applied and every
+ * section's check run again: what a load of base's file with those overrides
+ * gives, without reading the file again (the values base's checks derived,
+ * such as A, C, a steady start's rates and an engine's step, are derived
+ * anew). Returns DV_OK or DV_EINPUT ("section.key: what"). */
+int dv_scenario_with(const dv_scenario *base, const char *const *overrides, size_t noverrides,
+                     dv_scenario *out, dv_error *err);
 
 /* the settings block of engine (its struct, as its table describes), or NULL */
 const void *dv_scenario_settings(const dv_scenario *sc, const char *engine);

@@ -217,6 +217,7 @@ static int read_values(parse_ctx *c) {
       if (dv_setting_parse(sp, c->text[i], c->block[s], what, sizeof what))
         return fail_at(c, c->text_line[i], sp->key, "%s", what);
       if (s >= DV_NCORE_SECTIONS && k < 32) c->sc->given_keys[s - DV_NCORE_SECTIONS] |= 1u << k;
+      if (s < DV_NCORE_SECTIONS && k < 32) c->sc->core_given[s] |= 1u << k;
     }
   }
   return 0;

@@ -34,8 +34,7 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   for (int i = 0; i < 4; i++)
     if (given[i]) over[n++] = given[i];
   dv_sweep_point p;
-  if (dv_search_sweep_probe(pr->path, pr->sets, pr->nsets, pr->engine->name, over, n, &p, err))
-    return DV_EINPUT;
+  if (dv_search_sweep_probe(pr->sc, pr->engine->name, over, n, &p, err)) return DV_EINPUT;
   if (!p.ok) {
     char with[400] = "";
     for (size_t i = 0; i < n; i++)
@@ -48,21 +47,19 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   return DV_OK;
 }
 
-int dv_search_attribute(const char *path, const char *const *sets, size_t nsets,
-                        const char *engine_name, dv_attribution *out, dv_error *err) {
+int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
+                        dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
   const dv_engine_contact *k = engine->contact;
   if (!k || !engine->search)
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute",
                    engine->name);
-  dv_scenario sc;
-  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
   const char *name = engine->name;
-  const double dt = dv_scenario_get(&sc, name, engine->search->step_key);
-  const double soft = dv_scenario_get(&sc, name, k->softness_key);
-  const double friction = dv_scenario_get(&sc, name, k->friction_key);
-  const int stand_in = dv_engine_stand_in(engine, &sc);
+  const double dt = dv_scenario_get(scenario, name, engine->search->step_key);
+  const double soft = dv_scenario_get(scenario, name, k->softness_key);
+  const double friction = dv_scenario_get(scenario, name, k->friction_key);
+  const int stand_in = dv_engine_stand_in(engine, scenario);
   char thin[128], steps[4][128], softs[4][128], stiff[128], rough[128];
   snprintf(thin, sizeof thin, "engines.%s.%s=%s", name, k->geom_key, k->thin_choice);
   for (int i = 0; i < 4; i++) { /* dt, dt/2, dt/4, dt/8 */
@@ -77,7 +74,7 @@ int dv_search_attribute(const char *path, const char *const *sets, size_t nsets,
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const dv_prober pr = {path, sets, nsets, engine};
+  const dv_prober pr = {scenario, engine};
   dv_attribution_errors e;
   int status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
   if (!status) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);

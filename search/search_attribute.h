@@ -39,9 +39,7 @@ typedef struct dv_attribution {
 /* a scenario and an engine to probe with overrides */
 struct dv_engine_type;
 typedef struct dv_prober {
-  const char *path;
-  const char *const *sets;
-  size_t nsets;
+  const struct dv_scenario *sc; /* loaded once: every probe varies it in memory */
   const struct dv_engine_type *engine;
 } dv_prober;
 
@@ -59,7 +57,8 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
 
 /* probe the engine on the scenario and split its error; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it */
-int dv_search_attribute(const char *scenario_path, const char *const *sets, size_t nsets,
-                        const char *engine, dv_attribution *out, dv_error *err);
+struct dv_scenario;
+int dv_search_attribute(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
+                        dv_error *err);
 
 #endif

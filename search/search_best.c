@@ -19,9 +19,7 @@ typedef struct space {
   double lo, hi;                     /* range of the step */
 } space;
 typedef struct ctx {
-  const char *path;
-  const char *const *sets;
-  size_t nsets;
+  const dv_scenario *sc; /* loaded once: every probe varies it in memory */
   space sp;
   dv_search *out;
 } ctx;
@@ -46,8 +44,7 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   }
   snprintf(p->choice, sizeof p->choice, "%s", choice ? choice : "default");
   p->step = step;
-  if (dv_search_sweep_probe(c->path, c->sets, c->nsets, c->sp.engine, ptrs, n, &p->point, err))
-    return -1;
+  if (dv_search_sweep_probe(c->sc, c->sp.engine, ptrs, n, &p->point, err)) return -1;
   const double e = p->point.metric[DV_THETA_MAX_ERR];
   p->state = !p->point.ok                    ? DV_PROBE_FAILED
              : e <= s->margin * s->tolerance ? DV_PROBE_MEETS
@@ -92,8 +89,8 @@ static double largest(ctx *c, const char *choice, double start, int *fail_probe,
   return pass;
 }
 
-static int setup(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                 double tol, dv_search *out, ctx *c, double *start, dv_error *err) {
+static int setup(const dv_scenario *sc, const char *engine, double tol, dv_search *out, ctx *c,
+                 double *start, dv_error *err) {
   memset(out, 0, sizeof *out);
   const dv_engine_type *type = dv_engine_find(engine);
   const dv_engine_search *search = type ? type->search : NULL;
@@ -101,13 +98,8 @@ static int setup(const char *path, const char *const *sets, size_t nsets, const 
   if (!search || !owner || !owner->settings)
     return dv_fail(err, DV_EINPUT, "no search space for engine '%s'", engine);
   if (!(tol > 0.0)) return dv_fail(err, DV_EINPUT, "the tolerance must be > 0");
-  dv_scenario *sc = malloc(sizeof *sc);
-  if (!sc) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  const int status = dv_engine_load_scenario(path, sets, nsets, sc, err);
   *start = dv_scenario_get(sc, search->section, search->step_key);
-  free(sc);
-  if (status) return DV_EINPUT;
-  *c = (ctx){.path = path, .sets = sets, .nsets = nsets, .out = out};
+  *c = (ctx){.sc = sc, .out = out};
   c->sp.engine = engine;
   c->sp.search = search;
   c->sp.choice = dv_settings_find(owner->settings, search->choice_key);
@@ -183,11 +175,11 @@ static int cheaper(const dv_search *s, size_t a, size_t b) {
 }
 
 /* probe every choice (best), or only the scenario's (stability) */
-static int search(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                  double tol, int every_choice, dv_search *out, dv_error *err) {
+static int search(const dv_scenario *sc, const char *engine, double tol, int every_choice,
+                  dv_search *out, dv_error *err) {
   ctx c;
   double start = NAN;
-  const int status = setup(path, sets, nsets, engine, tol, out, &c, &start, err);
+  const int status = setup(sc, engine, tol, out, &c, &start, err);
   if (status) return status;
   if (!every_choice) {
     out->limit = largest(&c, NULL, start, &out->first_failure, err);
@@ -206,14 +198,14 @@ static int search(const char *path, const char *const *sets, size_t nsets, const
   return DV_OK;
 }
 
-int dv_search_best(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                   double tol, dv_search *out, dv_error *err) {
-  return search(path, sets, nsets, engine, tol, 1, out, err);
+int dv_search_best(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
+                   dv_error *err) {
+  return search(sc, engine, tol, 1, out, err);
 }
 
-int dv_search_stability(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                        double tol, dv_search *out, dv_error *err) {
-  return search(path, sets, nsets, engine, tol, 0, out, err);
+int dv_search_stability(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
+                        dv_error *err) {
+  return search(sc, engine, tol, 0, out, err);
 }
 
 const char *dv_search_failure_mode(const dv_probe *p) {

@@ -71,12 +71,12 @@ typedef struct dv_search {
 } dv_search;
 
 /* the cheapest settings of engine meeting theta_max_err <= DV_SEARCH_MARGIN tol */
-int dv_search_best(const char *scenario_path, const char *const *sets, size_t nsets,
-                   const char *engine, double tol, dv_search *out, dv_error *err);
+int dv_search_best(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
+                   dv_error *err);
 
 /* the largest timestep (engine's default discrete setting) within tol */
-int dv_search_stability(const char *scenario_path, const char *const *sets, size_t nsets,
-                        const char *engine, double tol, dv_search *out, dv_error *err);
+int dv_search_stability(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
+                        dv_error *err);
 
 /* the failure mode of a probe: "NaN", "silent reset", "energy blow-up",
  * "sinks", "lost contact", "falls", "drifts" (exceeds the error), "error" */

@@ -136,20 +136,16 @@ int dv_search_stability_write(const char *dir, const dv_stability_row *rows, siz
 
 typedef struct search_ctx {
   const task *tk;
-  const char *const *sets;
-  size_t nsets;
 } search_ctx;
 
 /* dv_pool's task: one scenario and engine */
 static void search_task(size_t k, void *result, void *ctx) {
   const search_ctx *c = ctx;
-  dv_search_stability(c->tk[k].sc->path, c->sets, c->nsets, c->tk[k].engine->name, c->tk[k].tol,
-                      result, NULL);
+  dv_search_stability(c->tk[k].sc, c->tk[k].engine->name, c->tk[k].tol, result, NULL);
 }
 
 int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
-                            const char *const *sets, size_t nsets, const char *out_dir, int jobs,
-                            dv_error *err) {
+                            const char *out_dir, int jobs, dv_error *err) {
   size_t ne = 0, nt = 0;
   while (engines[ne]) ne++;
   task *tk = calloc(n * ne + 1, sizeof *tk);
@@ -167,7 +163,7 @@ int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_ty
         rows[nt] = (dv_stability_row){scs[i].name, engines[k]->name, &res[nt]};
         nt++;
       }
-  search_ctx sc = {tk, sets, nsets};
+  search_ctx sc = {tk};
   dv_run_progress_tasks_begin("stability search", nt);
   const int pool = status ? DV_EXEC_DONE
                           : dv_exec_pool_run(nt, sizeof *res, search_task, &sc, res, jobs,
@@ -176,6 +172,8 @@ int dv_search_stability_run(const dv_scenario *scs, size_t n, const dv_engine_ty
   if (pool == DV_EXEC_NOMEM) status = dv_fail(err, DV_ESYSTEM, "out of memory");
   if (!status && pool != DV_EXEC_WORKER) /* a worker rank: rank 0 writes */
     status = dv_search_stability_write(out_dir, rows, nt, err);
+  if (!status && pool == DV_EXEC_INTERRUPTED) /* written all the same: what ended */
+    status = dv_fail(err, DV_EVENT, "interrupted: the searches that did not end have no limit");
   free(rows);
   free(res);
   free(tk);

@@ -22,10 +22,11 @@ typedef struct dv_stability_row {
 } dv_stability_row;
 
 /* search every scenario with every contact engine in up to jobs processes
- * and write the tables into out_dir (under mpirun: rank 0 writes them) */
+ * and write the tables into out_dir (under mpirun: rank 0 writes them);
+ * DV_EVENT when SIGINT or SIGTERM stopped it (the tables hold what ended) */
 int dv_search_stability_run(const dv_scenario *scenarios, size_t n,
-                            const dv_engine_type *const *engines, const char *const *sets,
-                            size_t nsets, const char *out_dir, int jobs, dv_error *err);
+                            const dv_engine_type *const *engines, const char *out_dir, int jobs,
+                            dv_error *err);
 
 /* stability.json, stability.md and stability.html of rows[0..n) into dir;
  * the page escapes every name (dv_report_escape) */

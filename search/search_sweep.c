@@ -81,9 +81,7 @@ static double median_wall(const dv_engine_type *e, const dv_scenario *sc, double
 }
 
 typedef struct job {
-  const char *path;
-  const char *const *sets;
-  size_t nsets;
+  const dv_scenario *sc; /* loaded once: no point reads the file again */
   const dv_engine_type *engine;
   const dv_vary *vary;
   size_t nvary;
@@ -100,33 +98,40 @@ static void point_values(const job *jb, size_t k, dv_sweep_point *pt, char (*ove
   }
 }
 
-/* run one point: the scenario with sets and then over[0..nover) */
+/* point k as it is before it runs, and stays when it never does (an
+ * interrupted sweep): its settings, and no measurement (NaN), "missing" */
+static void not_run(const job *jb, size_t k, dv_sweep_point *pt) {
+  char over[DV_SWEEP_MAX_VARY][160];
+  memset(pt, 0, sizeof *pt);
+  point_values(jb, k, pt, over);
+  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
+  pt->theta_thin = pt->wall_per_sim_s = pt->sim_s = pt->wall_s = NAN;
+  pt->steps = -1;
+  pt->verdict = DV_VERDICT_MISSING;
+}
+
+/* run one point: the scenario with over[0..nover) */
 static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
   dv_scenario *sc = malloc(sizeof *sc), *ref = malloc(sizeof *ref);
   dv_comparison *c = malloc(sizeof *c);
-  const char **sets = malloc((jb->nsets + nover + 1) * sizeof *sets);
   dv_error err = {{0}};
   pt->verdict = DV_VERDICT_INVALID;
   pt->failure = DV_FAILURE_NONE;
   for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
-  if (!sc || !ref || !c || !sets) {
+  if (!sc || !ref || !c) {
     snprintf(pt->detail, sizeof pt->detail, "out of memory");
     goto cleanup;
   }
-  /* the common settings, then the point's own: the later wins */
-  size_t nsets = 0;
-  for (size_t i = 0; i < jb->nsets; i++) sets[nsets++] = jb->sets[i];
-  for (size_t v = 0; v < nover; v++) sets[nsets++] = over[v];
-  if (dv_engine_load_scenario(jb->path, sets, nsets, sc, &err)) {
+  if (dv_scenario_with(jb->sc, over, nover, sc, &err)) {
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
     goto cleanup;
   }
   /* a reference's own settings are measured against a tighter reference */
   const dv_scenario *ref_sc = NULL;
   if (jb->engine->tighten) {
-    if (dv_engine_load_scenario(jb->path, jb->sets, jb->nsets, ref, &err) ||
-        jb->engine->tighten(ref, &err)) {
+    *ref = *jb->sc;
+    if (jb->engine->tighten(ref, &err)) {
       snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
       goto cleanup;
     }
@@ -156,7 +161,6 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   snprintf(pt->detail, sizeof pt->detail, "%.191s", r->stats.detail);
   dv_run_comparison_free(c);
 cleanup:
-  free(sets);
   free(sc);
   free(ref);
   free(c);
@@ -205,19 +209,18 @@ static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
   run_overrides(jb, ptrs, jb->nvary, pt);
 }
 
-int dv_search_sweep_probe(const char *path, const char *const *sets, size_t nsets,
-                          const char *engine, const char *const *overrides, size_t n,
-                          dv_sweep_point *out, dv_error *err) {
+int dv_search_sweep_probe(const dv_scenario *sc, const char *engine, const char *const *overrides,
+                          size_t n, dv_sweep_point *out, dv_error *err) {
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
-  const job jb = {path, sets, nsets, e, NULL, 0, 0};
+  const job jb = {sc, e, NULL, 0, 0};
   memset(out, 0, sizeof *out);
   run_overrides(&jb, overrides, n, out);
   return DV_OK;
 }
 
-int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets, const char *engine,
-                        const dv_vary *vary, size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
+int dv_search_sweep_run(const dv_scenario *sc, const char *engine, const dv_vary *vary,
+                        size_t nvary, int jobs, dv_sweep *out, dv_error *err) {
   const char *checkpoint_dir = out->checkpoint_dir;
   memset(out, 0, sizeof *out);
   out->checkpoint_dir = checkpoint_dir;
@@ -229,19 +232,14 @@ int dv_search_sweep_run(const char *path, const char *const *sets, size_t nsets,
   for (size_t v = 0; v < nvary; v++) n *= vary[v].n;
   if (n > DV_SWEEP_MAX_POINTS)
     return dv_fail(err, DV_EINPUT, "%zu points: at most %d", n, DV_SWEEP_MAX_POINTS);
-  dv_scenario *sc = malloc(sizeof *sc);
-  if (!sc) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  const int loaded = dv_engine_load_scenario(path, sets, nsets, sc, err);
   snprintf(out->scenario, sizeof out->scenario, "%s", sc->name);
-  free(sc);
-  if (loaded) return DV_EINPUT;
   snprintf(out->engine, sizeof out->engine, "%s", engine);
   out->nvary = nvary;
   memcpy(out->vary, vary, nvary * sizeof *vary);
   dv_sweep_point *pts = calloc(n, sizeof *pts);
   if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  for (size_t k = 0; k < n; k++) pts[k].verdict = DV_VERDICT_MISSING;
-  const job jb = {path, sets, nsets, e, vary, nvary, 1};
+  const job jb = {sc, e, vary, nvary, 1};
+  for (size_t k = 0; k < n; k++) not_run(&jb, k, &pts[k]);
   checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
   /* under mpirun, rank 0 keeps the tables current as results arrive */
   dv_run_progress_tasks_begin("point", n);

@@ -2,8 +2,9 @@
  *
  * A sweep varies settings of one engine ("key=v1,v2,..." or, on a log scale,
  * "key=a..b:n"; a key without a section means [engines.ENGINE]) over the
- * cartesian product of the lists. Every point re-reads the scenario with the
- * point's settings (so every value is validated like a scenario key), runs
+ * cartesian product of the lists. Every point is the scenario, loaded once,
+ * with the point's settings (dv_scenario_with: every value is validated like
+ * a scenario key, and what the scene derives is derived anew), runs
  * the engine against its reference (dv_run.h) and records the metrics and
  * the cost: wall-clock seconds per simulated second, the median of five runs
  * where one run is shorter than 0.2 s. When the engine is a reference itself
@@ -18,6 +19,7 @@
 
 #include "run_compare.h"
 #include "run_verdict.h"
+#include "scenario.h"
 #include "dv_error.h"
 
 #define DV_SWEEP_MAX_VARY 4
@@ -54,7 +56,7 @@ typedef struct dv_sweep {
   dv_vary vary[DV_SWEEP_MAX_VARY];
   size_t n;
   dv_sweep_point *p; /* n points, the first key varying slowest */
-  int interrupted;   /* under MPI: stopped early, points "missing" */
+  int interrupted;   /* stopped by SIGINT or SIGTERM: points not run "missing", NaN */
   size_t nfloors;    /* curves with an accuracy floor, and its cause */
   struct {
     char curve[96];
@@ -70,20 +72,18 @@ int dv_search_values_parse(const char *list, const char *as_typed, dv_vary *out,
 /* parse "key=v1,v2" or "key=a..b:n" for engine into out */
 int dv_search_vary_parse(const char *spec, const char *engine, dv_vary *out, dv_error *err);
 
-/* run the sweep; sets are extra section.key=value overrides for every point.
+/* run the sweep over sc (loaded once, with the common --set overrides).
  * Under mpirun the ranks share the points: rank 0 gets the results, the
  * other ranks return DV_EVENT. */
-int dv_search_sweep_run(const char *scenario_path, const char *const *sets, size_t nsets,
-                        const char *engine, const dv_vary *vary, size_t nvary, int jobs,
-                        dv_sweep *out, dv_error *err);
+int dv_search_sweep_run(const dv_scenario *sc, const char *engine, const dv_vary *vary,
+                        size_t nvary, int jobs, dv_sweep *out, dv_error *err);
 
 void dv_search_sweep_free(dv_sweep *s); /* NULL-safe */
 
-/* one run in this process with the given key=value overrides (section.key),
- * timed once (no repeats: its cost is steps, see search_best.h) */
-int dv_search_sweep_probe(const char *scenario_path, const char *const *sets, size_t nsets,
-                          const char *engine, const char *const *overrides, size_t n,
-                          dv_sweep_point *out, dv_error *err);
+/* one run of sc in this process with the given key=value overrides
+ * (section.key), timed once (no repeats: its cost is steps, see search_best.h) */
+int dv_search_sweep_probe(const dv_scenario *sc, const char *engine, const char *const *overrides,
+                          size_t n, dv_sweep_point *out, dv_error *err);
 
 /* mark the Pareto points (theta_max_err against wall_per_sim_s) among ok points */
 void dv_search_pareto(dv_sweep_point *p, size_t n);
@@ -122,17 +122,22 @@ const char *dv_search_sweep_floor_cause(const dv_sweep *s, const char *label);
 /* the index of the key that orders a curve: a timestep or rtol, else the last */
 size_t dv_search_sweep_curve_key(const dv_sweep *s);
 
+/* 1 when the curve key is the step the engine declares (dv_engine_search:
+ * engines.mujoco.timestep, engines.reduced.rtol): only then do the errors
+ * have an order of convergence and an accuracy floor to fit, else 0 */
+int dv_search_sweep_fits_order(const dv_sweep *s);
+
 /* the fit of the curve through point k (its ok points); DV_ESYSTEM without memory */
 int dv_search_sweep_curve_fit(const dv_sweep *s, size_t k, dv_step_fit *out);
 
 /* for every curve over a timestep whose errors end at a floor, its cause from
  * attribution (search_attribute.h) at the largest step on the floor, into
  * s->floors; a probe that fails leaves the cause "unknown: " and why */
-int dv_search_sweep_floor_causes(const char *scenario_path, const char *const *sets, size_t nsets,
-                                 dv_sweep *s, dv_error *err);
+int dv_search_sweep_floor_causes(const dv_scenario *sc, dv_sweep *s, dv_error *err);
 
-/* sweep.csv, sweep.json and the plots into the existing dir; reference is an
- * optional sweep of the reference's own integrators drawn on the same axes */
+/* sweep.csv, sweep.json ("orders" empty unless dv_search_sweep_fits_order) and the plots into the
+ * existing dir; reference is an optional sweep of the reference's own integrators drawn on the same
+ * axes */
 int dv_search_sweep_write(const char *dir, const dv_sweep *s, const dv_sweep *reference,
                           dv_error *err);
 

@@ -43,31 +43,28 @@ int dv_search_sweep_curve_first(const dv_sweep *s, size_t k) {
 }
 
 /* attribute the floor of the curve through point first at step */
-static void attribute_floor(const char *path, const char *const *sets, size_t nsets,
-                            const dv_sweep *s, size_t key, size_t first, double step, char *cause,
-                            size_t size) {
-  const char **all = malloc((nsets + DV_SWEEP_MAX_VARY + 1) * sizeof *all);
+static void attribute_floor(const dv_scenario *sc, const dv_sweep *s, size_t key, size_t first,
+                            double step, char *cause, size_t size) {
   char over[DV_SWEEP_MAX_VARY][160];
+  const char *all[DV_SWEEP_MAX_VARY];
+  dv_scenario *at = malloc(sizeof *at);
   dv_attribution a;
   dv_error err = {{0}};
-  if (!all) {
-    snprintf(cause, size, "unknown: out of memory");
-    return;
-  }
-  size_t n = 0;
-  for (size_t i = 0; i < nsets; i++) all[n++] = sets[i];
   for (size_t v = 0; v < s->nvary; v++) {
     if (v == key)
       snprintf(over[v], sizeof over[v], "%s=%.9g", s->vary[v].key, step);
     else
       snprintf(over[v], sizeof over[v], "%s=%s", s->vary[v].key, s->p[first].values[v]);
-    all[n++] = over[v];
+    all[v] = over[v];
   }
-  if (dv_search_attribute(path, all, n, s->engine, &a, &err))
+  if (!at)
+    snprintf(cause, size, "unknown: out of memory");
+  else if (dv_scenario_with(sc, all, s->nvary, at, &err) ||
+           dv_search_attribute(at, s->engine, &a, &err))
     snprintf(cause, size, "unknown: %.180s", err.msg);
   else
     dv_search_attribute_cause(&a, cause, size);
-  free(all);
+  free(at);
 }
 
 const char *dv_search_sweep_floor_cause(const dv_sweep *s, const char *label) {
@@ -76,20 +73,20 @@ const char *dv_search_sweep_floor_cause(const dv_sweep *s, const char *label) {
   return NULL;
 }
 
-int dv_search_sweep_floor_causes(const char *path, const char *const *sets, size_t nsets,
-                                 dv_sweep *s, dv_error *err) {
+int dv_search_sweep_floor_causes(const dv_scenario *sc, dv_sweep *s, dv_error *err) {
   const dv_engine_type *e = dv_engine_find(s->engine);
   const size_t key = dv_search_sweep_curve_key(s);
   const char *dot = s->nvary ? strrchr(s->vary[key].key, '.') : NULL;
   s->nfloors = 0;
-  if (!e || !e->contact || !dot || strcmp(dot, ".timestep")) return DV_OK; /* nothing to split */
+  if (!e || !e->contact || !dot || strcmp(dot, ".timestep") || !dv_search_sweep_fits_order(s))
+    return DV_OK; /* nothing to split */
   for (size_t i = 0; i < s->n && s->nfloors < DV_SWEEP_MAX_FLOORS; i++) {
     dv_step_fit fit;
     if (!dv_search_sweep_curve_first(s, i)) continue;
     if (dv_search_sweep_curve_fit(s, i, &fit)) return dv_fail(err, DV_ESYSTEM, "out of memory");
     if (isnan(fit.floor)) continue;
     dv_search_sweep_curve_label(s, i, s->floors[s->nfloors].curve, sizeof s->floors[0].curve);
-    attribute_floor(path, sets, nsets, s, key, i, fit.floor_step, s->floors[s->nfloors].cause,
+    attribute_floor(sc, s, key, i, fit.floor_step, s->floors[s->nfloors].cause,
                     sizeof s->floors[0].cause);
     s->nfloors++;
   }

@@ -22,6 +22,15 @@ size_t dv_search_sweep_curve_key(const dv_sweep *s) {
   return s->nvary ? s->nvary - 1 : 0;
 }
 
+int dv_search_sweep_fits_order(const dv_sweep *s) {
+  const dv_engine_type *e = dv_engine_find(s->engine);
+  const dv_engine_search *k = e ? e->search : NULL;
+  char step[96];
+  if (!k || !s->nvary) return 0;
+  snprintf(step, sizeof step, "engines.%s.%s", k->section, k->step_key);
+  return !strcmp(s->vary[dv_search_sweep_curve_key(s)].key, step);
+}
+
 void dv_search_sweep_curve_label(const dv_sweep *s, size_t k, char *out, size_t size) {
   const size_t key = dv_search_sweep_curve_key(s);
   int len = snprintf(out, size, "%s", s->engine);
@@ -127,7 +136,9 @@ static int write_csv(const char *dir, const dv_sweep *s, dv_error *err) {
       fprintf(out.fp, ",%s", num);
     }
     dv_format_precision(p->wall_per_sim_s, 6, num, sizeof num); /* timing: 6 digits say enough */
-    fprintf(out.fp, ",%s,%ld,%s,%d\n", num, p->steps, dv_run_verdict_name(p->verdict), p->pareto);
+    fprintf(out.fp, ",%s,", num);
+    fprintf(out.fp, p->steps < 0 ? "nan" : "%ld", p->steps); /* < 0: not run */
+    fprintf(out.fp, ",%s,%d\n", dv_run_verdict_name(p->verdict), p->pareto);
   }
   return dv_io_commit(&out, err);
 }
@@ -151,7 +162,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     for (int m = 0; m < DV_NMETRICS; m++)
       cJSON_AddItemToObject(q, dv_metric_names[m], dv_io_json_double(p->metric[m]));
     cJSON_AddItemToObject(q, "wall_per_sim_s", dv_io_json_double(p->wall_per_sim_s));
-    cJSON_AddNumberToObject(q, "steps", (double)p->steps);
+    cJSON_AddItemToObject(q, "steps", dv_io_json_double(p->steps < 0 ? NAN : (double)p->steps));
     cJSON_AddStringToObject(q, "outcome", dv_run_verdict_name(p->verdict));
     cJSON_AddStringToObject(q, "detail", p->detail);
     cJSON_AddBoolToObject(q, "ok", p->ok);
@@ -159,7 +170,7 @@ static int write_json(const char *dir, const dv_sweep *s, const curve *cv, size_
     cJSON_AddItemToArray(pts, q);
   }
   cJSON *orders = cJSON_AddArrayToObject(o, "orders");
-  for (size_t c = 0; c < nc; c++) {
+  for (size_t c = 0; dv_search_sweep_fits_order(s) && c < nc; c++) {
     cJSON *q = cJSON_CreateObject();
     dv_step_fit fit;
     dv_search_fit_convergence(cv[c].h, cv[c].y, cv[c].n, &fit);
@@ -205,7 +216,7 @@ static int write_plots(const char *dir, const dv_sweep *s, curves *cs, const cur
         dv_report_plot_xy(path, title, "wall seconds per simulated second",
                           "max |theta error| (rad)", pc, nc + nr, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
   const char *dot = s->nvary ? strrchr(s->vary[dv_search_sweep_curve_key(s)].key, '.') : NULL;
-  if (status || !dot || strcmp(dot, ".timestep")) return status;
+  if (status || !dot || strcmp(dot, ".timestep") || !dv_search_sweep_fits_order(s)) return status;
   for (size_t c = 0; c < nc; c++) {
     curve *cv = &cs->c[c];
     dv_step_fit fit;

@@ -27,20 +27,18 @@ static void extrapolate(dv_verification *v) {
     v->verdict = flat || !isnan(v->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
 }
 
-int dv_search_verify(const char *path, const char *const *sets, size_t nsets,
-                     const char *engine_name, dv_verification *out, dv_error *err) {
+int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verification *out,
+                     dv_error *err) {
   memset(out, 0, sizeof *out);
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
   const dv_engine_contact *k = engine->contact;
   if (!k || !engine->search)
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to verify", engine->name);
-  dv_scenario sc;
-  if (dv_engine_load_scenario(path, sets, nsets, &sc, err)) return DV_EINPUT;
   const char *name = engine->name;
-  const double dt = dv_scenario_get(&sc, name, engine->search->step_key);
-  const double soft = dv_scenario_get(&sc, name, k->softness_key);
-  const dv_prober pr = {path, sets, nsets, engine};
+  const double dt = dv_scenario_get(sc, name, engine->search->step_key);
+  const double soft = dv_scenario_get(sc, name, k->softness_key);
+  const dv_prober pr = {sc, engine};
   for (int i = 0; i < DV_VERIFY_LEVELS; i++) {
     const double h = dt / (1 << i);
     char step[128], softness[128];
@@ -54,7 +52,7 @@ int dv_search_verify(const char *path, const char *const *sets, size_t nsets,
   extrapolate(out);
   if (out->verdict != DV_CONVERGES_ELSEWHERE) return DV_OK;
   dv_attribution a;
-  const int status = dv_search_attribute(path, sets, nsets, name, &a, err);
+  const int status = dv_search_attribute(sc, name, &a, err);
   if (status) return status;
   dv_search_attribute_cause(&a, out->cause, sizeof out->cause);
   return DV_OK;

@@ -45,7 +45,7 @@ typedef struct dv_verification {
 } dv_verification;
 
 /* refine engine on the scenario and judge its convergence */
-int dv_search_verify(const char *scenario_path, const char *const *sets, size_t nsets,
-                     const char *engine, dv_verification *out, dv_error *err);
+int dv_search_verify(const struct dv_scenario *sc, const char *engine, dv_verification *out,
+                     dv_error *err);
 
 #endif

@@ -15,9 +15,7 @@
 #include "run_progress.h"
 
 typedef struct suite_job {
-  const char *const *paths;
-  const char *const *sets;
-  size_t nsets;
+  const dv_scenario *scs; /* loaded once, before any case runs */
   const dv_engine_type *const *engines;
   size_t nengines;
 } suite_job;
@@ -30,39 +28,37 @@ static void verify_task(size_t k, void *result, void *ctx) {
   const double t0 = dv_clock_now();
   const dv_engine_type *engine = j->engines[k % j->nengines];
   const dv_engine_type *own[DV_VERIFY_SUITE_MAX_ENGINES + 1];
-  dv_scenario sc;
-  c->status = dv_engine_load_scenario(j->paths[k / j->nengines], j->sets, j->nsets, &sc, &err);
+  const dv_scenario *sc = &j->scs[k / j->nengines];
+  c->status = DV_OK;
   int named = 1; /* a scenario that names its engines verifies only those */
-  if (!c->status && sc.engines[0] &&
-      !dv_engine_parse_list(sc.engines, own, DV_VERIFY_SUITE_MAX_ENGINES + 1, NULL)) {
+  if (sc->engines[0] &&
+      !dv_engine_parse_list(sc->engines, own, DV_VERIFY_SUITE_MAX_ENGINES + 1, NULL)) {
     named = 0;
     for (size_t i = 0; own[i]; i++) named |= own[i] == engine;
   }
-  if (!c->status && !named) {
+  if (!named) {
     c->status = DV_EVENT;
-    snprintf(err.msg, sizeof err.msg, "the scenario names its engines: %s", sc.engines);
-  } else if (!c->status) {
-    c->status =
-        dv_search_verify(j->paths[k / j->nengines], j->sets, j->nsets, engine->name, &c->v, &err);
+    snprintf(err.msg, sizeof err.msg, "the scenario names its engines: %s", sc->engines);
+  } else {
+    c->status = dv_search_verify(sc, engine->name, &c->v, &err);
   }
   c->wall_s = dv_clock_now() - t0;
   snprintf(c->message, sizeof c->message, "%s", err.msg);
 }
 
-int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
-                           const char *const *sets, size_t nsets,
-                           const dv_engine_type *const *engines, size_t nengines, int jobs,
-                           double timeout, dv_verify_case *cases, dv_error *err) {
+int dv_search_verify_suite(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
+                           size_t nengines, int jobs, double timeout, dv_verify_case *cases,
+                           dv_error *err) {
   for (size_t k = 0; k < n * nengines; k++) {
     memset(&cases[k], 0, sizeof cases[k]);
-    snprintf(cases[k].scenario, sizeof cases[k].scenario, "%s", names[k / nengines]);
+    snprintf(cases[k].scenario, sizeof cases[k].scenario, "%s", scs[k / nengines].name);
     snprintf(cases[k].engine, sizeof cases[k].engine, "%s", engines[k % nengines]->name);
     cases[k].status = DV_ESYSTEM; /* until its task reports */
     snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
     for (int i = 0; i < DV_VERIFY_LEVELS; i++) cases[k].v.step[i] = cases[k].v.error[i] = NAN;
     cases[k].v.order = cases[k].v.extrapolated = NAN;
   }
-  const suite_job j = {paths, sets, nsets, engines, nengines};
+  const suite_job j = {scs, engines, nengines};
   unsigned char *done = calloc(n * nengines, 1);
   if (!done) return dv_fail(err, DV_ESYSTEM, "out of memory");
   const dv_exec_options opt = {jobs, dv_run_progress_on_result, done, timeout};

@@ -30,14 +30,14 @@ enum {
   DV_VERIFY_SUITE_INTERRUPTED = 2 /* SIGINT or SIGTERM: the cases that ended are filled in */
 };
 
-/* verify every (scenario, engine): paths[i] loaded with sets; results in
+/* verify every (scenario, engine) of scs[0..n) (loaded once: no case reads
+ * a file); results in
  * cases[i * nengines + j] (the caller's, n x nengines); a case still running
  * after timeout s (<= 0: no limit; none under MPI) is an error, "timed out",
  * and a case with no result has NaN errors */
-int dv_search_verify_suite(const char *const *paths, const char *const *names, size_t n,
-                           const char *const *sets, size_t nsets,
-                           const dv_engine_type *const *engines, size_t nengines, int jobs,
-                           double timeout, dv_verify_case *cases, dv_error *err);
+int dv_search_verify_suite(const dv_scenario *scs, size_t n, const dv_engine_type *const *engines,
+                           size_t nengines, int jobs, double timeout, dv_verify_case *cases,
+                           dv_error *err);
 
 /* verify.md and verify.json in dir, and the JUnit XML at junit */
 int dv_search_verify_write(const char *dir, const char *junit, const dv_verify_case *cases,

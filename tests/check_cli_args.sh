@@ -3,7 +3,8 @@
 # cleanly. Each case must exit 2, print exactly one line on stderr matching
 # its regex, print nothing on stdout and write nothing in the working
 # directory: strict numbers ("1e-3x", "2x", "nan", ""), unknown options,
-# missing values, surplus arguments, unknown engines, bad --vary.
+# missing values, surplus arguments, unknown engines, bad --vary, a --vary
+# key given twice, a map axis that does not increase.
 set -u
 export LC_ALL=C
 dv=${1:?usage: check_cli_args.sh DISKVAL SCENARIO_DIR}
@@ -41,6 +42,19 @@ expect "timestep: not a number: '1e-3x'" sweep "$sc" --engine mujoco --vary time
 expect "bogus: unknown key" sweep "$sc" --engine mujoco --vary bogus=1,2
 expect "integrator: .*rk5" sweep "$sc" --engine mujoco --vary integrator=rk5
 expect "timestep: -1 is outside" sweep "$sc" --engine mujoco --vary timestep=-1
+expect "engines.ode.timestep=1e-3: a mujoco sweep never runs ode" sweep "$sc" --engine mujoco \
+  --vary engines.ode.timestep=1e-3
+expect "^diskval verify: --engines: reduced is not a contact engine" verify "$sc" --engines mujoco,reduced
+expect "engines.mujoco.timestep is varied twice" sweep "$sc" --engine mujoco --vary timestep=1e-3 \
+  --vary timestep=2e-3
+# an axis of the map's plots must increase: refused before any cell runs (the
+# plot refused it after every cell had run and map.csv was written)
+expect "^diskval map: --c 0.5..0.1:2: the values must increase \('0.1' after '0.5'\)" map \
+  --c 0.5..0.1:2 --engines reduced --duration 0.1
+expect "^diskval map: --spin 20..1:3: the values must increase" map --spin 20..1:3 --engines reduced \
+  --duration 0.1
+expect "^diskval map: --c 0.2,0.2: the values must increase" map --c 0.2,0.2 --engines reduced \
+  --duration 0.1
 expect "unexpected argument 'extra'" simulate "$sc" extra --engine reduced
 expect "unexpected argument 'x.ini'" compare "$sc" x.ini
 expect "unexpected argument 'extra'" analyze "$sc" extra

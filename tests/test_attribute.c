@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "dv_test.h"
+#include "dv_engine.h"
 #include "search_attribute.h"
 
 /* errors e0 + c h^p at dt, dt/2, dt/4, with c dt^p = 2 e0 */
@@ -24,6 +25,13 @@ static dv_attribution_errors model(double e0, double p, double dt) {
 /* the shares add up to the error they split */
 static void check_sum(const dv_attribution *a, const char *what) {
   CHECK_NEAR(a->geometry + a->time + a->contact + a->rest, a->e.stand_in, 1e-15, what);
+}
+
+/* the scenario at path with sets, loaded once, attributed */
+static int attribute(dv_scenario *sc, const char *path, const char *const *sets, size_t n,
+                     const char *engine, dv_attribution *a, dv_error *err) {
+  if (dv_engine_load_scenario(path, sets, n, sc, err)) return DV_EINPUT;
+  return dv_search_attribute(sc, engine, a, err);
 }
 
 int main(int argc, char **argv) {
@@ -53,15 +61,16 @@ int main(int argc, char **argv) {
   check_sum(&a, "stand-in: shares add up");
 
   if (argc > 1) { /* the pipeline on a scenario: upright rolling */
+    static dv_scenario sc;
     const char *thin[] = {"engines.mujoco.timestep=1e-3", "engines.mujoco.solref_timeconst=2e-3"};
     dv_error err = {{0}};
-    int status = dv_search_attribute(argv[1], thin, 2, "mujoco", &a, &err);
+    int status = attribute(&sc, argv[1], thin, 2, "mujoco", &a, &err);
     CHECK(status == 0, "attribute mujoco: %s", err.msg);
     CHECK(!a.has_stand_in && a.geometry == 0.0, "thin disk: geometry share %g", a.geometry);
     check_sum(&a, "mujoco thin: shares add up");
     const char *ellipsoid[] = {thin[0], thin[1], "engines.mujoco.geom=ellipsoid",
                                "engines.mujoco.half_thickness=2e-2"};
-    status = dv_search_attribute(argv[1], ellipsoid, 4, "mujoco", &a, &err);
+    status = attribute(&sc, argv[1], ellipsoid, 4, "mujoco", &a, &err);
     CHECK(status == 0, "attribute mujoco ellipsoid: %s", err.msg);
     /* a 2 cm ellipsoid upright: geometry is 100% of 7.3e-4 rad (diskval attribute
      * scenarios/upright_stable.ini --engine mujoco --set engines.mujoco.geom=ellipsoid
@@ -69,7 +78,7 @@ int main(int argc, char **argv) {
     CHECK(a.has_stand_in && a.geometry > 0.5 * a.e.stand_in, "ellipsoid: geometry share %g of %g",
           a.geometry, a.e.stand_in);
     const char *no_c[] = {"disk.C=0"};
-    status = dv_search_attribute(argv[1], no_c, 1, "mujoco", &a, &err);
+    status = attribute(&sc, argv[1], no_c, 1, "mujoco", &a, &err);
     printf("C = 0 in MuJoCo: %s\n", err.msg);
     CHECK(status < 0 && strstr(err.msg, "cannot be attributed"),
           "C = 0 in MuJoCo: an error, got %d", status);
@@ -77,11 +86,11 @@ int main(int argc, char **argv) {
      * tests/data/short_circle.ini --engine ode --set engines.ode.soft_cfm=0.5 --set
      * engines.ode.soft_erp=0): diverged, never a table of zeros */
     const char *sinks[] = {"engines.ode.soft_cfm=0.5", "engines.ode.soft_erp=0"};
-    status = dv_search_attribute(argv[1], sinks, 2, "ode", &a, &err);
+    status = attribute(&sc, argv[1], sinks, 2, "ode", &a, &err);
     printf("ODE sinking: %s\n", err.msg);
     CHECK(status < 0 && strstr(err.msg, "cannot be attributed") && strstr(err.msg, "sank"),
           "ODE sinking: an error saying so, got %d: %s", status, err.msg);
-    status = dv_search_attribute(argv[1], NULL, 0, "reduced", &a, &err);
+    status = attribute(&sc, argv[1], NULL, 0, "reduced", &a, &err);
     CHECK(status < 0, "the reference has nothing to attribute");
   }
   return TEST_RESULT();

@@ -13,20 +13,30 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_engine.h"
 #include "search_best.h"
 #include "search_sweep.h"
 #include "dv_test.h"
 
 static const char *path;
 
+/* the test scenario with sets: the struct every search takes, loaded once */
+static const dv_scenario *load(dv_scenario *sc, const char *const *sets, size_t nsets) {
+  dv_error err = {{0}};
+  CHECK(dv_engine_load_scenario(path, sets, nsets, sc, &err) == DV_OK, "%s", err.msg);
+  return sc;
+}
+
 /* the order fitted to theta_max_err over the ok points of a one-key sweep */
 static double sweep_order(const char *engine, const char *spec, const char *const *sets,
                           size_t nsets) {
   static dv_vary v;
   static dv_sweep s;
+  static dv_scenario sc;
   dv_error err = {{0}};
   CHECK(dv_search_vary_parse(spec, engine, &v, &err) == DV_OK, "%s", err.msg);
-  CHECK(dv_search_sweep_run(path, sets, nsets, engine, &v, 1, 2, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_sweep_run(load(&sc, sets, nsets), engine, &v, 1, 2, &s, &err) == DV_OK, "%s",
+        err.msg);
   double h[DV_SWEEP_MAX_VALUES], e[DV_SWEEP_MAX_VALUES];
   for (size_t k = 0; k < s.n; k++) {
     h[k] = atof(s.p[k].values[0]);
@@ -101,10 +111,12 @@ static void check_real_floor(void) {
   CHECK(dv_search_vary_parse("integrator=rk4", "mujoco", &v[0], &err) == DV_OK, "%s", err.msg);
   CHECK(dv_search_vary_parse("timestep=2e-3..1e-4:3", "mujoco", &v[1], &err) == DV_OK, "%s",
         err.msg);
-  CHECK(dv_search_sweep_run(path, sets, 1, "mujoco", v, 2, 2, &s, &err) == DV_OK, "%s", err.msg);
+  static dv_scenario sc;
+  load(&sc, sets, 1);
+  CHECK(dv_search_sweep_run(&sc, "mujoco", v, 2, 2, &s, &err) == DV_OK, "%s", err.msg);
   dv_step_fit f;
   CHECK(dv_search_sweep_curve_fit(&s, 0, &f) == DV_OK, "fit");
-  CHECK(dv_search_sweep_floor_causes(path, sets, 1, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_sweep_floor_causes(&sc, &s, &err) == DV_OK, "%s", err.msg);
   printf("mujoco, soft contact: floor %.3g over %zu points, order %g; cause %s\n", f.floor,
          f.nfloor, f.order, s.nfloors ? s.floors[0].cause : "none");
   CHECK(f.nfloor == 3 && isnan(f.order), "soft contact: floor over %zu points, order %g", f.nfloor,
@@ -131,9 +143,10 @@ static void check_pareto(void) {
 
 static void check_best(void) {
   static dv_search s;
+  static dv_scenario sc;
   dv_error err = {{0}};
   const double tol = 2e-3;
-  CHECK(dv_search_best(path, NULL, 0, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_best(load(&sc, NULL, 0), "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
   CHECK(s.best >= 0, "best found nothing for %g", tol);
   if (s.best < 0) return;
   const dv_probe *b = &s.probes[s.best];
@@ -142,7 +155,7 @@ static void check_best(void) {
   snprintf(o2, sizeof o2, "%s=%.9g", s.step_key, b->step);
   const char *over[2] = {o1, o2};
   dv_sweep_point again;
-  dv_search_sweep_probe(path, NULL, 0, "ode", over, 2, &again, &err);
+  dv_search_sweep_probe(&sc, "ode", over, 2, &again, &err);
   printf("best: %s %s: %.3e rad, again %.3e rad\n", o1, o2, b->point.metric[DV_THETA_MAX_ERR],
          again.metric[DV_THETA_MAX_ERR]);
   CHECK(again.ok && again.metric[DV_THETA_MAX_ERR] <= DV_SEARCH_MARGIN * tol,
@@ -162,10 +175,11 @@ static void check_stability(void) {
   const char *over[1] = {"engines.ode.timestep=1e-5"};
   dv_sweep_point p;
   dv_error err = {{0}};
-  dv_search_sweep_probe(path, NULL, 0, "ode", over, 1, &p, &err);
+  static dv_scenario sc;
+  dv_search_sweep_probe(load(&sc, NULL, 0), "ode", over, 1, &p, &err);
   const double tol = 2.0 * p.metric[DV_THETA_MAX_ERR];
   static dv_search s;
-  CHECK(dv_search_stability(path, NULL, 0, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
+  CHECK(dv_search_stability(&sc, "ode", tol, &s, &err) == DV_OK, "%s", err.msg);
   printf("stability: limit %.4g s for %.3e rad (%zu probes)\n", s.limit, tol, s.nprobes);
   CHECK(fabs(s.limit / 2e-5 - 1.0) < 0.1, "limit %.4g, predicted 2e-5", s.limit);
   for (size_t i = 0; i < s.nprobes; i++)
