@@ -272,6 +272,13 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                  c->spread[m]);
       }
     }
+    if (ref != &c->thin) { /* f1, f2 are integrals of the thin disk only */
+      r->tolerance[DV_INVARIANT_DRIFT] = NAN;
+      snprintf(r->limit_why[DV_INVARIANT_DRIFT], sizeof r->limit_why[DV_INVARIANT_DRIFT],
+               "not judged: f1, f2 are the thin disk's integrals; a cylinder (h = %g m) does not "
+               "conserve them",
+               r->half_thickness);
+    }
     const dv_engine_stats *ref_st = ref == &c->thin ? &c->thin_stats : &r->matched_stats;
     const int itself = ref_sc == sc && engines[i] == (ref == &c->thin ? thin : matched);
     judge(c, ref, ref_st, ref_end, itself, r);
