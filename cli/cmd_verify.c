@@ -29,8 +29,9 @@ static int print_verification(const char *engine, const dv_verification *v) {
   for (int i = 0; i < DV_VERIFY_LEVELS; i++) printf(" %.3e (dt %.3g)", v->error[i], v->step[i]);
   printf("\n  order %s", isnan(v->order) ? "none (the errors do not fall)" : "");
   if (!isnan(v->order)) printf("%.2f", v->order);
-  printf("; extrapolated discrepancy %.3e rad (floor %g): %s%s%s\n", v->extrapolated,
-         DV_VERIFY_FLOOR, dv_search_convergence_name(v->verdict), v->cause[0] ? ", cause: " : "",
+  printf("; extrapolated discrepancy %.3e rad (floor %g", v->extrapolated, DV_VERIFY_FLOOR);
+  if (v->uncertainty > 0.0) printf(", uncertainty %.2e", v->uncertainty);
+  printf("): %s%s%s\n", dv_search_convergence_name(v->verdict), v->cause[0] ? ", cause: " : "",
          v->cause);
   return v->verdict != DV_CONVERGES;
 }

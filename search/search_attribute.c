@@ -43,7 +43,7 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
                    pr->engine->name, n ? " with" : "", with, dv_run_verdict_name(p.verdict),
                    p.detail);
   }
-  *e = p.theta_thin;
+  *e = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
   return DV_OK;
 }
 
@@ -74,7 +74,7 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const dv_prober pr = {scenario, engine};
+  const dv_prober pr = {scenario, engine, 0};
   dv_attribution_errors e;
   int status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
   if (!status) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);

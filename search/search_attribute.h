@@ -41,10 +41,13 @@ struct dv_engine_type;
 typedef struct dv_prober {
   const struct dv_scenario *sc; /* loaded once: every probe varies it in memory */
   const struct dv_engine_type *engine;
+  int own_reference; /* measure against the engine's own reference (the matched
+                        one for a cylinder), not the thin disk */
 } dv_prober;
 
-/* the max theta error against the thin disk of one run with up to four
- * section.key=value overrides (NULL: none); a run that fails is an error */
+/* the max theta error against the thin disk (or the engine's own reference)
+ * of one run with up to four section.key=value overrides (NULL: none); a run
+ * that fails is an error */
 int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const char *o1,
                           const char *o2, const char *o3, const char *o4);
 

@@ -13,15 +13,25 @@ const char *dv_search_convergence_name(dv_convergence c) {
   return (unsigned)c < 3 ? names[c] : "unknown";
 }
 
-/* order and extrapolation from the errors; the verdict before attribution */
-static void extrapolate(dv_verification *v) {
+/* Richardson's e(0) from errors a, b, c at steps halving each time; its order in *p */
+static double richardson(double a, double b, double c, double *p) {
+  const double d1 = a - b, d2 = b - c;
+  *p = d1 > 0.0 && d2 > 0.0 ? log2(d1 / d2) : NAN;
+  return *p > 0.2 ? c - d2 / (pow(2.0, *p) - 1.0) : NAN;
+}
+
+void dv_search_verify_judge(dv_verification *v) {
   const double *e = v->error;
-  const double d1 = e[1] - e[2], d2 = e[2] - e[3];
   const int flat = fabs(e[0] - e[3]) <= DV_VERIFY_FLAT * e[0];
-  const double p = !flat && d1 > 0.0 && d2 > 0.0 ? log2(d1 / d2) : NAN;
-  v->order = p > 0.2 ? p : NAN;
-  v->extrapolated = isnan(v->order) ? e[3] : e[3] - d2 / (pow(2.0, v->order) - 1.0);
-  if (e[3] <= DV_VERIFY_FLOOR || fabs(v->extrapolated) <= DV_VERIFY_FLOOR)
+  double p, q;
+  const double late = richardson(e[1], e[2], e[3], &p), early = richardson(e[0], e[1], e[2], &q);
+  v->order = !flat && p > 0.2 ? p : NAN;
+  v->extrapolated = isnan(v->order) ? e[3] : late;
+  v->uncertainty = 0.0;
+  if (!isnan(v->order) && fabs(p - q) <= DV_VERIFY_ORDER_SPREAD && isfinite(early))
+    v->uncertainty = fmax(fabs(late - early), v->extrapolated < 0.0 ? -v->extrapolated : 0.0);
+  if (e[3] <= DV_VERIFY_FLOOR ||
+      fabs(v->extrapolated) <= fmax(DV_VERIFY_FLOOR, v->uncertainty))
     v->verdict = DV_CONVERGES;
   else /* flat: the step no longer matters, what is left is the model's */
     v->verdict = flat || !isnan(v->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
@@ -38,7 +48,7 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
   const char *name = engine->name;
   const double dt = dv_scenario_get(sc, name, engine->search->step_key);
   const double soft = dv_scenario_get(sc, name, k->softness_key);
-  const dv_prober pr = {sc, engine};
+  const dv_prober pr = {sc, engine, 1};
   for (int i = 0; i < DV_VERIFY_LEVELS; i++) {
     const double h = dt / (1 << i);
     char step[128], softness[128];
@@ -49,7 +59,7 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
     const int status = dv_search_probe_theta(&pr, &out->error[i], err, step, softness, NULL, NULL);
     if (status) return status;
   }
-  extrapolate(out);
+  dv_search_verify_judge(out);
   if (out->verdict != DV_CONVERGES_ELSEWHERE) return DV_OK;
   dv_attribution a;
   const int status = dv_search_attribute(sc, name, &a, err);

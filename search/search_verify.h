@@ -3,16 +3,21 @@
  * The engine's time step and contact softness are refined together: h =
  * dt/2^k for k = 0..3 (dt: the scenario's step), the softness scaled by
  * h/dt (and kept at least as many steps as the library ties it to). From the
- * max theta errors against the thin disk (pointwise to the reference's
- * horizon), the observed order p comes from the last three, and Richardson
- * extrapolation gives the discrepancy at h -> 0:
+ * max theta errors against the engine's own reference (the matched one for a
+ * cylinder; pointwise to the reference's horizon), the observed order p comes
+ * from the last three, and Richardson extrapolation gives the discrepancy at
+ * h -> 0:
  *
  *   e(0) = e(h3) - (e(h2) - e(h3)) / (2^p - 1)
  *
- * "converges to the reference" when |e(0)| <= DV_VERIFY_FLOOR (or the errors
- * already sit below it); "converges elsewhere" when e(0) is above it, or the
- * errors are flat above it (a model discrepancy: its dominant cause from
- * attribution); "does not converge" when the errors grow or wander.
+ * Its uncertainty is how far the same extrapolation from the first three
+ * levels lands from it, when their two orders agree within DV_VERIFY_ORDER_SPREAD
+ * (the errors are in their asymptotic range); an e(0) below zero (the
+ * errors are magnitudes) is itself within it. "converges to the reference"
+ * when |e(0)| <= max(DV_VERIFY_FLOOR, uncertainty) (or the errors already
+ * sit below the floor); "converges elsewhere" when e(0) is beyond both, or
+ * the errors are flat above the floor (a model discrepancy: its dominant
+ * cause from attribution); "does not converge" when the errors grow or wander.
  */
 #ifndef DV_SEARCH_VERIFY_H
 #define DV_SEARCH_VERIFY_H
@@ -25,6 +30,7 @@
 #define DV_VERIFY_FLOOR 1e-4 /* rad: a tenth of the engines' default accuracy goal */
 #define DV_VERIFY_LEVELS 4
 #define DV_VERIFY_FLAT 0.1 /* errors that change less than this share over dt..dt/8 are flat */
+#define DV_VERIFY_ORDER_SPREAD 0.5 /* the two observed orders agree within this */
 
 typedef enum dv_convergence {
   DV_CONVERGES = 0,       /* to the reference */
@@ -37,12 +43,17 @@ const char *dv_search_convergence_name(dv_convergence c);
 
 typedef struct dv_verification {
   double step[DV_VERIFY_LEVELS];  /* s */
-  double error[DV_VERIFY_LEVELS]; /* max theta error against the thin disk, rad */
+  double error[DV_VERIFY_LEVELS]; /* max theta error against the engine's reference, rad */
   double order;                   /* observed; NAN when the errors do not fall */
   double extrapolated;            /* e(0), rad */
+  double uncertainty;             /* of e(0), rad (0: not estimated) */
   dv_convergence verdict;
   char cause[96]; /* converges elsewhere: the dominant share of attribution */
 } dv_verification;
+
+/* order, extrapolation, uncertainty and verdict (before attribution) from
+ * v->step and v->error */
+void dv_search_verify_judge(dv_verification *v);
 
 /* refine engine on the scenario and judge its convergence */
 int dv_search_verify(const struct dv_scenario *sc, const char *engine, dv_verification *out,

@@ -56,7 +56,7 @@ int dv_search_verify_suite(const dv_scenario *scs, size_t n, const dv_engine_typ
     cases[k].status = DV_ESYSTEM; /* until its task reports */
     snprintf(cases[k].message, sizeof cases[k].message, "not run (its process ended early)");
     for (int i = 0; i < DV_VERIFY_LEVELS; i++) cases[k].v.step[i] = cases[k].v.error[i] = NAN;
-    cases[k].v.order = cases[k].v.extrapolated = NAN;
+    cases[k].v.order = cases[k].v.extrapolated = cases[k].v.uncertainty = NAN;
   }
   const suite_job j = {scs, engines, nengines};
   unsigned char *done = calloc(n * nengines, 1);
@@ -88,9 +88,10 @@ static void describe(const dv_verify_case *c, char *text, size_t size) {
   else if (c->status == DV_EVENT)
     snprintf(text, size, "skipped: %s", c->message);
   else
-    snprintf(text, size, "%s: extrapolated discrepancy %.3g rad (floor %g), order %s%s%s",
-             dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR, order,
-             c->v.cause[0] ? ", cause: " : "", c->v.cause);
+    snprintf(text, size,
+             "%s: extrapolated discrepancy %.3g rad (floor %g, uncertainty %.2g), order %s%s%s",
+             dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR,
+             c->v.uncertainty, order, c->v.cause[0] ? ", cause: " : "", c->v.cause);
 }
 
 /* a case that did not fail: converged, or skipped */
@@ -135,6 +136,7 @@ static int write_json(const char *dir, const dv_verify_case *cases, size_t n, dv
     cJSON_AddItemToObject(e, "errors", cJSON_CreateDoubleArray(c->v.error, DV_VERIFY_LEVELS));
     cJSON_AddItemToObject(e, "order", dv_io_json_number(c->v.order));
     cJSON_AddItemToObject(e, "extrapolated", dv_io_json_number(c->v.extrapolated));
+    cJSON_AddItemToObject(e, "uncertainty", dv_io_json_number(c->v.uncertainty));
     cJSON_AddNumberToObject(e, "wall_s", c->wall_s);
     cJSON_AddItemToArray(list, e);
   }
