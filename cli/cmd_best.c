@@ -23,11 +23,11 @@ static const char HELP[] =
     "could run at all.\n";
 
 /* every probe, the calibration, then the winner; exit 1 when none passes, 2
- * when every probe failed (no run measured anything) */
+ * when no probe's engine could run (each ended in an error) */
 static int print_search(const dv_search *s) {
   printf("%-12s %12s %12s %12s %12s %s\n", "choice", "step", "theta err", "steps / sim s",
          "s / sim s", "state");
-  size_t failed = 0;
+  size_t ran = 0; /* probes whose engine ran (an error or refused settings: not) */
   for (size_t i = 0; i < s->nprobes; i++) {
     const dv_probe *p = &s->probes[i];
     char err[32] = "n/a"; /* a run that failed measured nothing */
@@ -38,9 +38,9 @@ static int print_search(const dv_search *s) {
     if (p->state == DV_PROBE_FAILED)
       printf(" (%s: %s)", dv_search_failure_mode(p), p->point.detail[0] ? p->point.detail : "?");
     printf("\n");
-    failed += p->state == DV_PROBE_FAILED;
+    ran += p->point.verdict != DV_VERDICT_ERROR && p->point.verdict != DV_VERDICT_INVALID;
   }
-  if (s->nprobes && failed == s->nprobes)
+  if (s->nprobes && !ran)
     return dv_cli_error("best", "no probe could run: %s", s->probes[0].point.detail);
   printf("cost calibration, s per step (median of the probes' runs, min..max):");
   for (size_t k = 0; k < s->nchoices; k++) {

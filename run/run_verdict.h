@@ -11,10 +11,10 @@ typedef enum dv_verdict {
   DV_VERDICT_DIVERGED,         /* the run failed: NaN, a blow-up, a reset state */
   DV_VERDICT_LOST_CONTACT,     /* the disk left the ground */
   DV_VERDICT_ERROR,            /* a library or set-up error */
-  DV_VERDICT_ENDED_BY_EVENT,   /* the engine's run ended at an event before the reference's */
+  DV_VERDICT_ENDED_BY_EVENT,   /* the engine lay down before the reference's end (run_event.h) */
   DV_VERDICT_INVALID,          /* settings refused before the run (sweeps) */
   DV_VERDICT_MISSING,          /* never reported (a lost MPI rank) */
-  DV_VERDICT_NOT_JUDGED,       /* nothing to compare: the window is (nearly) empty */
+  DV_VERDICT_NOT_JUDGED,       /* nothing measured: a window too short, the reference itself */
   DV_VERDICT_OUTSIDE_VALIDITY, /* not judged: rolling stops describing the physics at once */
   DV_NVERDICTS
 } dv_verdict;

@@ -46,7 +46,9 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   p->step = step;
   if (dv_search_sweep_probe(c->sc, c->sp.engine, ptrs, n, &p->point, err)) return -1;
   const double e = p->point.metric[DV_THETA_MAX_ERR];
-  p->state = !p->point.ok                    ? DV_PROBE_FAILED
+  /* a run that lay down before the reference's end compared too short a window */
+  const int fell = p->point.verdict == DV_VERDICT_ENDED_BY_EVENT;
+  p->state = !p->point.ok || fell            ? DV_PROBE_FAILED
              : e <= s->margin * s->tolerance ? DV_PROBE_MEETS
              : e <= s->tolerance             ? DV_PROBE_MARGINAL
                                              : DV_PROBE_EXCEEDS;

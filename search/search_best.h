@@ -31,7 +31,8 @@
 #define DV_SEARCH_MARGIN 0.5 /* best: the error it accepts, as a share of the tolerance */
 
 /* a probe's state, one word each: meets (within the margin), marginal (within
- * the tolerance, above the margin), exceeds, failed (the run did not complete) */
+ * the tolerance, above the margin), exceeds, failed (the run did not complete,
+ * or lay down before the reference's end) */
 typedef enum dv_probe_state {
   DV_PROBE_MEETS = 0,
   DV_PROBE_MARGINAL,

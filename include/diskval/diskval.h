@@ -80,7 +80,8 @@ typedef struct diskval_metrics {
 
 /* an engine compared with the reference for the body it simulates */
 typedef struct diskval_comparison {
-  int pass;                          /* 1: every metric within its limit */
+  int pass;                          /* 1: judged, every metric within its limit, lying down
+                                      * (if it does) where the reference allows */
   char verdict[32];                  /* "agrees", "exceeds tolerance", "diverged", ... */
   char decided[160];                 /* which part decided the verdict, and why */
   diskval_metrics metrics;           /* against its own reference */
