@@ -240,7 +240,8 @@ int dv_scenario_set_core(dv_scenario *sc, const char *section, const char *key, 
     if (!sp) continue;
     if (dv_setting_store(sp, v, sc, what, sizeof what))
       return dv_fail(err, DV_EINPUT, "%s.%s: %s", section, key, what);
-    if (sp - dv_scenario_core[s].specs < 32) sc->core_given[s] |= 1u << (sp - dv_scenario_core[s].specs);
+    if (sp - dv_scenario_core[s].specs < 32)
+      sc->core_given[s] |= 1u << (sp - dv_scenario_core[s].specs);
     return DV_OK;
   }
   return dv_fail(err, DV_EINPUT, "%s.%s: no such setting", section, key);
