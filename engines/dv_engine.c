@@ -92,6 +92,8 @@ int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_
                  k == dv_engines ? "" : ", ", (*k)->name);
       return dv_fail(err, DV_EINPUT, "unknown engine '%s' (one of: %s)", tok, names);
     }
+    for (size_t k = 0; k < n; k++) /* a report holds one result per engine */
+      if (engines[k] == e) return dv_fail(err, DV_EINPUT, "engine '%s' listed twice", tok);
     if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
     engines[n++] = e;
   }

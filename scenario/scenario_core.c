@@ -71,10 +71,15 @@ static int check_scenario(dv_scenario *sc, void *block, dv_setting_issue *is) {
     snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
              sc->sections[i]->name);
   size_t count = 0;
+  unsigned listed = 0; /* bit i: engine i named already */
   for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok;
-       tok = strtok_r(NULL, ", ", &save), count++)
-    if (find_engine(sc, tok) < 0 || count == sc->nsections)
+       tok = strtok_r(NULL, ", ", &save), count++) {
+    const int e = find_engine(sc, tok);
+    if (e < 0 || count == sc->nsections)
       return issue(is, "scenario", "engines", "'%s': at most %zu of %s", tok, sc->nsections, names);
+    if (listed & 1u << e) return issue(is, "scenario", "engines", "'%s' listed twice", tok);
+    listed |= 1u << e;
+  }
   if (sc->output_dt > sc->duration)
     return issue(is, "scenario", "output_dt", "%s s is longer than the duration %s s",
                  num(sc->output_dt, a), num(sc->duration, b));
