@@ -153,7 +153,21 @@ static int check_initial(dv_scenario *sc, void *block, dv_setting_issue *is) {
                                    &y[RED_VPS], &e)
           : red_steady_from_phi_dot(&sc->disk, y[RED_TH], sc->steady_phi_dot, &y[RED_VPS], &e);
   if (has_rate) y[RED_VPH] = sc->steady_phi_dot;
-  return status ? issue(is, "initial", steady_key, "%s", e.msg) : 0;
+  if (status) return issue(is, "initial", steady_key, "%s", e.msg);
+  /* the rates derived meet the ranges of rates given (a tiny turning rate
+   * derives a spin of 1e101 rad/s that no solver follows) */
+  const size_t derived[] = {RED_VPH, RED_VPS};
+  for (size_t i = 0; i < 2; i++) {
+    const dv_setting_spec *sp =
+        dv_settings_find(&dv_scenario_core[2], derived[i] == RED_VPH ? "phi_dot" : "psi_dot");
+    char what[200], range[96], v[DV_FORMAT_SIZE];
+    if (!dv_setting_store(sp, y[derived[i]], sc, what, sizeof what)) continue;
+    dv_setting_range_text(sp, range, sizeof range);
+    return issue(is, "initial", steady_key,
+                 "derives %s = %s rad/s, outside %s (a given %s's range)", sp->key,
+                 num(y[derived[i]], v), range, sp->key);
+  }
+  return 0;
 }
 
 static const dv_setting_spec SCENARIO_KEYS[] = {
