@@ -104,12 +104,22 @@ static int scenario_new(const char *name, const diskval_disk *disk, const diskva
   return DV_OK;
 }
 
-/* set one engine setting, checked as at load */
+/* set one engine setting, checked as at load: its own range, then every
+ * engine section's check on a copy (a theta_limit past the initial theta is refused
+ * as a file or --set refuses it); sc is unchanged on error */
 int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *key,
                          const char *value, diskval_error *err) {
   if (!sc || !engine || !key || !value)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_set: NULL argument");
-  return dv_scenario_set(&sc->sc, engine, key, value, as_dv(err));
+  dv_scenario *trial = malloc(sizeof *trial);
+  if (!trial) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory for a scenario's copy");
+  *trial = sc->sc;
+  dv_error why;
+  int status = dv_scenario_set(trial, engine, key, value, as_dv(err));
+  if (!status && dv_engine_derive_settings(trial, &why))
+    status = dv_fail(as_dv(err), DV_EINPUT, "engines.%s.%s = %s: %s", engine, key, value, why.msg);
+  free(trial);
+  return status ? status : dv_scenario_set(&sc->sc, engine, key, value, as_dv(err));
 }
 
 /* the disk as the scenario holds it, moments derived where they were not given */

@@ -80,7 +80,9 @@ int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *
   for (int c; status == DV_CLI_RUN && (c = getopt_long(argc, argv, ":h", longs, NULL)) != -1;) {
     if (c == 'h' || c == HELP_ID) {
       fputs(cmd->help, stdout);
-      status = fflush(stdout) || ferror(stdout) ? DV_EXIT_ERROR : DV_EXIT_OK;
+      status = fflush(stdout) || ferror(stdout)
+                   ? dv_cli_error(cmd->name, "cannot write the output: %s", strerror(errno))
+                   : DV_EXIT_OK;
     } else if (c == SET_ID) {
       const char *eq = strchr(optarg, '='), *dot = strchr(optarg, '.');
       if (!eq || !dot || dot > eq)

@@ -82,8 +82,12 @@ int main(int argc, char **argv) {
   dv_io_temp_clean_on_signals(); /* a run ended by SIGINT or SIGTERM leaves no temporary */
   dv_exec_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-    fputs(HELP, argc < 2 ? stderr : stdout);
-    return argc < 2 ? DV_EXIT_ERROR : DV_EXIT_OK;
+    if (argc < 2) return fputs(HELP, stderr), DV_EXIT_ERROR;
+    fputs(HELP, stdout);
+    if (fflush(stdout) || ferror(stdout)) /* e.g. > /dev/full */
+      return fprintf(stderr, "diskval: cannot write the output: %s\n", strerror(errno)),
+             DV_EXIT_ERROR;
+    return DV_EXIT_OK;
   }
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
     if (!strcmp(argv[1], commands[i].name)) {

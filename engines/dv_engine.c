@@ -70,8 +70,9 @@ int dv_engine_derive_settings(dv_scenario *sc, dv_error *err) {
   for (size_t i = 0; i < sc->nsections; i++) {
     dv_setting_issue issue = {0};
     const dv_settings_section *sec = sc->sections[i];
-    if (sec->check && sec->check(sc, &sc->settings[i], &issue))
-      return dv_fail(err, DV_EINPUT, "engines.%s.%s: %s", issue.section, issue.key, issue.what);
+    if (sec->check && sec->check(sc, &sc->settings[i], &issue)) /* "initial.theta" is no engine's */
+      return dv_fail(err, DV_EINPUT, "%s%s.%s: %s", dv_engine_find(issue.section) ? "engines." : "",
+                     issue.section, issue.key, issue.what);
   }
   return DV_OK;
 }
@@ -91,6 +92,8 @@ int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_
                  k == dv_engines ? "" : ", ", (*k)->name);
       return dv_fail(err, DV_EINPUT, "unknown engine '%s' (one of: %s)", tok, names);
     }
+    for (size_t k = 0; k < n; k++) /* a report holds one result per engine */
+      if (engines[k] == e) return dv_fail(err, DV_EINPUT, "engine '%s' listed twice", tok);
     if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
     engines[n++] = e;
   }

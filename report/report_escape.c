@@ -1,7 +1,8 @@
-/* dv_report_escape: entities and valid UTF-8 for HTML and XML. */
+/* dv_report_escape: entities and valid UTF-8 for HTML and XML; backslashes for Markdown. */
 #include "report_escape.h"
 
 #include <stddef.h>
+#include <string.h>
 
 /* entities for the ASCII characters that need one (tab and newline in attributes only) */
 static const char *const entities[128] = {
@@ -46,6 +47,26 @@ void dv_report_escape(FILE *fp, const char *s, int attr) {
     } else {
       fwrite(p, 1, n, fp);
     }
+    p += n;
+  }
+}
+
+void dv_report_escape_markdown(FILE *fp, const char *s) {
+  const unsigned char *p = (const unsigned char *)(s ? s : "");
+  const size_t digits = strspn((const char *)p, "0123456789");
+  for (const unsigned char *start = p; *p;) {
+    size_t n = 1;
+    /* what starts a list or heading at the line's start: "- x", "1. x", "1) x", "=" */
+    const int opens_block = (p == start && strchr("-+=", *p)) ||
+                            (digits && p == start + digits && (*p == '.' || *p == ')'));
+    if (*p == '\t' || *p == '\n' || *p == '\r')
+      fputc(' ', fp);
+    else if (*p < 0x20 || *p == 0x7f || !(n = utf8_len(p)))
+      fputc('?', fp), n = 1;
+    else if (opens_block || (*p < 0x80 && strchr("\\`*_{}[]<>#|~&", *p)))
+      fputc('\\', fp), fputc(*p, fp);
+    else
+      fwrite(p, 1, n, fp);
     p += n;
   }
 }

@@ -11,6 +11,7 @@
 #include "dv_reference.h"
 #include "run_meta.h"
 #include "io_file.h"
+#include "report_escape.h"
 #include "report_plot.h"
 #include "run_trajectory.h"
 #include "red_invariants.h"
@@ -197,7 +198,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   if (status) return status;
   FILE *fp = out.fp;
   const dv_scenario *sc = c->sc;
-  fprintf(fp, "# %s: %s\n\n%s\n\n", sc->name, c->pass ? "pass" : "FAIL", sc->description);
+  fprintf(fp, "# %s: %s\n\n", sc->name, c->pass ? "pass" : "FAIL");
+  dv_report_escape_markdown(fp, sc->description); /* the user's text: no markup, no control bytes */
+  fputs("\n\n", fp);
   fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
           integrator_name(sc), dv_reference_settings(sc)->rtol,
           dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",

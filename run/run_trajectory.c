@@ -43,6 +43,14 @@ static void force_row(FILE *fp, const dv_sample *s) {
   fwrite(line, 1, format_row(line, s->t, v, (int)(sizeof v / sizeof *v)), fp);
 }
 
+/* a sink that refuses a sample could not keep it (the CSV writer never refuses) */
+static int out_of_memory(const dv_engine_type *type, long k, const dv_sample *s, dv_error *err) {
+  return dv_fail(err, DV_ESYSTEM,
+                 "out of memory: the %s run's trajectory could not grow to keep sample %ld "
+                 "(t = %g s; %zu bytes a sample)",
+                 type->name, k + 1, s->t, sizeof *s);
+}
+
 int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_sink sink,
                    void *ctx, dv_engine_stats *stats, dv_error *err) {
   dv_sample s;
@@ -56,7 +64,7 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
   int status = type->reset(engine, sc->initial, err);
   /* the first sample is read back from the engine: its own view of the start */
   if (!status) status = type->advance(engine, 0.0, &s, err);
-  if (!status && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!status && sink(ctx, &s)) status = out_of_memory(type, 0, &s, err);
   dv_run_progress_run_begin(sc->name, type->name, sc->duration);
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
@@ -65,7 +73,7 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
       status = dv_fail(err, DV_ENUMERIC, "non-finite state at t = %g s", t);
       break;
     }
-    if (status >= 0 && sink(ctx, &s)) status = dv_fail(err, DV_ESYSTEM, "output failed");
+    if (status >= 0 && sink(ctx, &s)) status = out_of_memory(type, k, &s, err);
     if (status >= 0) dv_run_progress_run_at(s.t);
     if (t >= sc->duration) break;
   }

@@ -17,7 +17,8 @@
 /* one CSV row */
 void dv_run_csv_row(FILE *fp, const dv_sample *s);
 
-/* receives each sample; non-zero stops the run */
+/* receives each sample; non-zero stops the run, as out of memory (a sink
+ * that stops a run on purpose passes no err) */
 typedef int (*dv_sample_sink)(void *ctx, const dv_sample *s);
 
 /* run engine over sc, one sample at t = 0, every output_dt and at an event,

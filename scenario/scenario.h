@@ -37,6 +37,9 @@
 #define DV_MEMORY_BASE_MIB 64
 #define DV_MEMORY_BUDGET_GIB 1.0 /* [scenario] memory_budget's default */
 
+/* a scenario file larger than this is refused before more of it is read */
+#define DV_SCENARIO_MAX_BYTES (1024 * 1024)
+
 typedef enum dv_init_mode {
   DV_INIT_STATE = 0,     /* the state is given key by key */
   DV_INIT_STEADY_RADIUS, /* theta + steady_circle_radius */

@@ -83,10 +83,15 @@ static int check_scenario(dv_scenario *sc, void *block, dv_setting_issue *is) {
     snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
              sc->sections[i]->name);
   size_t count = 0;
+  unsigned listed = 0; /* bit i: engine i named already */
   for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok;
-       tok = strtok_r(NULL, ", ", &save), count++)
-    if (find_engine(sc, tok) < 0 || count == sc->nsections)
+       tok = strtok_r(NULL, ", ", &save), count++) {
+    const int e = find_engine(sc, tok);
+    if (e < 0 || count == sc->nsections)
       return issue(is, "scenario", "engines", "'%s': at most %zu of %s", tok, sc->nsections, names);
+    if (listed & 1u << e) return issue(is, "scenario", "engines", "'%s' listed twice", tok);
+    listed |= 1u << e;
+  }
   if (sc->output_dt > sc->duration)
     return issue(is, "scenario", "output_dt", "%s s is longer than the duration %s s",
                  num(sc->output_dt, a), num(sc->duration, b));
@@ -171,7 +176,21 @@ static int check_initial(dv_scenario *sc, void *block, dv_setting_issue *is) {
                                                   &y[RED_VPH], &y[RED_VPS], &e)
                          : red_steady_from_phi_dot(&sc->disk, y[RED_TH], sc->steady_phi_dot,
                                                    &y[RED_VPS], &e);
-  return status ? issue(is, "initial", steady_key, "%s", e.msg) : 0;
+  if (status) return issue(is, "initial", steady_key, "%s", e.msg);
+  /* the rates derived meet the ranges of rates given (a tiny turning rate
+   * derives a spin of 1e101 rad/s that no solver follows) */
+  const size_t derived[] = {RED_VPH, RED_VPS};
+  for (size_t i = 0; i < 2; i++) {
+    const dv_setting_spec *sp =
+        dv_settings_find(&dv_scenario_core[2], derived[i] == RED_VPH ? "phi_dot" : "psi_dot");
+    char what[200], range[96], v[DV_FORMAT_SIZE];
+    if (!dv_setting_store(sp, y[derived[i]], sc, what, sizeof what)) continue;
+    dv_setting_range_text(sp, range, sizeof range);
+    return issue(is, "initial", steady_key,
+                 "derives %s = %s rad/s, outside %s (a given %s's range)", sp->key,
+                 num(y[derived[i]], v), range, sp->key);
+  }
+  return 0;
 }
 
 static const dv_setting_spec SCENARIO_KEYS[] = {

@@ -21,8 +21,9 @@
 typedef struct parse_ctx {
   const char *path; /* for messages */
   int line;         /* current line, counted by the reader */
-  FILE *file;
-  int failed; /* first error kept */
+  const char *data; /* the whole file, NUL-terminated */
+  size_t size, pos; /* its length; the reader's position */
+  int failed;       /* first error kept */
   dv_error *err;
   dv_scenario *sc;
   size_t nsec;
@@ -35,8 +36,6 @@ typedef struct parse_ctx {
   char seen[MAX_SEEN][64];
   int seen_line[MAX_SEEN];
   int nseen;
-  char *raw; /* getline's buffer */
-  size_t raw_size;
 } parse_ctx;
 
 static int known_section(const parse_ctx *c, const char *name);
@@ -63,6 +62,11 @@ static int fail_at(parse_ctx *c, int line, const char *key, const char *fmt, ...
 static int see_header(parse_ctx *c, const char *p) {
   const char *end = strchr(p, ']');
   char name[64];
+  if (!end) {
+    const size_t len = strcspn(p, "\r\n");
+    return fail_at(c, c->line, "syntax", "'%.*s' has no closing ']'", (int)(len > 60 ? 60 : len),
+                   p);
+  }
   size_t len = end ? (size_t)(end - p - 1) : 0;
   if (len >= sizeof name) len = sizeof name - 1;
   memcpy(name, p + 1, len);
@@ -76,23 +80,65 @@ static int see_header(parse_ctx *c, const char *p) {
   return 0;
 }
 
-/* inih reader: one line per call, counted; over-long lines, NUL bytes and
- * unknown sections are errors; a UTF-8 byte order mark on line 1 is skipped */
+/* inih reader: one line per call from the file read whole, counted; over-long
+ * lines, NUL bytes and unknown sections are errors; a UTF-8 byte order mark on
+ * line 1 is skipped */
 static char *read_line(char *buf, int size, void *stream) {
   parse_ctx *c = stream;
-  const ssize_t got = getline(&c->raw, &c->raw_size, c->file);
-  if (got < 0) return NULL;
+  if (c->failed || c->pos >= c->size) return NULL;
+  const char *text = c->data + c->pos;
+  const char *eol = memchr(text, '\n', c->size - c->pos);
+  size_t n = eol ? (size_t)(eol - text) + 1 : c->size - c->pos;
+  c->pos += n;
   c->line++;
-  const char *text = c->raw;
-  size_t n = (size_t)got;
   if (c->line == 1 && n >= 3 && !memcmp(text, "\xef\xbb\xbf", 3)) text += 3, n -= 3;
-  if (strlen(text) != n) return fail_at(c, c->line, "syntax", "a NUL byte inside the line"), NULL;
+  if (memchr(text, '\0', n))
+    return fail_at(c, c->line, "syntax", "a NUL byte inside the line"), NULL;
   if (n + 1 > (size_t)size)
     return fail_at(c, c->line, "syntax", "line longer than %d characters", size - 2), NULL;
-  memcpy(buf, text, n + 1);
+  memcpy(buf, text, n);
+  buf[n] = '\0';
   const char *p = buf + strspn(buf, " \t");
   if (*p == '[' && see_header(c, p)) return NULL;
   return buf;
+}
+
+/* path read whole into c->data, refused past DV_SCENARIO_MAX_BYTES before
+ * more is read: a scenario is a few KiB, and /dev/zero never ends. A file
+ * that cannot be read has no line to point at. */
+static int read_file(parse_ctx *c, const char *path) {
+  struct stat st;
+  const double mib = DV_SCENARIO_MAX_BYTES / 1048576.0;
+  if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+    return dv_fail(c->err, DV_EINPUT, "%s: is a directory, not a scenario file", path);
+  FILE *f = fopen(path, "rb");
+  if (!f) return dv_fail(c->err, DV_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+  int status = DV_OK;
+  char *buf = NULL;
+  if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > DV_SCENARIO_MAX_BYTES) {
+    status =
+        dv_fail(c->err, DV_EINPUT, "%s: %.1f MiB, more than the %g MiB a scenario file may have",
+                path, (double)st.st_size / 1048576.0, mib);
+    goto cleanup;
+  }
+  if (!(buf = malloc(DV_SCENARIO_MAX_BYTES + 2))) {
+    status = dv_fail(c->err, DV_ESYSTEM, "%s: out of memory for a %g MiB read buffer", path, mib);
+    goto cleanup;
+  }
+  const size_t got = fread(buf, 1, DV_SCENARIO_MAX_BYTES + 1, f);
+  if (ferror(f))
+    status = dv_fail(c->err, DV_EINPUT, "%s: read error: %s", path, strerror(errno));
+  else if (got > DV_SCENARIO_MAX_BYTES)
+    status =
+        dv_fail(c->err, DV_EINPUT, "%s: more than the %g MiB a scenario file may have", path, mib);
+  if (status) goto cleanup;
+  buf[got] = '\0';
+  c->data = buf, c->size = got, buf = NULL;
+
+cleanup:
+  free(buf);
+  fclose(f);
+  return status;
 }
 
 static int section_line(const parse_ctx *c, const char *section) {
@@ -264,7 +310,6 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
                      const char *const *overrides, size_t noverrides, dv_scenario *sc,
                      dv_error *err) {
   parse_ctx *c = calloc(1, sizeof *c);
-  struct stat st;
   int status = DV_EINPUT;
   if (!c) return dv_fail(err, DV_ESYSTEM, "out of memory");
   dv_scenario_init(sc, engines);
@@ -277,24 +322,14 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
     status = dv_fail(err, DV_EINPUT, "%s: more than %d keys in the schema", path, MAX_KEYS);
     goto cleanup;
   }
-  /* a file that cannot be read has no line to point at */
-  if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-    dv_fail(err, DV_EINPUT, "%s: is a directory, not a scenario file", path);
-    goto cleanup;
-  }
-  if (!(c->file = fopen(path, "r"))) {
-    dv_fail(err, DV_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    goto cleanup;
-  }
+  if (read_file(c, path)) goto cleanup;
   const int bad_line = ini_parse_stream(read_line, c, on_key, c);
-  if (ferror(c->file)) fail_at(c, c->line, "file", "read error: %s", strerror(errno));
   if (bad_line > 0) fail_at(c, bad_line, "syntax", "expected [section] or key = value");
   for (size_t i = 0; i < noverrides && !c->failed; i++) apply_override(c, (int)i + 1, overrides[i]);
   if (!c->failed && validate(c) == 0 && !c->failed) status = DV_OK;
 
 cleanup:
-  if (c->file) fclose(c->file);
-  free(c->raw);
+  free((char *)c->data);
   free(c);
   return status;
 }

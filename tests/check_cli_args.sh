@@ -75,6 +75,11 @@ for cmd in compare suite verify; do
     $cmd "$sc" --engines ode,Mujoco
 done
 expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode\)\$" map --engines Mujoco
+# an engine named twice would be two results under one key in report.json
+for cmd in compare suite verify; do
+  expect "^diskval $cmd: engine 'ode' listed twice\$" $cmd "$sc" --engines ode,mujoco,ode
+done
+expect "^diskval map: engine 'mujoco' listed twice\$" map --engines mujoco,mujoco
 # a file that cannot be opened has no line to name
 expect "^nosuch.ini: cannot open: No such file or directory\$" simulate nosuch.ini --engine reduced
 expect "--set 'radius=1': expected section.key=value" simulate "$sc" --engine reduced --set radius=1

@@ -83,6 +83,8 @@ expect_lost_stdout() {
 expect_lost_stdout analyze "$sc/falling.ini"
 expect_lost_stdout analyze "$sc/falling.ini" --json
 expect_lost_stdout engines
+expect_lost_stdout --help
+expect_lost_stdout compare --help
 expect_lost_stdout compare "$sc/falling.ini" --out cmp
 expect_lost_stdout simulate "$sc/falling.ini" --engine reduced
 expect_lost_stdout simulate "$sc/falling.ini" --engine reduced --out /dev/full

@@ -124,6 +124,33 @@ static void check_file(const char *dir) {
         "a missing file is an error");
 }
 
+/* a setting from code meets the checks a file and --set apply: a theta_limit
+ * that puts the initial theta (1 rad) outside is refused, naming both keys,
+ * and leaves the scenario as it was (the reference still runs to the end) */
+static void check_set_checked(const char *dir) {
+  char path[1024];
+  snprintf(path, sizeof path, "%s/steady_circle.ini", dir);
+  diskval_error err = {{0}};
+  diskval_scenario *sc = NULL;
+  const char *set[] = {"scenario.duration=0.5"};
+  if (diskval_scenario_load(path, set, 1, &sc, &err)) {
+    CHECK(0, "load %s: %s", path, err.msg);
+    return;
+  }
+  int s = diskval_scenario_set(sc, "reduced", "theta_limit", "1.5", &err);
+  CHECK(s == DISKVAL_EINPUT && strstr(err.msg, "engines.reduced.theta_limit") &&
+            strstr(err.msg, "initial.theta") && strstr(err.msg, "lying-down"),
+        "theta_limit 1.5 past theta 1: status %d, '%s'", s, err.msg);
+  s = diskval_scenario_set(sc, "reduced", "theta_limit", "0.9", &err);
+  CHECK(s == 0, "theta_limit 0.9 inside: %s", err.msg);
+  diskval_trajectory *tr = NULL;
+  s = diskval_run(sc, "reduced", &tr, &err);
+  CHECK(s == 0 && diskval_trajectory_size(tr) == 51, "after a refused set: status %d, %zu samples",
+        s, diskval_trajectory_size(tr));
+  diskval_trajectory_free(tr);
+  diskval_scenario_free(sc);
+}
+
 /* run every check */
 int main(int argc, char **argv) {
   CHECK(argc == 2, "usage: test_api SCENARIOS_DIR");
@@ -139,5 +166,6 @@ int main(int argc, char **argv) {
   check_in_code();
   check_disk_input();
   check_file(argv[1]);
+  check_set_checked(argv[1]);
   return TEST_RESULT();
 }

@@ -2,6 +2,7 @@
  *   - dv_report_escape on markup characters, in text and in attributes, and
  *     on invalid UTF-8 (every bad byte a '?', valid multi-byte characters
  *     kept); dv_report_utf8_scrub on the same bytes;
+ *   - dv_report_escape_markdown on markup, list starts and control bytes;
  *   - the stability page of a scenario and an engine whose names hold
  *     markup: escaped on the page, no raw '<' or '&' from the names.
  * usage: test_escape (writes into a temporary directory it removes) */
@@ -70,6 +71,44 @@ static void check_escaper(void) {
   dv_report_utf8_scrub(NULL);
 }
 
+/* s as Markdown; the caller frees */
+static char *markdown(const char *s) {
+  char *buf = NULL;
+  size_t len = 0;
+  FILE *fp = open_memstream(&buf, &len);
+  if (!fp) return NULL;
+  dv_report_escape_markdown(fp, s);
+  fclose(fp);
+  return buf;
+}
+
+/* a description reaches report.md as literal text: no HTML, link, emphasis,
+ * list or control byte survives; plain words and UTF-8 stay as they are */
+static void check_markdown(void) {
+  const struct {
+    const char *in, *want;
+  } cases[] = {
+      {"uniform disk, theta 1.0 rad, m r^2 (C = 0)", "uniform disk, theta 1.0 rad, m r^2 (C = 0)"},
+      {"<script>alert(1)</script>", "\\<script\\>alert(1)\\</script\\>"},
+      {"[x](javascript:y) *b* _i_ `c` &amp; #h |t| ~s~",
+       "\\[x\\](javascript:y) \\*b\\* \\_i\\_ \\`c\\` \\&amp; \\#h \\|t\\| \\~s\\~"},
+      {"- item", "\\- item"},
+      {"12. item", "12\\. item"},
+      {"a\x1b[31mred\x7f\tb\r\nc", "a?\\[31mred? b  c"},
+      {"\xce\xb8 \xff", "\xce\xb8 ?"},
+      {"back\\slash", "back\\\\slash"},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char *got = markdown(cases[i].in);
+    CHECK(got && !strcmp(got, cases[i].want), "markdown(\"%s\"): got \"%s\", want \"%s\"",
+          cases[i].in, got ? got : "(null)", cases[i].want);
+    free(got);
+  }
+  char *none = markdown(NULL);
+  CHECK(none && !none[0], "markdown(NULL)");
+  free(none);
+}
+
 /* names with markup reach the stability page only escaped */
 static void check_stability_page(void) {
   char dir[] = "/tmp/test_escape.XXXXXX";
@@ -107,6 +146,7 @@ static void check_stability_page(void) {
 
 int main(void) {
   check_escaper();
+  check_markdown();
   check_stability_page();
   return TEST_RESULT();
 }
