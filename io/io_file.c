@@ -70,6 +70,16 @@ int dv_io_open_in(dv_io_file *out, const char *dir, const char *name, dv_error *
   return status ? status : dv_io_open(out, path, err);
 }
 
+int dv_io_write_text(const char *dir, const char *name, const char *text, dv_error *err) {
+  dv_io_file f;
+  int status = dv_io_open_in(&f, dir, name, err);
+  if (status) return status;
+  fputs(text, f.fp);
+  status = dv_io_commit(&f, err);
+  dv_io_abort(&f);
+  return status;
+}
+
 int dv_io_commit(dv_io_file *out, dv_error *err) {
   if (!out->fp) return dv_fail(err, DV_ESYSTEM, "output not open");
   if (out->fp == stdout) {

@@ -29,6 +29,9 @@ void dv_io_abort(dv_io_file *out);                /* NULL-safe, idempotent */
 /* dv_io_open of the file name in the directory dir */
 int dv_io_open_in(dv_io_file *out, const char *dir, const char *name, dv_error *err);
 
+/* text as the whole of the file dir/name, written as dv_io_open does */
+int dv_io_write_text(const char *dir, const char *name, const char *text, dv_error *err);
+
 /* format a path into buf (size bytes); DV_EINPUT when it does not fit */
 int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));

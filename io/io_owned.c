@@ -28,13 +28,7 @@ int dv_io_owned(const char *path) {
 }
 
 int dv_io_mark(const char *dir, dv_error *err) {
-  dv_io_file f;
-  int status = dv_io_open_in(&f, dir, DV_IO_MARK, err);
-  if (status) return status;
-  fputs(DV_IO_MARK_TEXT, f.fp);
-  status = dv_io_commit(&f, err);
-  dv_io_abort(&f);
-  return status;
+  return dv_io_write_text(dir, DV_IO_MARK, DV_IO_MARK_TEXT, err);
 }
 
 int dv_io_check_replaceable(const char *path, dv_error *err) {

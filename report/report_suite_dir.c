@@ -88,17 +88,6 @@ int dv_report_dir_check(const char *out_dir, const dv_scenario *scs, size_t n,
   return DV_OK;
 }
 
-/* write text into dir/name */
-static int write_file(const char *dir, const char *name, const char *text, dv_error *err) {
-  dv_io_file f;
-  int status = dv_io_open_in(&f, dir, name, err);
-  if (status) return status;
-  fputs(text, f.fp);
-  status = dv_io_commit(&f, err);
-  dv_io_abort(&f);
-  return status;
-}
-
 /* report.json and report.md of a scenario that failed, into dir */
 static int write_error_files(const char *dir, const dv_scenario *sc, const char *cause,
                              dv_error *err) {
@@ -115,9 +104,9 @@ static int write_error_files(const char *dir, const dv_scenario *sc, const char 
   int status = json && md ? DV_OK : dv_fail(err, DV_ESYSTEM, "out of memory");
   if (!status) {
     snprintf(md, md_size, "# %s\n\nerror: %s\n", sc->name, cause);
-    status = write_file(dir, "report.json", json, err);
+    status = dv_io_write_text(dir, "report.json", json, err);
   }
-  if (!status) status = write_file(dir, "report.md", md, err);
+  if (!status) status = dv_io_write_text(dir, "report.md", md, err);
   free(json);
   free(md);
   return status;
