@@ -33,8 +33,11 @@ typedef struct analysis {
   double E, f1, f2, k, crit, range[2];
   int falls, steady, stable;
   double eig[RED_NREDUCED][2];
+  double eig_uncertainty; /* how far the eigenvalues move with the Jacobian's step */
+  int marginal;           /* the largest real part is within that of 0 */
   int nutates;            /* a nutation between two turning points, resolved */
   double nutation[3];     /* its period (s), the advances of phi and psi over it (rad) */
+  double resolution;      /* relative: what halving the quadrature's points moves them by */
   char nutation_why[160]; /* why a nutation's numbers are not shown, or "" */
 } analysis;
 
@@ -51,14 +54,27 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
       red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, err);
   if (status) return status;
   an->steady = red_is_steady(d, y, 1e-9);
-  if (an->steady) return red_linear_stability(d, y, an->eig, &an->stable, err);
+  if (an->steady) {
+    if (red_linear_stability(d, y, an->eig, &an->stable, err)) return DV_ENUMERIC;
+    an->eig_uncertainty = red_eigen_uncertainty(d, y, an->eig);
+    /* two eigenvalues are always 0 (the family of steady motions); a third
+     * within the uncertainty of 0 puts the motion on the stability boundary */
+    int near_zero = 0;
+    for (int i = 0; i < RED_NREDUCED; i++)
+      near_zero += hypot(an->eig[i][0], an->eig[i][1]) <= an->eig_uncertainty;
+    an->marginal = near_zero > 2;
+    return DV_OK;
+  }
   if (an->falls || !(an->range[0] < an->range[1])) return DV_OK;
-  /* 256 points: within 1e-9 of the integrated period (test_period_quadrature);
-   * a nutation too small for E - U to stand above rounding is said, not failed */
+  /* 256 points: within 1.6e-10 of the integrated period on nutations of
+   * 0.1 rad and more (test_period_quadrature), less on small ones, shown to the
+   * digits their resolution holds; one too small for E - U to stand above
+   * rounding is said, not failed */
   dv_error why = {{0}};
   double resolution = NAN;
   an->nutates = red_nutation(d, y, an->range, an->nutation, &resolution, &why) == DV_OK &&
                 resolution <= NUTATION_RESOLUTION;
+  an->resolution = resolution;
   if (!an->nutates && !why.msg[0])
     snprintf(why.msg, sizeof why.msg, "the quadrature moves by %.2g with half its points",
              resolution);
@@ -66,6 +82,12 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
     snprintf(an->nutation_why, sizeof an->nutation_why, "not resolved over %.3g rad: %.100s",
              an->range[1] - an->range[0], why.msg);
   return DV_OK;
+}
+
+/* the significant digits a relative resolution holds (4 to 10) */
+static int digits(double resolution) {
+  const double d = floor(-log10(fmax(resolution, 1e-300)));
+  return d < 4.0 ? 4 : d > 10.0 ? 10 : (int)d;
 }
 
 static const char *branch(double k) {
@@ -99,6 +121,8 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
     cJSON *ev = cJSON_AddArrayToObject(s, "eigenvalues");
     for (int i = 0; i < RED_NREDUCED; i++)
       cJSON_AddItemToArray(ev, cJSON_CreateDoubleArray(an->eig[i], 2));
+    cJSON_AddItemToObject(s, "eigenvalue_uncertainty", dv_io_json_number(an->eig_uncertainty));
+    cJSON_AddBoolToObject(s, "marginal", an->marginal);
   } else {
     cJSON_AddNullToObject(o, "steady");
   }
@@ -107,6 +131,7 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
     cJSON_AddNumberToObject(n, "period", an->nutation[0]);
     cJSON_AddNumberToObject(n, "phi_advance", an->nutation[1]);
     cJSON_AddNumberToObject(n, "psi_advance", an->nutation[2]);
+    cJSON_AddNumberToObject(n, "resolution", an->resolution);
   } else {
     cJSON_AddNullToObject(o, "nutation");
   }
@@ -128,17 +153,22 @@ static void print_text(const dv_scenario *sc, const analysis *an) {
   if (!an->steady) {
     printf("steady            no (theta_dot = %g rad/s)\n", y[RED_VTH]);
     if (an->nutates)
-      printf("nutation          period %.10g s; phi advances %.10g rad, psi %.10g rad a period\n",
-             an->nutation[0], an->nutation[1], an->nutation[2]);
+      printf("nutation          period %.*g s; phi advances %.*g rad, psi %.*g rad a period\n",
+             digits(an->resolution), an->nutation[0], digits(an->resolution), an->nutation[1],
+             digits(an->resolution), an->nutation[2]);
     else if (an->nutation_why[0])
       printf("nutation          %s\n", an->nutation_why);
     return;
   }
   printf("steady            phi_dot %.15g, psi_dot %.15g rad/s, contact radius %.12g m\n",
          y[RED_VPH], y[RED_VPS], fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH]));
-  printf("stability         %s; eigenvalues", an->stable ? "linearly stable" : "unstable");
+  printf("stability         %s; eigenvalues",
+         an->marginal ? "marginal" : an->stable ? "linearly stable" : "unstable");
   for (int i = 0; i < RED_NREDUCED; i++) printf(" (%.6g%+.6gi)", an->eig[i][0], an->eig[i][1]);
-  printf("\n");
+  printf(", each within %.1e (finite differences)\n", an->eig_uncertainty);
+  if (an->marginal)
+    printf("                  more than the two structural eigenvalues are within that of 0: "
+           "on the stability boundary\n");
 }
 
 int dv_cli_analyze(int argc, char **argv) {

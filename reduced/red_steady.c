@@ -65,8 +65,9 @@ static double component(double v, void *p) {
   return f[c->row];
 }
 
-int red_linear_stability(const red_disk *dk, const double y[RED_NSTATE],
-                         double eig[RED_NREDUCED][2], int *stable, dv_error *err) {
+/* eigenvalues of the Jacobian by central differences of relative step hrel */
+static int eigenvalues(const red_disk *dk, const double y[RED_NSTATE], double hrel,
+                       double eig[RED_NREDUCED][2], dv_error *err) {
   enum { N = RED_NREDUCED };
   double jac[N * N];
   column_ctx ctx = {dk, {0}, 0, 0};
@@ -75,7 +76,7 @@ int red_linear_stability(const red_disk *dk, const double y[RED_NSTATE],
   for (ctx.row = 0; ctx.row < N; ctx.row++) {
     for (ctx.col = 0; ctx.col < N; ctx.col++) {
       double d, abserr;
-      const double h = 1e-4 * fmax(1.0, fabs(y[ctx.col]));
+      const double h = hrel * fmax(1.0, fabs(y[ctx.col]));
       gsl_deriv_central(&fn, y[ctx.col], h, &d, &abserr);
       if (!isfinite(d)) return dv_fail(err, DV_ENUMERIC, "Jacobian is not finite");
       jac[ctx.row * N + ctx.col] = d;
@@ -85,17 +86,38 @@ int red_linear_stability(const red_disk *dk, const double y[RED_NSTATE],
   gsl_vector_complex *ev = gsl_vector_complex_alloc(N);
   gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc(N);
   int status = (ev && w) ? gsl_eigen_nonsymm(&J.matrix, ev, w) : GSL_ENOMEM;
-  double big = 0.0, re_max = -INFINITY;
   for (int i = 0; status == GSL_SUCCESS && i < N; i++) {
     gsl_complex z = gsl_vector_complex_get(ev, (size_t)i);
     eig[i][0] = GSL_REAL(z);
     eig[i][1] = GSL_IMAG(z);
-    big = fmax(big, hypot(eig[i][0], eig[i][1]));
-    re_max = fmax(re_max, eig[i][0]);
   }
   if (w) gsl_eigen_nonsymm_free(w);
   if (ev) gsl_vector_complex_free(ev);
-  if (status) return dv_fail(err, DV_ENUMERIC, "eigenvalues: %s", red_gsl_words(status));
+  return status ? dv_fail(err, DV_ENUMERIC, "eigenvalues: %s", red_gsl_words(status)) : DV_OK;
+}
+
+int red_linear_stability(const red_disk *dk, const double y[RED_NSTATE],
+                         double eig[RED_NREDUCED][2], int *stable, dv_error *err) {
+  const int status = eigenvalues(dk, y, 1e-4, eig, err);
+  if (status) return status;
+  double big = 0.0, re_max = -INFINITY;
+  for (int i = 0; i < RED_NREDUCED; i++) {
+    big = fmax(big, hypot(eig[i][0], eig[i][1]));
+    re_max = fmax(re_max, eig[i][0]);
+  }
   *stable = re_max <= 1e-6 * fmax(big, 1e-300);
   return DV_OK;
+}
+
+double red_eigen_uncertainty(const red_disk *dk, const double y[RED_NSTATE],
+                             const double eig[RED_NREDUCED][2]) {
+  double other[RED_NREDUCED][2], u = 0.0;
+  if (eigenvalues(dk, y, 2e-4, other, NULL)) return NAN;
+  for (int i = 0; i < RED_NREDUCED; i++) { /* each to its nearest at the other step */
+    double near = INFINITY;
+    for (int k = 0; k < RED_NREDUCED; k++)
+      near = fmin(near, hypot(eig[i][0] - other[k][0], eig[i][1] - other[k][1]));
+    u = fmax(u, near);
+  }
+  return u;
 }

@@ -35,4 +35,11 @@ int red_is_steady(const red_disk *disk, const double y[RED_NSTATE], double tol);
 int red_linear_stability(const red_disk *disk, const double y[RED_NSTATE],
                          double eig[RED_NREDUCED][2], int *stable, dv_error *err);
 
+/* how far the eigenvalues eig (from red_linear_stability) move when the
+ * finite-difference step of the Jacobian doubles: their uncertainty, which
+ * near a double eigenvalue (exactly at the critical spin) is the square root
+ * of the Jacobian's error (NAN where they cannot be computed) */
+double red_eigen_uncertainty(const red_disk *disk, const double y[RED_NSTATE],
+                             const double eig[RED_NREDUCED][2]);
+
 #endif
