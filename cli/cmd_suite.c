@@ -1,6 +1,7 @@
 /* dv_cli_suite: diskval suite DIR|FILES...: every scenario compared, as
  * diskval compare does, in separate processes; then the suite's summary,
  * HTML page and JUnit XML. */
+#include <cjson/cJSON.h>
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +11,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "exec_mpi.h"
+#include "io_json.h"
 #include "io_lock.h"
 #include "io_owned.h"
 #include "report_suite_dir.h"
@@ -188,6 +190,27 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
   return code;
 }
 
+/* every failing engine run of the suite's summary.json, one line each, so
+ * that a CI log names every failing case */
+static void print_failures(const char *out) {
+  char path[1100];
+  snprintf(path, sizeof path, "%s/summary.json", out);
+  cJSON *sum = dv_io_json_read(path, 1L << 30, NULL, 0);
+  const cJSON *sc;
+  cJSON_ArrayForEach(sc, cJSON_GetObjectItem(sum, "scenarios")) {
+    const cJSON *eng;
+    cJSON_ArrayForEach(eng, cJSON_GetObjectItem(sc, "engines")) {
+      if (cJSON_IsTrue(cJSON_GetObjectItem(eng, "pass"))) continue;
+      const cJSON *f, *failures = cJSON_GetObjectItem(eng, "failures");
+      cJSON_ArrayForEach(f, failures) if (cJSON_IsString(f)) printf("%s\n", f->valuestring);
+      if (!cJSON_GetArraySize(failures))
+        printf("%s: %s: %s\n", cJSON_GetStringValue(cJSON_GetObjectItem(sc, "scenario")),
+               eng->string, cJSON_GetStringValue(cJSON_GetObjectItem(eng, "outcome")));
+    }
+  }
+  cJSON_Delete(sum);
+}
+
 /* run the loaded scenarios and write the suite's files */
 static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_type *const *engines,
                const dv_scenario *scs, size_t n, int *codes, dv_error *causes) {
@@ -221,6 +244,7 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
   if (stopped) return 130; /* 128 + SIGINT, as shells report it */
   for (size_t i = 0; i < n; i++)
     if (codes[i] == DV_EXIT_ERROR) printf("%s: error: %s\n", scs[i].name, causes[i].msg);
+  if (code == DV_EXIT_FAIL || code == DV_EXIT_ERROR) print_failures(o->out);
   printf("%zu scenarios: %s; report: %s/index.html\n", n,
          code == DV_EXIT_OK     ? "all pass"
          : code == DV_EXIT_FAIL ? "tolerances failed"

@@ -8,7 +8,13 @@
 #ifndef DV_IO_JSON_H
 #define DV_IO_JSON_H
 
+#include <stddef.h>
+
 /* a cJSON item (cJSON *) that prints as v exactly, or null when v is not finite */
 void *dv_io_json_double(double v);
+
+/* the JSON value in the regular file path (at most max_bytes), or NULL with
+ * why (may be NULL) saying what went wrong; the caller cJSON_Deletes it */
+void *dv_io_json_read(const char *path, long max_bytes, char *why, size_t why_size);
 
 #endif
