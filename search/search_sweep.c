@@ -263,13 +263,20 @@ void dv_search_sweep_free(dv_sweep *s) {
   s->n = 0;
 }
 
+/* error a is below b by more than the tie */
+static int error_below(double a, double b) {
+  return a < b * (1.0 - DV_SEARCH_ERROR_TIE);
+}
+
 void dv_search_pareto(dv_sweep_point *p, size_t n) {
   for (size_t i = 0; i < n; i++) {
     const double e = p[i].metric[DV_THETA_MAX_ERR], c = p[i].wall_per_sim_s;
     p[i].pareto = p[i].ok && isfinite(e) && isfinite(c);
     for (size_t j = 0; j < n && p[i].pareto; j++) {
       const double ej = p[j].metric[DV_THETA_MAX_ERR], cj = p[j].wall_per_sim_s;
-      if (j != i && p[j].ok && ej <= e && cj <= c && (ej < e || cj < c)) p[i].pareto = 0;
+      /* j dominates: no worse beyond the tie in error, no dearer, and better in one */
+      if (j != i && p[j].ok && !error_below(e, ej) && cj <= c && (error_below(ej, e) || cj < c))
+        p[i].pareto = 0;
     }
   }
 }

@@ -88,6 +88,10 @@ int dv_search_sweep_probe(const dv_scenario *sc, const char *engine, const char 
 /* mark the Pareto points (theta_max_err against wall_per_sim_s) among ok points */
 void dv_search_pareto(dv_sweep_point *p, size_t n);
 
+/* errors within this share of each other tie (for the Pareto front): a
+ * point twice the cost for 1e-13 less error is not worth a star */
+#define DV_SEARCH_ERROR_TIE 0.01
+
 /* least-squares slope of log(err) against log(h) over the points with
  * err > 0 and h > 0: the observed order of convergence (NAN below 2 points) */
 double dv_search_fit_order(const double *h, const double *err, size_t n);

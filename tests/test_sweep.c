@@ -139,6 +139,19 @@ static void check_pareto(void) {
   }
   dv_search_pareto(p, 5);
   for (int i = 0; i < 5; i++) CHECK(p[i].pareto == want[i], "point %d: pareto %d", i, p[i].pareto);
+  /* near-equal errors tie: (1e-4, 1) and (1e-4 (1 - 1e-13), 2), the dearer is no star;
+   * errors 2 % apart do not tie */
+  const double e2[3] = {1e-4, 1e-4 * (1.0 - 1e-13), 0.98e-4}, c2[3] = {1, 2, 3};
+  const int want2[3] = {1, 0, 1};
+  memset(p, 0, sizeof p);
+  for (int i = 0; i < 3; i++) {
+    p[i].metric[DV_THETA_MAX_ERR] = e2[i];
+    p[i].wall_per_sim_s = c2[i];
+    p[i].ok = 1;
+  }
+  dv_search_pareto(p, 3);
+  for (int i = 0; i < 3; i++)
+    CHECK(p[i].pareto == want2[i], "tie, point %d: pareto %d", i, p[i].pareto);
 }
 
 static void check_best(void) {
