@@ -77,7 +77,9 @@ static double largest(ctx *c, const char *choice, double start, int *fail_probe,
       h /= 2.0;
     }
   }
-  for (int i = 0; i < DV_SEARCH_BISECTIONS && !isnan(pass) && !isnan(fail); i++) {
+  for (int i = 0; i < DV_SEARCH_BISECTIONS && !isnan(pass) && !isnan(fail) &&
+                  fmax(pass, fail) / fmin(pass, fail) > DV_SEARCH_RESOLUTION;
+       i++) {
     const double mid = sqrt(pass * fail);
     const int ok = probe(c, choice, mid, err);
     if (ok < 0) break;

@@ -25,7 +25,9 @@
 #include "search_sweep.h"
 
 #define DV_SEARCH_BRACKET 24    /* probes at most to bracket the limit, by factors of 2 */
-#define DV_SEARCH_BISECTIONS 6  /* probes then to narrow it */
+#define DV_SEARCH_BISECTIONS 6  /* probes at most then to narrow it */
+#define DV_SEARCH_RESOLUTION 1.1 /* narrowed until the failing step is within 10 % of the
+                                    passing one: the cost, ~ 1 / step, to 10 % */
 #define DV_SEARCH_MAX_CHOICES 8 /* choices of the discrete setting a search takes */
 #define DV_SEARCH_MAX_PROBES (DV_SEARCH_MAX_CHOICES * (DV_SEARCH_BRACKET + DV_SEARCH_BISECTIONS))
 #define DV_SEARCH_MARGIN 0.5 /* best: the error it accepts, as a share of the tolerance */
