@@ -269,6 +269,7 @@ static void ode_free(void *p) {
 
 /* world, body, disk geom and plane */
 static int ode_build(ode_engine *e, void *arg, dv_error *err) {
+  dRandSetSeed(0); /* QuickStep permutes rows with it: every run from the same state */
   e->world = dWorldCreate();
   dWorldSetGravity(e->world, 0.0, 0.0, -e->disk.g);
   dWorldSetERP(e->world, e->set.erp);
