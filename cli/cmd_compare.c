@@ -4,9 +4,9 @@
 
 #include "cli.h"
 #include "cli_args.h"
-#include "cli_timeout.h"
 #include "io_lock.h"
 #include "report_suite_run.h"
+#include "report_within.h"
 #include "run_progress.h"
 #include "run_scenario.h"
 
@@ -48,7 +48,8 @@ int dv_cli_compare(int argc, char **argv) {
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
   else if (dv_io_make_dirs(out, &err) || dv_io_lock_dir(out, &lock, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if ((code = dv_cli_compare_run(&sc, engines, out, &explain, timeout, &err)) == DV_EXIT_ERROR)
+  else if ((code = dv_report_compare_within(&sc, engines, out, &explain, timeout, &err)) ==
+           DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.name, err.msg);
   else
     printf("report: %s/%s/report.md\n", out, sc.name);

@@ -4,12 +4,12 @@
 
 #include "cli.h"
 #include "cli_args.h"
-#include "cli_timeout.h"
 #include "dv_engine.h"
 #include "run_meta.h"
 #include "io_file.h"
 #include "run_progress.h"
 #include "run_trajectory.h"
+#include "run_within.h"
 
 static const char HELP[] =
     "usage: diskval simulate SCENARIO --engine NAME [--set section.key=value]... [--out FILE]\n"
@@ -61,7 +61,7 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
     return DV_EXIT_ERROR;
   }
   dv_engine_stats stats;
-  int status = dv_cli_simulate_run(engine, &sc, out.fp, forces.fp, timeout, &stats, &err);
+  int status = dv_run_write_csv_within(engine, &sc, out.fp, forces.fp, timeout, &stats, &err);
   if (status < 0) {
     dv_io_abort(&out);
     dv_io_abort(&forces);
