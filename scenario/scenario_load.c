@@ -67,7 +67,7 @@ static int see_header(parse_ctx *c, const char *p) {
     return fail_at(c, c->line, "syntax", "'%.*s' has no closing ']'", (int)(len > 60 ? 60 : len),
                    p);
   }
-  size_t len = end ? (size_t)(end - p - 1) : 0;
+  size_t len = (size_t)(end - p - 1);
   if (len >= sizeof name) len = sizeof name - 1;
   memcpy(name, p + 1, len);
   name[len] = '\0';
