@@ -42,7 +42,7 @@ static int scenario_load(const char *path, const char *const *overrides, size_t 
   if (!path || !out || (n && !overrides))
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_load: NULL argument");
   diskval_scenario *s = calloc(1, sizeof *s);
-  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario");
   const int status = dv_engine_load_scenario(path, overrides, n, &s->sc, as_dv(err));
   if (status < 0) {
     free(s);
@@ -62,7 +62,7 @@ static int scenario_new(const char *name, const diskval_disk *disk, const diskva
   if (strlen(nm) >= sizeof((dv_scenario *)0)->name)
     return dv_fail(as_dv(err), DV_EINPUT, "scenario.name: '%s' is too long", nm);
   diskval_scenario *s = calloc(1, sizeof *s);
-  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario");
   dv_scenario *sc = &s->sc;
   dv_engine_init_scenario(sc);
   dv_scenario_core_defaults(sc);
@@ -112,7 +112,7 @@ int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *k
   if (!sc || !engine || !key || !value)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_set: NULL argument");
   dv_scenario *trial = malloc(sizeof *trial);
-  if (!trial) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory for a scenario's copy");
+  if (!trial) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario's copy");
   *trial = sc->sc;
   dv_error why;
   int status = dv_scenario_set(trial, engine, key, value, as_dv(err));
@@ -181,7 +181,7 @@ static int run(const diskval_scenario *sc, const char *engine, diskval_trajector
   const dv_engine_type *e = find_engine(engine, err);
   if (!e) return DV_EINPUT;
   diskval_trajectory *tr = calloc(1, sizeof *tr);
-  if (!tr) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  if (!tr) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a trajectory");
   const int status = dv_run_collect(e, &sc->sc, push, &tr->traj, &tr->stats, as_dv(err));
   if (status < 0) {
     diskval_trajectory_free(tr);
@@ -249,7 +249,7 @@ static int compare(const diskval_scenario *sc, const char *engine, diskval_compa
   const dv_engine_type *e[2] = {find_engine(engine, err), NULL};
   if (!e[0]) return DV_EINPUT;
   dv_comparison *c = calloc(1, sizeof *c);
-  if (!c) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  if (!c) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a comparison");
   const int status = dv_run_scenario(&sc->sc, NULL, e, 1, c, as_dv(err));
   if (status >= 0) {
     const dv_engine_result *r = &c->r[0];

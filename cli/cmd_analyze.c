@@ -50,12 +50,15 @@ static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   an->crit = red_upright_critical_spin(d);
   if (red_invariants(d, y, &an->f1, &an->f2))
     return dv_fail(err, DV_ENUMERIC, "f1, f2 could not be evaluated at theta = %g", y[RED_TH]);
+  dv_error e = {{0}};
+  /* what failed, and from which part of the file */
   int status =
-      red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, err);
-  if (status) return status;
+      red_theta_range(d, y, dv_reference_settings(sc)->theta_limit, an->range, &an->falls, &e);
+  if (status) return dv_fail(err, status, "[initial]: the turning points of theta: %s", e.msg);
   an->steady = red_is_steady(d, y, 1e-9);
   if (an->steady) {
-    if (red_linear_stability(d, y, an->eig, &an->stable, err)) return DV_ENUMERIC;
+    if ((status = red_linear_stability(d, y, an->eig, &an->stable, &e)))
+      return dv_fail(err, status, "[initial]: the stability of the steady start: %s", e.msg);
     an->eig_uncertainty = red_eigen_uncertainty(d, y, an->eig);
     /* two eigenvalues are always 0 (the family of steady motions); a third
      * within the uncertainty of 0 puts the motion on the stability boundary */
@@ -186,7 +189,7 @@ int dv_cli_analyze(int argc, char **argv) {
     fprintf(stderr, "%s\n", err.msg);
     code = DV_EXIT_ERROR;
   } else if (analyse(&sc, &an, &err)) {
-    code = dv_cli_error("analyze", "%s: %s", sc.name, err.msg);
+    code = dv_cli_error("analyze", "%s: %s", a.args.items[0], err.msg);
   } else if (!json) {
     print_text(&sc, &an);
   } else {

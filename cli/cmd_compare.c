@@ -7,26 +7,32 @@
 #include "io_lock.h"
 #include "report_suite_dir.h"
 #include "report_suite_run.h"
+#include "report_within.h"
 #include "run_progress.h"
 #include "run_scenario.h"
 
 static const char HELP[] =
-    "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--set section.key=value]...\n"
+    "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S]\n"
+    "                       [--set section.key=value]...\n"
     "\n"
     "Run SCENARIO in the engines (default: mujoco,ode) and in the references, compare\n"
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
     "DIR/<scenario>/ (default DIR: report): every trajectory as CSV, the plots,\n"
     "report.json and report.md. Prints one line per engine.\n"
+    "--timeout S: stop the comparison after S s of wall time (an error report); one whose\n"
+    "probed cost is more than twice S is not started. Default 0: no limit.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 int dv_cli_compare(int argc, char **argv) {
   const char *out = "report", *list = NULL;
+  double timeout = 0.0;
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &out, 0, 0},
       {"engines", DV_CLI_TEXT, &list, 0, 0},
+      {"timeout", DV_CLI_REAL, &timeout, 0, 1e9},
   };
-  const dv_cli_command cmd = {"compare", HELP, options, 2, 1, 1};
+  const dv_cli_command cmd = {"compare", HELP, options, 3, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
@@ -44,7 +50,8 @@ int dv_cli_compare(int argc, char **argv) {
   else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
            dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if ((code = dv_report_suite_run_one(&sc, engines, out, 1, &explain, &err)) == DV_EXIT_ERROR)
+  else if ((code = dv_report_compare_within(&sc, engines, out, &explain, timeout, &err)) ==
+           DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.path, err.msg);
   else
     printf("report: %s/%s/report.md\n", out, sc.name);

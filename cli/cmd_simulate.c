@@ -10,10 +10,11 @@
 #include "io_lock.h"
 #include "run_progress.h"
 #include "run_trajectory.h"
+#include "run_within.h"
 
 static const char HELP[] =
     "usage: diskval simulate SCENARIO --engine NAME [--set section.key=value]... [--out FILE]\n"
-    "                        [--forces FILE]\n"
+    "                        [--forces FILE] [--timeout S]\n"
     "\n"
     "Simulate SCENARIO with one engine and write its trajectory as CSV:\n"
     "  " DV_CSV_HEADER
@@ -25,13 +26,15 @@ static const char HELP[] =
     "                  with FILE.json beside it: engine, versions, settings, outcome, stats\n"
     "  --forces FILE   the contact force along the run (references: the force rolling needs)\n"
     "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
+    "  --timeout S     stop the run after S s of wall time (exit 2, nothing written); one\n"
+    "                  whose probed cost is more than twice S is not started (default 0: none)\n"
     "  --quiet         no progress line (shown when stderr is a terminal and the CSV is\n"
     "                  not) and no warning before a run longer than a minute\n"
     "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
 
 /* the command once its options are read */
 static int simulate(const char *scenario, const dv_cli_list *sets, const char *engine_name,
-                    const char *out_path, const char *forces_path) {
+                    const char *out_path, const char *forces_path, double timeout) {
   if (!engine_name) return dv_cli_usage_error("simulate", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_cli_unknown_engine("simulate", engine_name);
@@ -64,7 +67,7 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
     return DV_EXIT_ERROR;
   }
   dv_engine_stats stats;
-  int status = dv_run_write_csv(engine, &sc, out.fp, forces.fp, &stats, &err);
+  int status = dv_run_write_csv_within(engine, &sc, out.fp, forces.fp, timeout, &stats, &err);
   if (status < 0) {
     dv_io_abort(&out);
     dv_io_abort(&forces);
@@ -92,17 +95,19 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
 
 int dv_cli_simulate(int argc, char **argv) {
   const char *engine_name = NULL, *out_path = "-", *forces_path = NULL;
+  double timeout = 0.0;
   const dv_cli_option options[] = {
       {"engine", DV_CLI_TEXT, &engine_name, 0, 0},
       {"out", DV_CLI_TEXT, &out_path, 0, 0},
       {"forces", DV_CLI_TEXT, &forces_path, 0, 0},
+      {"timeout", DV_CLI_REAL, &timeout, 0, 1e9},
   };
-  const dv_cli_command cmd = {"simulate", HELP, options, 3, 1, 1};
+  const dv_cli_command cmd = {"simulate", HELP, options, 4, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("simulate", a.quiet, !strcmp(out_path, "-"));
-  const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path);
+  const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path, timeout);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

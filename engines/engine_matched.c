@@ -41,7 +41,7 @@ static void *matched_alloc(const dv_scenario *sc, dv_error *err) {
   const dv_reduced_settings *r = dv_reference_settings(sc);
   const dv_matched_settings *s = dv_matched_settings_of(sc);
   matched_engine *e = calloc(1, sizeof *e);
-  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory: the matched reference's state"), NULL;
   red_rolling_init(&e->rr, &sc->disk, half_thickness_of(sc), s->friction, r->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;

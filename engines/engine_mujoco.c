@@ -313,7 +313,7 @@ static void *mujoco_alloc(const dv_scenario *sc, dv_error *err) {
   const int len = write_model(sc, s, xml, sizeof xml);
   int idx = -1;
   if (!e || !vfs) {
-    dv_fail(err, DV_ESYSTEM, "out of memory");
+    dv_fail(err, DV_ESYSTEM, "out of memory: MuJoCo's engine state and model file system");
     goto cleanup;
   }
   mj_defaultVFS(vfs);

@@ -299,7 +299,7 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
                    sc->disk.A, sc->disk.C),
            NULL;
   ode_engine *e = calloc(1, sizeof *e);
-  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory: the ODE engine's state"), NULL;
   ode_init_once();
   e->set = *(const ode_settings *)dv_scenario_settings(sc, SETTINGS.name);
   /* a scenario built in code leaves the step to the scene */

@@ -44,7 +44,7 @@ static void reduced_free(void *p) {
 static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
   const dv_reduced_settings *s = dv_reference_settings(sc);
   reduced_engine *e = calloc(1, sizeof *e);
-  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory: the reduced reference's state"), NULL;
   red_reference_init(&e->ref, &sc->disk, s->theta_limit);
   red_rolling_init(&e->thin, &sc->disk, 0.0, INFINITY, s->theta_limit);
   e->t_end = sc->duration;

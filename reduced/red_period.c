@@ -44,13 +44,15 @@ static int gsl_rhs(double t, const double y[], double f[], void *disk) {
 
 red_period *red_period_alloc(const red_disk *disk, double rtol, double atol, dv_error *err) {
   red_period *p = calloc(1, sizeof *p);
-  if (!p) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!p) return dv_fail(err, DV_ESYSTEM, "out of memory: the period fold's state"), NULL;
   p->disk = *disk;
   p->rtol = rtol;
   p->atol = atol;
   p->sys = (gsl_odeiv2_system){gsl_rhs, NULL, RED_NSTATE, &p->disk};
   p->onto = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, RED_NSTATE);
-  if (!p->onto) return red_period_free(p), dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!p->onto)
+    return red_period_free(p),
+           dv_fail(err, DV_ESYSTEM, "out of memory: the period fold's GSL stepper"), NULL;
   return p;
 }
 
@@ -112,7 +114,8 @@ int red_period_reset(red_period *p, double t0, const double y0[RED_NSTATE], dv_e
   p->maxima = 0;
   p->status = RED_PERIOD_RECORDING;
   snprintf(p->note, sizeof p->note, "no fold: no period within the run");
-  if (push(p, t0, y0) && p->n == 0 && !p->nodes) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (push(p, t0, y0) && p->n == 0 && !p->nodes)
+    return dv_fail(err, DV_ESYSTEM, "out of memory: the period fold's first node");
   if (p->n && y0[RED_VTH] == 0.0 && p->nodes[0].f[RED_VTH] < 0.0) /* it starts at a maximum */
     first_maximum(p, t0, y0);
   return DV_OK;

@@ -122,7 +122,7 @@ int red_nutation(const red_disk *dk, const double y[RED_NSTATE], const double ra
   if (red_invariants(dk, y, &c.f1, &c.f2))
     return dv_fail(err, DV_ENUMERIC, "invariants undefined at theta = %g", y[RED_TH]);
   if (nutation_rule(&c, 256, out) || nutation_rule(&c, 128, half))
-    return dv_fail(err, DV_ESYSTEM, "out of memory");
+    return dv_fail(err, DV_ESYSTEM, "out of memory: the nutation quadrature's points");
   if (c.failed || !isfinite(out[0] + out[1] + out[2] + half[0] + half[1] + half[2]))
     return dv_fail(
         err, DV_ENUMERIC,

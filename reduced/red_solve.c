@@ -39,7 +39,7 @@ red_integrator *red_integrator_alloc(const red_system *sys, const red_stepper_ty
   if (sys->dim > RED_MAX_DIM || sys->nevents > RED_MAX_EVENTS)
     return dv_fail(err, DV_EINPUT, "system too large"), NULL;
   red_integrator *in = calloc(1, sizeof *in);
-  if (!in) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!in) return dv_fail(err, DV_ESYSTEM, "out of memory: an integrator"), NULL;
   in->sys = sys;
   in->type = type;
   in->stepper = type->alloc(sys, rtol, atol, err);
@@ -110,7 +110,7 @@ static int locate(red_integrator *in, double ta, double tb, double *t_root) {
   in->status = 0;
   const int status = red_brent(&fn, ta, tb, 0.0, 4.0 * DBL_EPSILON, t_root);
   if (in->status) return in->status;
-  if (status == GSL_ENOMEM) return dv_fail(in->err, DV_ESYSTEM, "out of memory");
+  if (status == GSL_ENOMEM) return dv_fail(in->err, DV_ESYSTEM, "out of memory: GSL's root finder");
   if (status) return dv_fail(in->err, DV_ENUMERIC, "event location: %s", red_gsl_words(status));
   return DV_OK;
 }

@@ -38,7 +38,7 @@ static void ark_free(void *p) {
 
 static void *ark_alloc(const red_system *sys, double rtol, double atol, dv_error *err) {
   ark_stepper *s = calloc(1, sizeof *s);
-  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory: an ARKODE stepper"), NULL;
   s->sys = sys;
   s->rtol = rtol;
   s->atol = atol;

@@ -50,7 +50,7 @@ static void cv_free(void *p) {
 
 static void *alloc_with(int lmm, const red_system *sys, double rtol, double atol, dv_error *err) {
   cv_stepper *s = calloc(1, sizeof *s);
-  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory: a CVODE stepper"), NULL;
   s->sys = sys;
   s->lmm = lmm;
   s->rtol = rtol;

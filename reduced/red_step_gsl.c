@@ -90,7 +90,7 @@ static void gsl_free_stepper(void *p) {
 static void *alloc_with(const gsl_odeiv2_step_type *type, const red_system *sys, double rtol,
                         double atol, dv_error *err) {
   gsl_stepper *s = calloc(1, sizeof *s);
-  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  if (!s) return dv_fail(err, DV_ESYSTEM, "out of memory: a GSL stepper"), NULL;
   s->sys = sys;
   s->step_fraction = fmin(0.5, KAPPA * pow(rtol, 0.125));
   s->gsys = (gsl_odeiv2_system){gsl_rhs, NULL, sys->dim, s};

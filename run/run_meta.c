@@ -54,7 +54,7 @@ void *dv_io_json_number(double v) {
 int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *err) {
   char *text = cJSON_Print(json);
   cJSON_Delete(json);
-  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!text) return dv_fail(err, DV_ESYSTEM, "out of memory: the text of %s", name);
   char path[1200];
   dv_io_file out;
   snprintf(path, sizeof path, "%s%s%s", dir, name ? "/" : "", name ? name : "");

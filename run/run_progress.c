@@ -1,11 +1,14 @@
 /* run_progress: the progress line and the long-run warning (run_progress.h). */
 #include "run_progress.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "dv_clock.h"
+#include "engine_scene.h"
 #include "run_trajectory.h"
 
 /* the process's progress: one command, one run or one pool at a time */
@@ -17,6 +20,7 @@ static struct {
   /* the run under way */
   int running, calibrated;
   int probing, planned; /* a probe runs; a plan was announced */
+  double estimate;      /* s: an estimate probed for the next plan to use (NAN: none) */
   char scenario[32], engine[24];
   double duration, began;
   /* the pool under way */
@@ -31,6 +35,7 @@ void dv_run_progress_start(const char *command, int quiet, int stdout_busy) {
   memset(&P, 0, sizeof P);
   snprintf(P.command, sizeof P.command, "%s", command);
   P.warn = !quiet;
+  P.estimate = NAN;
   P.line = !quiet && isatty(STDERR_FILENO) && !(stdout_busy && isatty(STDOUT_FILENO));
 }
 
@@ -89,34 +94,81 @@ static int probe_sample(void *ctx, const dv_sample *s) {
   return p->stopped = p->spent >= DV_PROGRESS_PROBE_S || short_run; /* non-zero ends the run */
 }
 
-/* wall seconds a whole run of engine over sc will take, from a probe */
+/* wall seconds a whole run of engine over sc will take, from a probe that
+ * samples DV_PROGRESS_PROBE_PER_SCALE times a shortest time scale of the
+ * scene: one output_dt of a fast scene may take minutes, and the probe
+ * looks at its clock only at a sample */
 static double estimate(const dv_engine_type *engine, const dv_scenario *sc) {
+  dv_scenario *fine = malloc(sizeof *fine);
+  if (!fine) return NAN;
+  dv_scene_scales scales;
+  dv_engine_scene_scales(sc, &scales);
+  *fine = *sc;
+  fine->output_dt = fmin(sc->output_dt, scales.t[scales.shortest] / DV_PROGRESS_PROBE_PER_SCALE);
   probe p = {-1.0, 0.0, 0.0, sc->duration, 0};
   dv_engine_stats st;
   P.probing = 1;
-  dv_run_collect(engine, sc, probe_sample, &p, &st, NULL);
+  dv_run_collect(engine, fine, probe_sample, &p, &st, NULL);
   P.probing = 0;
+  free(fine);
   return p.stopped && p.t > 0.0 ? p.spent * sc->duration / p.t : p.spent;
+}
+
+/* wall seconds of a comparison's runs: the thin reference three times (the
+ * run and the horizon's two), each engine, a thick one's matched reference
+ * (as long as the thin one); *runs: how many */
+static double comparison_estimate(const dv_scenario *sc, const dv_scenario *ref_sc,
+                                  const dv_engine_type *const *engines, size_t n, int probing,
+                                  size_t *runs) {
+  const double thin =
+      probing ? estimate(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), ref_sc ? ref_sc : sc) : NAN;
+  double total = 3.0 * thin;
+  *runs = 3 + n;
+  for (size_t i = 0; i < n; i++) {
+    const int thick = dv_engine_half_thickness(engines[i], sc) > 0.0;
+    total += (probing ? estimate(engines[i], sc) : NAN) + (thick ? thin : 0.0);
+    *runs += (size_t)thick;
+  }
+  return total;
+}
+
+double dv_run_progress_estimate(const dv_scenario *sc, const dv_scenario *ref_sc,
+                                const dv_engine_type *const *engines, size_t n) {
+  size_t runs;
+  if (isnan(P.estimate)) P.estimate = comparison_estimate(sc, ref_sc, engines, n, 1, &runs);
+  return P.estimate;
+}
+
+double dv_run_progress_estimate_run(const dv_scenario *sc, const dv_engine_type *engine) {
+  if (isnan(P.estimate)) P.estimate = estimate(engine, sc);
+  return P.estimate;
 }
 
 void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
                           const dv_engine_type *const *engines, size_t n) {
   if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;
-  if (!ref_sc) ref_sc = sc;
-  const double thin = estimate(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), ref_sc);
-  double total = 3.0 * thin;
-  size_t runs = 3 + n;
-  for (size_t i = 0; i < n; i++) {
-    const int thick = dv_engine_half_thickness(engines[i], sc) > 0.0;
-    total += estimate(engines[i], sc) + (thick ? thin : 0.0);
-    runs += (size_t)thick;
-  }
-  if (total <= DV_PROGRESS_WARN_S) return;
+  size_t runs;
+  const double probed = comparison_estimate(sc, ref_sc, engines, n, isnan(P.estimate), &runs);
+  const double total = isnan(P.estimate) ? probed : P.estimate;
+  P.estimate = NAN; /* used: the next comparison (verify runs several) is probed afresh */
+  if (!(total > DV_PROGRESS_WARN_S)) return;
   P.planned = 1;
   char what[160], basis[96];
   snprintf(what, sizeof what, "%.60s: the comparison to t = %g s (%zu runs)", sc->name,
            sc->duration, runs);
   snprintf(basis, sizeof basis, "each engine's rate timed for %g s", DV_PROGRESS_PROBE_S);
+  announce(what, total, 0, basis);
+}
+
+void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engine) {
+  if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;
+  const double total = dv_run_progress_estimate_run(sc, engine);
+  P.estimate = NAN;
+  if (!(total > DV_PROGRESS_WARN_S)) return;
+  P.planned = 1;
+  char what[80], basis[96];
+  snprintf(what, sizeof what, "%.40s: %s to t = %g s", sc->name, engine->name, sc->duration);
+  snprintf(basis, sizeof basis, "its rate timed for %g s", DV_PROGRESS_PROBE_S);
   announce(what, total, 0, basis);
 }
 

@@ -13,8 +13,10 @@
  *    The tasks' own processes show nothing.
  *  - the warning, one line, terminal or not (a log that stays silent for
  *    minutes should say why), when the work ahead will take longer than
- *    DV_PROGRESS_WARN_S. Before a comparison, once for all its runs: each
- *    engine is probed for DV_PROGRESS_PROBE_S of wall time and its rate
+ *    DV_PROGRESS_WARN_S. Before a comparison, once for all its runs, and
+ *    before a simulate's run: each engine is probed for DV_PROGRESS_PROBE_S
+ *    of wall time, sampling a few times a shortest time scale of the scene
+ *    (not output_dt: its first interval alone may take minutes), and its rate
  *    (wall seconds per simulated second, measured: no cost model covers the
  *    adaptive reference) times the duration summed; the runs then say
  *    nothing more. Otherwise once for each run, when DV_PROGRESS_CALIBRATE_S
@@ -37,6 +39,8 @@
  * below DV_PROGRESS_WARN_S / DV_PROGRESS_PROBE_SHARE: short runs are not run twice in full */
 #define DV_PROGRESS_PROBE_MIN_S 0.01
 #define DV_PROGRESS_PROBE_SHARE 16.0
+/* a probe samples this many times a shortest time scale of the scene (engine_scene.h) */
+#define DV_PROGRESS_PROBE_PER_SCALE 4.0
 
 /* turn progress on for command ("compare"); quiet: neither line nor warning;
  * stdout_busy: the command writes to stdout while it runs (no line when
@@ -49,6 +53,16 @@ void dv_run_progress_start(const char *command, int quiet, int stdout_busy);
  * warning is off, in a pool's task, or once it has been given) */
 void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
                           const dv_engine_type *const *engines, size_t n);
+
+/* a single run of engine over sc (simulate): probed and announced as above */
+void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engine);
+
+/* the wall seconds that dv_run_progress_plan's comparison, or a run of engine
+ * over sc, will take, probed whether or not the warning is on (NAN when no
+ * memory); kept for the next plan, which then probes no more */
+double dv_run_progress_estimate(const dv_scenario *sc, const dv_scenario *ref_sc,
+                                const dv_engine_type *const *engines, size_t n);
+double dv_run_progress_estimate_run(const dv_scenario *sc, const dv_engine_type *engine);
 
 /* a run of engine over scenario for duration simulated seconds begins, is at
  * simulated time t, has ended (dv_run_collect calls these) */

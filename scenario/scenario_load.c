@@ -67,7 +67,7 @@ static int see_header(parse_ctx *c, const char *p) {
     return fail_at(c, c->line, "syntax", "'%.*s' has no closing ']'", (int)(len > 60 ? 60 : len),
                    p);
   }
-  size_t len = end ? (size_t)(end - p - 1) : 0;
+  size_t len = (size_t)(end - p - 1);
   if (len >= sizeof name) len = sizeof name - 1;
   memcpy(name, p + 1, len);
   name[len] = '\0';
@@ -122,7 +122,7 @@ static int read_file(parse_ctx *c, const char *path) {
     goto cleanup;
   }
   if (!(buf = malloc(DV_SCENARIO_MAX_BYTES + 2))) {
-    status = dv_fail(c->err, DV_ESYSTEM, "%s: out of memory for a %g MiB read buffer", path, mib);
+    status = dv_fail(c->err, DV_ESYSTEM, "%s: out of memory: a %g MiB read buffer", path, mib);
     goto cleanup;
   }
   const size_t got = fread(buf, 1, DV_SCENARIO_MAX_BYTES + 1, f);
@@ -311,7 +311,7 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
                      dv_error *err) {
   parse_ctx *c = calloc(1, sizeof *c);
   int status = DV_EINPUT;
-  if (!c) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!c) return dv_fail(err, DV_ESYSTEM, "%s: out of memory: the parser's state", path);
   dv_scenario_init(sc, engines);
   snprintf(sc->path, sizeof sc->path, "%s", path);
   c->path = path;

@@ -102,7 +102,10 @@ DISKVAL_API int diskval_scenario_new(const char *name, const diskval_disk *disk,
                                      const diskval_state *initial, double duration,
                                      double output_dt, diskval_scenario **out, diskval_error *err);
 
-/* set [engines.ENGINE] key from text, checked as in a file (e.g. "mujoco", "timestep", "1e-4") */
+/* set [engines.ENGINE] key from text, checked as in a file and by --set (e.g.
+ * "mujoco", "timestep", "1e-4"): its range, then every engine section's
+ * checks across keys (a theta_limit past the initial theta is refused); sc
+ * is unchanged when it is refused */
 DISKVAL_API int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *key,
                                      const char *value, diskval_error *err);
 

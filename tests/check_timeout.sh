@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# check_timeout.sh DISKVAL SCENARIO_DIR: long work is known before it starts.
+#   - compare and simulate of a scene whose one output interval lasts the
+#     whole run (steady_circle to t = 20000 s, output_dt 20000 s: minutes)
+#     say how long they will take within 5 s (the probe once waited for a
+#     first sample that came at the end);
+#   - with --timeout 1 that scene is refused at once: one line, exit 2,
+#     nothing written;
+#   - a run let start (its estimate under twice the limit) is killed at the
+#     limit: exit 2, "timed out after S s", no CSV, no temporaries, compare's
+#     error report saying so.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+diskval=$1
+scenarios=$2
+sc=$scenarios/steady_circle.ini
+work=$(mktemp -d)
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null; done; rm -rf "$work"; }
+trap cleanup EXIT
+long=(--set scenario.duration=20000 --set scenario.output_dt=20000)
+: >"$work/announce"
+: >"$work/err"
+
+# announced CMD...: CMD's stderr has "will take about" within 5 s (then it is killed)
+announced() {
+  "$diskval" "$@" >/dev/null 2>"$work/announce" &
+  local pid=$! i
+  pids+=("$pid")
+  for i in $(seq 50); do
+    grep -q "will take about" "$work/announce" && break
+    sleep 0.1
+  done
+  kill -9 "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  grep -q "will take about" "$work/announce"
+}
+check 'announced compare "$sc" "${long[@]}" --out "$work/a"' "compare: no estimate within 5 s: $(cat "$work/announce")"
+check 'announced simulate "$sc" --engine mujoco "${long[@]}" --out "$work/a.csv"' \
+  "simulate: no estimate within 5 s: $(cat "$work/announce")"
+
+# refused up front
+start=$SECONDS
+"$diskval" compare "$sc" "${long[@]}" --out "$work/r" --timeout 1 >/dev/null 2>"$work/err"
+code=$?
+check '[ $code -eq 2 ] && [ $((SECONDS - start)) -lt 10 ]' "compare --timeout 1: exit $code after $((SECONDS - start)) s"
+check '[ "$(wc -l <"$work/err")" -eq 1 ] && grep -Eq "^diskval compare: steady_circle: would take about [0-9.e+]+ s .*more than 2 times the time limit of 1 s: not started$" "$work/err"' \
+  "compare --timeout 1: $(cat "$work/err")"
+check '[ ! -e "$work/r/steady_circle" ]' "compare --timeout 1 wrote a report"
+"$diskval" simulate "$sc" --engine mujoco "${long[@]}" --out "$work/r.csv" --timeout 1 2>"$work/err"
+code=$?
+check '[ $code -eq 2 ] && grep -q "more than 2 times the time limit of 1 s: not started" "$work/err"' \
+  "simulate --timeout 1: exit $code: $(cat "$work/err")"
+check '[ -z "$(ls -A "$work" | grep r.csv)" ]' "simulate --timeout 1 wrote $(ls "$work" | grep r.csv)"
+
+# killed at the limit: a limit just over half the probe's estimate, so that
+# the run starts. The estimate and the run both vary with the machine's load
+# (8-27 s measured for the same run): a run that ended inside its limit after
+# all, or one refused, is tried again, four times at most.
+mid=(--set scenario.duration=200 --set scenario.output_dt=200)
+# killed OUT CMD...: 0 when CMD (writing OUT) was killed at its limit once, with nothing of it left
+killed() {
+  local out=$1 est limit i start code
+  shift
+  for i in 1 2 3 4; do
+    est=$("$diskval" "$@" --timeout 1e-3 2>&1 | sed -n 's/.*would take about \([0-9.e+]*\) s.*/\1/p')
+    [ -n "$est" ] || return 1
+    limit=$(awk -v e="$est" 'BEGIN { printf "%.2f", e / 1.9 }')
+    start=$SECONDS
+    "$diskval" "$@" --timeout "$limit" >/dev/null 2>"$work/err"
+    code=$?
+    if [ $code -le 1 ] || grep -q "not started" "$work/err"; then
+      rm -rf "$out" "$out.json"
+      continue
+    fi
+    [ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err" &&
+      [ $((SECONDS - start)) -le $(awk -v l="$limit" 'BEGIN { print int(l) + 3 }') ]
+    return
+  done
+  return 1
+}
+check 'killed "$work/k.csv" simulate "$sc" --engine mujoco "${mid[@]}" --out "$work/k.csv"' "simulate: not killed at its limit: $(cat "$work/err")"
+check '[ -z "$(ls -A "$work" | grep k.csv)" ]' "simulate killed: left $(ls -A "$work" | grep k.csv)"
+check 'killed "$work/k" compare "$sc" --engines mujoco "${mid[@]}" --out "$work/k"' "compare: not killed at its limit: $(cat "$work/err")"
+check 'grep -q "timed out after" "$work/k/steady_circle/report.json"' "compare killed: no error report"
+check '[ -z "$(ls -A "$work/k" | grep -v "^steady_circle$\|^.diskval.lock$")" ]' "compare killed: left $(ls -A "$work/k")"
+exit $fail
