@@ -72,12 +72,17 @@ static int matched_advance(void *p, double t, dv_sample *out, dv_error *err) {
 static void matched_stats(const void *p, dv_engine_stats *out) {
   const matched_engine *e = p;
   char detail[128];
-  snprintf(detail, sizeof detail, "%s at t = %.9g s",
-           e->event == RR_EVENT_NORMAL_FORCE ? "the normal force reached zero"
-           : e->event == RR_EVENT_FRICTION ? "the friction needed reached mu times the normal force"
-           : e->event == RR_EVENT_UPRIGHT  ? "the thick disk reached upright (a rim-corner impact)"
-                                           : "theta reached its lying-down limit",
-           e->t_event);
+  /* lying down in the words of every engine's event, with its limit (run_event.h) */
+  if (e->event == RR_EVENT_THETA_LOW || e->event == RR_EVENT_THETA_HIGH)
+    dv_engine_limit_detail(e->event == RR_EVENT_THETA_LOW, e->rr.theta_limit, e->t_event, detail,
+                           sizeof detail);
+  else
+    snprintf(detail, sizeof detail, "%s at t = %.9g s",
+             e->event == RR_EVENT_NORMAL_FORCE ? "the normal force reached zero"
+             : e->event == RR_EVENT_FRICTION
+                 ? "the friction needed reached mu times the normal force"
+                 : "the thick disk reached upright (a rim-corner impact)",
+             e->t_event);
   dv_reference_stats(e->in, e->event, detail, out);
   if (out->outcome == DV_OUTCOME_EVENT && e->event <= RR_EVENT_THETA_HIGH)
     out->lay_down = e->event == RR_EVENT_THETA_LOW ? -1 : 1;

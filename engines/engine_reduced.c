@@ -21,6 +21,7 @@ typedef struct reduced_engine {
   red_period *period; /* NULL: step to the end */
   double t_end;
   int event;
+  double t_event; /* s: where the event ended the run */
 } reduced_engine;
 
 static const char *reduced_version(void) {
@@ -49,6 +50,7 @@ static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
   red_rolling_init(&e->thin, &sc->disk, 0.0, INFINITY, s->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
+  e->t_event = NAN;
   e->in = red_integrator_alloc(&e->ref.sys, red_steppers[s->integrator], s->rtol, s->atol, err);
   if (!e->in) return reduced_free(e), NULL;
   red_integrator_set_max_steps(e->in, s->max_steps);
@@ -64,6 +66,7 @@ static void *reduced_alloc(const dv_scenario *sc, dv_error *err) {
 static int reduced_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   reduced_engine *e = p;
   e->event = -1;
+  e->t_event = NAN;
   if (e->period && red_period_reset(e->period, 0.0, state, err)) return DV_ESYSTEM;
   return red_integrator_reset(e->in, 0.0, e->t_end, state, err);
 }
@@ -87,6 +90,7 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
     out->t = t;
   else if (status > 0)
     status = red_integrator_advance(e->in, t, &out->t, y, &e->event, err);
+  if (e->event >= 0 && isnan(e->t_event)) e->t_event = out->t;
   red_rolling_from_state(&e->thin, y, s);
   dv_reference_sample(&e->thin, s, out);
   memcpy(out->y, y, sizeof y); /* exactly the integrated state, not its round trip */
@@ -96,7 +100,7 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
 static void reduced_stats(const void *p, dv_engine_stats *out) {
   const reduced_engine *e = p;
   char detail[96];
-  dv_engine_limit_detail(e->event == RED_EVENT_THETA_LOW, e->ref.theta_limit, NAN, detail,
+  dv_engine_limit_detail(e->event == RED_EVENT_THETA_LOW, e->ref.theta_limit, e->t_event, detail,
                          sizeof detail);
   dv_reference_stats(e->in, e->event, detail, out);
   if (out->outcome == DV_OUTCOME_EVENT) out->lay_down = e->event == RED_EVENT_THETA_LOW ? -1 : 1;
