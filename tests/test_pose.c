@@ -14,6 +14,23 @@ static const double STATES[][RED_NSTATE] = {
     {M_PI / 2 - 1e-3, 0.0, 0.0, 20.0, 0.0, 0.0, 0.0, 0.0},
 };
 
+/* elementary rotations about z and y, and a product, row-major */
+static void rot_z(double a, double *m) {
+  const double c = cos(a), s = sin(a), r[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+  for (int i = 0; i < 9; i++) m[i] = r[i];
+}
+
+static void rot_y(double a, double *m) {
+  const double c = cos(a), s = sin(a), r[9] = {c, 0, s, 0, 1, 0, -s, 0, c};
+  for (int i = 0; i < 9; i++) m[i] = r[i];
+}
+
+static void mat_mul(const double *a, const double *b, double *out) {
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      out[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+}
+
 static void check_state(const double y[RED_NSTATE], const dv_geometry *g, const char *label) {
   const red_disk dk = red_disk_uniform(0.1, 1.0, 9.81);
   dv_pose p;
@@ -31,6 +48,21 @@ static void check_state(const double y[RED_NSTATE], const dv_geometry *g, const 
   dv_pose_lowest_point(g, &p, pt, &slip);
   CHECK(fabs(pt[2]) < 1e-15 && slip < 1e-13, "%s: lowest point z %.3g, slip %.3g m/s", label, pt[2],
         slip);
+  /* independent of the mapping's own code: DESIGN's R = Rz(phi) Ry(theta)
+   * Rz(psi - pi/2) from elementary rotations (measured equal to 5.1e-16), and the
+   * pose's lowest point is the reduced model's contact point (measured 3.9e-17 m) */
+  double Rz1[9], Ry[9], Rz2[9], T[9], R[9];
+  rot_z(y[RED_PH], Rz1), rot_y(y[RED_TH], Ry), rot_z(y[RED_PS] - M_PI / 2, Rz2);
+  mat_mul(Rz1, Ry, T), mat_mul(T, Rz2, R);
+  for (int i = 0; i < 9; i++)
+    CHECK(fabs(p.R[i] - R[i]) <= 1e-14, "%s: R[%d] %.17g, Rz Ry Rz gives %.17g", label, i, p.R[i],
+          R[i]);
+  if (g->shape == DV_SHAPE_CYLINDER && g->half_thickness == 0.0) {
+    double pc[2];
+    red_contact_point(&dk, y, pc);
+    CHECK(hypot(pt[0] - pc[0], pt[1] - pc[1]) <= 1e-15, "%s: lowest point (%.17g, %.17g), the "
+          "reduced contact point (%.17g, %.17g)", label, pt[0], pt[1], pc[0], pc[1]);
+  }
   /* the height the engines check every step is the contact vector's z */
   double rho[3];
   dv_geometry_contact_vector(g, p.R, rho);
