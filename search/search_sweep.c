@@ -110,6 +110,30 @@ static void not_run(const job *jb, size_t k, dv_sweep_point *pt) {
   pt->verdict = DV_VERDICT_MISSING;
 }
 
+/* over, and the value the scene chose for the engine's choice key (the
+ * integrator) where it was chosen and over does not set it: a point varies its
+ * own keys, and the rest stays the scenario's (engine_choose.h) */
+static size_t pin_choice(const job *jb, const char *const *over, size_t nover, const char **with,
+                         char *pin, size_t size) {
+  const dv_engine_search *se = jb->engine->search;
+  size_t n = 0;
+  for (size_t i = 0; i < nover && i < DV_SWEEP_MAX_VARY + 7; i++) with[n++] = over[i];
+  if (!se || !se->choice_key || !dv_scenario_is_derived(jb->sc, se->section, se->choice_key))
+    return n;
+  char key[96];
+  snprintf(key, sizeof key, "%s.%s=", se->section, se->choice_key);
+  for (size_t i = 0; i < nover; i++)
+    if (strstr(over[i], key)) return n;
+  const dv_setting_spec *sp = dv_settings_find(jb->engine->settings, se->choice_key);
+  const char *name =
+      sp ? dv_setting_choice(sp, (size_t)dv_scenario_get(jb->sc, se->section, se->choice_key))
+         : NULL;
+  if (!name) return n;
+  snprintf(pin, size, "engines.%s.%s=%s", se->section, se->choice_key, name);
+  with[n++] = pin;
+  return n;
+}
+
 /* run one point: the scenario with over[0..nover) */
 static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
@@ -118,12 +142,19 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   dv_error err = {{0}};
   pt->verdict = DV_VERDICT_INVALID;
   pt->failure = DV_FAILURE_NONE;
-  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
+  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = pt->limit[m] = NAN;
   if (!sc || !ref || !c) {
     snprintf(pt->detail, sizeof pt->detail, "out of memory");
     goto cleanup;
   }
-  if (dv_scenario_with(jb->sc, over, nover, sc, &err)) {
+  const char *with[DV_SWEEP_MAX_VARY + 8];
+  char pin[160];
+  const size_t nwith = pin_choice(jb, over, nover, with, pin, sizeof pin);
+  if (nover > DV_SWEEP_MAX_VARY + 7) {
+    snprintf(pt->detail, sizeof pt->detail, "too many settings varied at once");
+    goto cleanup;
+  }
+  if (dv_scenario_with(jb->sc, with, nwith, sc, &err)) {
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
     goto cleanup;
   }
@@ -152,6 +183,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   pt->sim_s = sim;
   pt->wall_s = r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
+  memcpy(pt->limit, r->tolerance, sizeof pt->limit);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
   pt->wall_per_sim_s = dv_run_cost_rate(wall, sim, sc->output_dt);
   pt->steps = r->stats.steps;
