@@ -30,6 +30,9 @@ static const char HELP[] =
 /* each knob changed alone, and the cause: the one whose change removes the error */
 static void print_knobs(const dv_attribution *at) {
   char cause[300];
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (at->judged >> m & 1u)
+      printf("over its limit: %s = %.4g > %.4g\n", dv_metric_names[m], at->base[m], at->limit[m]);
   printf("%-17s %-28s %10s  %s\n", "knob", "change", "worst",
          at->judged ? "(value / limit over the metrics over their limits)"
                     : "(theta against the thin disk / the scenario's)");

@@ -3,9 +3,10 @@
  * derives it: the choice key (MuJoCo's integrator, ODE's stepper) to each other
  * value, the step to a quarter, the contact 'stiffer' times stiffer (at a step
  * that resolves it), the friction 10x, a stand-in shape to the thin disk. The
- * error judged is every metric over its limit in the scenario's run; where
- * none is (a floor, a discrepancy that does not converge), theta against the
- * thin disk, removed when halved. A cause is named only where its change
+ * error judged is every metric over its limit in the scenario's run, removed
+ * where each comes within its limit or loses 90 % of its excess; where none is
+ * over (a floor, a discrepancy that does not converge), theta against the thin
+ * disk, removed when halved. A cause is named only where its change
  * removes the error (DESIGN section 6).
  */
 #include <math.h>
@@ -16,7 +17,8 @@
 #include "search_attribute.h"
 #include "search_sweep.h"
 
-#define HALVED 0.5 /* with nothing over its limit, a change removes theta's error at half */
+#define HALVED 0.5  /* with nothing over its limit, a change removes theta's error at half */
+#define RESIDUE 0.1 /* a change removes an excess over a limit that it cuts to a tenth */
 
 /* run sc with over[0..n) and keep what attribution compares; 0, or < 0 (err) */
 static int run_knob(const dv_scenario *sc, const char *engine, const char *const *over, size_t n,
@@ -29,15 +31,24 @@ static int run_knob(const dv_scenario *sc, const char *engine, const char *const
   return DV_OK;
 }
 
-/* how far k leaves the error: the worst value / limit over the judged metrics */
+/* how far k leaves the error: the worst value / limit over the judged metrics;
+ * it removes the error where each judged metric is within its limit or has lost
+ * at least 1 - RESIDUE of its excess over it (a regression limit of 3x a
+ * measurement can sit just under what the right change gives) */
 static void judge(const dv_attribution *a, dv_knob_probe *k) {
   k->worst = 0.0;
-  if (!a->judged)
+  k->removes = k->ok;
+  if (!a->judged) {
     k->worst = a->base_theta_thin > 0.0 ? k->theta_thin / a->base_theta_thin : INFINITY;
+    k->removes = k->ok && k->worst <= HALVED;
+  }
   for (int m = 0; m < DV_NMETRICS; m++)
-    if (a->judged >> m & 1u) k->worst = fmax(k->worst, k->metric[m] / a->limit[m]);
-  if (!k->ok || isnan(k->worst)) k->worst = INFINITY;
-  k->removes = a->judged ? k->worst <= 1.0 : k->worst <= HALVED;
+    if (a->judged >> m & 1u) {
+      const double excess = (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m]);
+      k->worst = fmax(k->worst, k->metric[m] / a->limit[m]);
+      if (!(excess <= RESIDUE)) k->removes = 0;
+    }
+  if (!k->ok || isnan(k->worst)) k->worst = INFINITY, k->removes = 0;
 }
 
 /* one knob: its name, its change in words and the overrides that make it */
