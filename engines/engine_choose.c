@@ -36,7 +36,7 @@ typedef struct memo_entry {
   uint64_t key;
   dv_knob_choice out;
   char why[DV_DERIVED_BYTES];
-  int chose; /* out.choice was chosen (not given, not the fallback's default) */
+  int chose; /* the choice key was chosen (more than one candidate) */
 } memo_entry;
 static memo_entry memo[MEMO];
 static int nmemo, next_slot; /* entries filled; the next to (re)use */
@@ -146,7 +146,8 @@ static int probe_reference(const dv_scenario *sc, probe *pr) {
   dv_engine_scene_scales(sc, &s);
   double t = s.t[DV_SCALE_FALL];
   for (int i = 0; i < DV_SCALE_DURATION; i++) t = fmin(t, s.t[i]);
-  pr->window = fmin(sc->duration, fmax(DV_CHOOSE_SCALES * t, sc->duration / DV_CHOOSE_SHARE));
+  pr->window = fmin(sc->duration, fmax(DV_CHOOSE_SCALES * t,
+                                       fmin(sc->duration / DV_CHOOSE_SHARE, DV_CHOOSE_MAX_WINDOW)));
   if (!(pr->window > 0.0)) return -1;
   dv_scenario *copy = malloc(sizeof *copy);
   if (!copy) return -1;
@@ -167,8 +168,8 @@ static int probe_reference(const dv_scenario *sc, probe *pr) {
 }
 
 /* the candidates: every free value at its model's step and the halvings, by cost */
-static int candidates(const dv_scenario *sc, const dv_engine_knobs *kn, int default_choice,
-                      const dv_knob_choice *given, candidate *c) {
+static int candidates(const dv_scenario *sc, const dv_engine_knobs *kn, const dv_knob_choice *given,
+                      candidate *c) {
   int n = 0;
   const double cap = fmin(DV_SCENE_WALL_PER_SIM * sc->duration, DV_SCENE_WALL_PER_RUN);
   for (int v = 0; v < kn->nchoices; v++) {
@@ -190,18 +191,27 @@ static int candidates(const dv_scenario *sc, const dv_engine_knobs *kn, int defa
       if (x->model_step || x->cost <= cap) n++;
     }
   }
-  (void)default_choice;
   for (int i = 1; i < n; i++) /* by cost; a tie keeps the declared order */
     for (int j = i; j > 0 && c[j].cost < c[j - 1].cost; j--) {
       const candidate t = c[j];
-      c[j] = c[j - 1], c[j - 1] = t;
+      c[j] = c[j - 1];
+      c[j - 1] = t;
     }
   return n;
 }
 
+/* the error model's reason for value choice (dv_engine_derive_step) */
+static void model_reason(const dv_scenario *sc, const dv_engine_knobs *kn,
+                         const dv_knob_choice *given, int choice, char *buf, size_t size) {
+  const dv_step_model *m = &kn->models[choice];
+  double dt = given->timestep, soft = given->softness;
+  buf[0] = '\0';
+  dv_engine_derive_step(sc, m, &dt, m->soft_steps > 0.0 ? &soft : NULL, buf, size, NULL);
+}
+
 /* "integrator implicit, timestep 5e-06 s, solref_timeconst 1e-05 s" (the chosen keys only) */
-static int describe(const dv_engine_type *engine, const dv_engine_knobs *kn,
-                    const dv_knob_choice *given, const dv_knob_choice *k, char *buf, size_t size) {
+static void describe(const dv_engine_type *engine, const dv_engine_knobs *kn,
+                     const dv_knob_choice *given, const dv_knob_choice *k, char *buf, size_t size) {
   const dv_setting_spec *ck = dv_settings_find(engine->settings, kn->choice_key);
   const char *soft_key = kn->models[k->choice].soft_key;
   int n = 0;
@@ -211,8 +221,7 @@ static int describe(const dv_engine_type *engine, const dv_engine_knobs *kn,
   if (isnan(given->timestep))
     n += snprintf(buf + n, size - (size_t)n, "%stimestep %.3g s", n ? ", " : "", k->timestep);
   if (soft_key && isnan(given->softness) && (size_t)n < size)
-    n += snprintf(buf + n, size - (size_t)n, "%s%s %.3g s", n ? ", " : "", soft_key, k->softness);
-  return n;
+    snprintf(buf + n, size - (size_t)n, "%s%s %.3g s", n ? ", " : "", soft_key, k->softness);
 }
 
 /* the short name of a candidate: "rk4 5e-05 s" */
@@ -222,11 +231,12 @@ static void name_of(const dv_engine_type *engine, const dv_engine_knobs *kn, con
   snprintf(buf, size, "%s %.3g s", dv_setting_choice(ck, (size_t)c->k.choice), c->k.timestep);
 }
 
-static void choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_engine_knobs *kn,
-                   int default_choice, const dv_knob_choice *given, dv_knob_choice *out, char *why,
-                   size_t size) {
+/* the choice, why, and whether the choice key was chosen (1) or had one candidate (0) */
+static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_engine_knobs *kn,
+                  int default_choice, const dv_knob_choice *given, dv_knob_choice *out, char *why,
+                  size_t size) {
   candidate c[MAX_CANDIDATES];
-  const int n = candidates(sc, kn, default_choice, given, c);
+  const int n = candidates(sc, kn, given, c);
   char what[160] = "";
   const candidate *fallback = NULL;
   for (int i = 0; i < n && !fallback; i++)
@@ -235,17 +245,25 @@ static void choose(const dv_scenario *sc, const dv_engine_type *engine, const dv
   if (!fallback) fallback = &c[0];
   probe pr;
   const char *no_probe = NULL;
-  if (dv_engine_stand_in(engine, sc))
+  /* the shape may be derived after the step (a [disk] thickness): ask for it */
+  if (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0)
     no_probe = "a stand-in shape, whose reference is not the thin disk";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
   else if (probe_reference(sc, &pr))
     no_probe = "the reference does not run through the probe";
+  char model[DV_DERIVED_BYTES];
+  if (no_probe && n < 2) { /* one candidate: the model's settings, as it gives its reason */
+    *out = fallback->k;
+    model_reason(sc, kn, given, out->choice, why, size);
+    return 0;
+  }
   if (no_probe) {
     *out = fallback->k;
     describe(engine, kn, given, out, what, sizeof what);
-    snprintf(why, size, "%s: the error model (engine_scene.h), not probed: %s", what, no_probe);
-    return;
+    model_reason(sc, kn, given, out->choice, model, sizeof model);
+    snprintf(why, size, "%s: the error model, not probed (%s): %s", what, no_probe, model);
+    return 1;
   }
   const candidate *best = NULL, *meets = NULL;
   int nprobed = 0;
@@ -257,8 +275,7 @@ static void choose(const dv_scenario *sc, const dv_engine_type *engine, const dv
   }
   const candidate *run = meets ? meets : best ? best : fallback;
   *out = run->k;
-  int w = describe(engine, kn, given, out, what, sizeof what);
-  (void)w;
+  describe(engine, kn, given, out, what, sizeof what);
   int m = snprintf(why, size,
                    "%s: %s: projected theta %.2g rad, path %.2g m (%.2f of the target: theta "
                    "%g rad, path %g of the %.3g m rolled over %g s) from a probe of %.3g s",
@@ -269,6 +286,8 @@ static void choose(const dv_scenario *sc, const dv_engine_type *engine, const dv
                    run->probed > 0 ? run->theta : NAN, run->probed > 0 ? run->path : NAN,
                    run->probed > 0 ? run->margin : NAN, DV_SCENE_ACCURACY, DV_SCENE_ACCURACY,
                    pr.rolled, sc->duration, pr.window);
+  model_reason(sc, kn, given, run->k.choice, model, sizeof model);
+  if (m > 0 && (size_t)m < size) m += snprintf(why + m, size - (size_t)m, "; the model: %s", model);
   for (int i = 0, listed = 0; i < nprobed && listed < 3 && m > 0 && (size_t)m < size; i++) {
     if (&c[i] == run) continue;
     char name[64];
@@ -277,6 +296,7 @@ static void choose(const dv_scenario *sc, const dv_engine_type *engine, const dv
                   c[i].margin);
     listed++;
   }
+  return 1;
 }
 
 void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
@@ -288,7 +308,8 @@ void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
     if (memo[i].key == key) hit = &memo[i];
   memo_entry fresh = {key, {0}, "", 0};
   if (!hit) {
-    choose(sc, engine, knobs, default_choice, given, &fresh.out, fresh.why, sizeof fresh.why);
+    fresh.chose =
+        choose(sc, engine, knobs, default_choice, given, &fresh.out, fresh.why, sizeof fresh.why);
     memo[next_slot] = fresh;
     next_slot = (next_slot + 1) % MEMO; /* full: the oldest entry goes */
     nmemo = nmemo < MEMO ? nmemo + 1 : MEMO;
@@ -298,7 +319,7 @@ void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
   if (why) snprintf(why, size, "%s", hit->why);
   size_t nkeys = 0;
   if (keys) {
-    if (given->choice < 0) keys[nkeys++] = knobs->choice_key;
+    if (given->choice < 0 && hit->chose) keys[nkeys++] = knobs->choice_key;
     if (isnan(given->timestep)) keys[nkeys++] = "timestep";
     if (knobs->models[out->choice].soft_key && isnan(given->softness))
       keys[nkeys++] = knobs->models[out->choice].soft_key;

@@ -10,7 +10,8 @@
  * wall time. In order of cost, each candidate runs a probe: the scene's first
  * `window` seconds, DV_CHOOSE_SAMPLES samples against the reduced reference,
  *
- *   window = min(duration, max(DV_CHOOSE_SCALES T, duration / DV_CHOOSE_SHARE)),
+ *   window = min(duration, max(DV_CHOOSE_SCALES T, min(duration / DV_CHOOSE_SHARE,
+ *                                                       DV_CHOOSE_MAX_WINDOW))),
  *
  * T the shortest of the scene's time scales. Each error (the running max of
  * theta's and of the contact point's distance from the reference's) is
@@ -41,6 +42,7 @@
 #define DV_CHOOSE_MARGIN 0.5       /* a candidate meets the target at half of it, projected */
 #define DV_CHOOSE_SCALES 3.0       /* the probe covers at least this many shortest time scales */
 #define DV_CHOOSE_SHARE 4.0        /* and at least this share of the duration */
+#define DV_CHOOSE_MAX_WINDOW 2.0   /* s: but no longer than this where the scales allow */
 #define DV_CHOOSE_SAMPLES 64       /* samples compared over the probe window */
 #define DV_CHOOSE_THETA_GROWTH 1.0 /* theta's error projected as t^1 */
 #define DV_CHOOSE_PATH_GROWTH 2.0  /* the path's as t^2 */
@@ -64,7 +66,8 @@ typedef struct dv_knob_choice {
 
 struct dv_engine_type;
 
-/* choose sc's settings for engine. given holds the values given (choice < 0,
+/* choose sc's settings for engine. default_choice is the choice key's value
+ * where the probe cannot judge the scene; given holds the values given (choice < 0,
  * NAN: free; a given value is never replaced, except a timestep longer than
  * output_dt, as dv_engine_derive_step); out the values to run; why one line
  * (may be NULL) naming what was chosen and why; keys (room for 4, may be NULL)
