@@ -109,9 +109,10 @@ static const dv_step_model MODELS[] = {
 
 /* The knobs chosen per scene (engine_choose.h): the integrator, and the step
  * from each integrator's model down to a quarter of it; the cost of a step is
- * the bench's. MuJoCo 2.2's rk4 loses energy on rolling contact at a steady
- * rate whatever the step (the saucer of tests/data: 0.33 % a second, path
- * 1.98e-2 m over 3 s at 5e-5 s), which only a probe sees. */
+ * the bench's. MuJoCo 2.2's rk4 loses energy on rolling contact steadily, first
+ * order in the step but far more than its theta error shows (the saucer of
+ * tests/data: 0.33 % a second and path 1.98e-2 m over 3 s at 5e-5 s, 0.16 % and
+ * 9.9e-3 m at 2.5e-5 s, theta 4.5e-4 rad), which only a probe sees. */
 static const dv_engine_knobs KNOBS = {"mujoco", "integrator", MODELS, 3, 0x7, 2};
 
 static const dv_shape_keys SHAPE = {"mujoco", "geom", GEOM_CYLINDER, GEOM_THIN, "half_thickness"};

@@ -106,8 +106,8 @@ static const dv_step_model MODELS[] = {
 /* The knobs chosen per scene (engine_choose.h): the step, from the model's
  * down to half of it, with dWorldStep; QuickStep is declared (attribution turns
  * it) but not a candidate: its errors equal dWorldStep's at 3x the cost. The
- * contact's softness (soft_erp, soft_cfm) is no knob: 100x stiffer changes
- * the theta error by less than 1 % (attribute on steady_circle). */
+ * contact's softness (soft_erp, soft_cfm) is no knob: it changes nothing
+ * measurable (the models above). */
 static const dv_engine_knobs KNOBS = {"ode", "stepper", MODELS, 2, 0x1, 1};
 
 static const dv_shape_keys SHAPE = {"ode", "geom", 1, 0, "half_thickness"};
