@@ -149,6 +149,7 @@ static int probe_reference(const dv_scenario *sc, probe *pr) {
   pr->window = fmin(sc->duration, fmax(DV_CHOOSE_SCALES * t,
                                        fmin(sc->duration / DV_CHOOSE_SHARE, DV_CHOOSE_MAX_WINDOW)));
   if (!(pr->window > 0.0)) return -1;
+  if (pr->window < sc->duration / DV_CHOOSE_SHARE * (1.0 - 1e-12)) return -2;
   dv_scenario *copy = malloc(sizeof *copy);
   if (!copy) return -1;
   *copy = *sc;
@@ -245,12 +246,15 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   if (!fallback) fallback = &c[0];
   probe pr;
   const char *no_probe = NULL;
+  int status;
   /* the shape may be derived after the step (a [disk] thickness): ask for it */
   if (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0)
     no_probe = "a stand-in shape, whose reference is not the thin disk";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
-  else if (probe_reference(sc, &pr))
+  else if ((status = probe_reference(sc, &pr)) == -2)
+    no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
+  else if (status)
     no_probe = "the reference does not run through the probe";
   char model[DV_DERIVED_BYTES];
   if (no_probe && n < 2) { /* one candidate: the model's settings, as it gives its reason */

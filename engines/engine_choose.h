@@ -29,7 +29,8 @@
  * DV_SCENE_WALL_PER_RUN a run, the model's own step always allowed) are not
  * run; where none meets the target, the one with the smallest margin runs and
  * the reason says so. A scene the probe cannot judge (a stand-in shape, whose
- * reference is not the thin disk; a reference or engine that cannot run)
+ * reference is not the thin disk; a reference or engine that cannot run; a
+ * duration over DV_CHOOSE_SHARE longest windows, too far to project)
  * keeps the model's step and the choice key's default. The probe is
  * deterministic (the same input gives the same choice) and remembered per
  * process: a scenario derived again (a sweep's points, attribution) probes once.
