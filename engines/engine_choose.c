@@ -24,11 +24,14 @@ typedef struct candidate {
 
 /* the probe's reference samples and the target they set */
 typedef struct probe {
-  double window; /* s */
-  int n;         /* samples the reference reached */
+  double window;               /* s */
+  int ns;                      /* sample times: multiples of output_dt, on every step */
+  double t[DV_CHOOSE_SAMPLES]; /* s */
+  int n;                       /* samples the reference reached */
+  double horizon;              /* s: the duration, or where the reference ended (an event) */
   double theta[DV_CHOOSE_SAMPLES];
   double xy[DV_CHOOSE_SAMPLES][2];
-  double rolled; /* m, projected over the duration */
+  double rolled; /* m, projected over the horizon */
   double theta_target, path_target;
 } probe;
 
@@ -73,17 +76,18 @@ static uint64_t scene_key(const dv_scenario *sc, const dv_engine_type *engine,
   return h;
 }
 
-/* sample type's run of sc at window * i / n, i = 1..n; the samples reached */
-static int run_samples(const dv_engine_type *type, const dv_scenario *sc, double window,
-                       double theta[], double xy[][2]) {
+/* sample type's run of sc at the probe's times; the samples reached */
+static int run_samples(const dv_engine_type *type, const dv_scenario *sc, const probe *pr,
+                       double theta[], double xy[][2], dv_sample *keep) {
   dv_error err = {{0}};
   void *e = type->alloc(sc, &err);
   int got = 0;
   if (e && type->reset(e, sc->initial, &err) == DV_OK) {
-    for (int i = 1; i <= DV_CHOOSE_SAMPLES; i++) {
+    for (int i = 0; i < pr->ns; i++) {
       dv_sample s;
-      const int status = type->advance(e, window * i / DV_CHOOSE_SAMPLES, &s, &err);
+      const int status = type->advance(e, pr->t[i], &s, &err);
       if (status < 0 || !isfinite(s.y[RED_TH])) break;
+      if (keep) keep[got] = s;
       theta[got] = s.y[RED_TH];
       xy[got][0] = s.contact[0];
       xy[got][1] = s.contact[1];
@@ -95,12 +99,11 @@ static int run_samples(const dv_engine_type *type, const dv_scenario *sc, double
   return got;
 }
 
-/* e(D) = D^p max e(t) / t^p over the window's second half, e the running max */
-static double project(const double *e, int n, double window, double duration, double p) {
+/* e(D) = D^p max e(t) / t^p over the samples' second half, e the running max */
+static double project(const double *e, const probe *pr, double p) {
   double rate = 0.0;
-  for (int i = n / 2; i < n; i++)
-    rate = fmax(rate, e[i] / pow(window * (i + 1) / DV_CHOOSE_SAMPLES, p));
-  return rate * pow(duration, p);
+  for (int i = pr->n / 2; i < pr->n; i++) rate = fmax(rate, e[i] / pow(pr->t[i], p));
+  return rate * pow(pr->horizon, p);
 }
 
 /* run candidate c over the probe window and project its errors */
@@ -124,7 +127,7 @@ static void probe_candidate(const dv_scenario *sc, const dv_engine_type *engine,
   int bad = !block || !ck || !dt || dv_setting_store(ck, c->k.choice, block, what, sizeof what) ||
             dv_setting_store(dt, c->k.timestep, block, what, sizeof what) ||
             (soft && dv_setting_store(soft, c->k.softness, block, what, sizeof what));
-  const int n = bad ? 0 : run_samples(engine, copy, pr->window, theta, xy);
+  const int n = bad ? 0 : run_samples(engine, copy, pr, theta, xy, NULL);
   free(copy);
   if (n < pr->n) return;
   double th[DV_CHOOSE_SAMPLES], pa[DV_CHOOSE_SAMPLES];
@@ -134,8 +137,8 @@ static void probe_candidate(const dv_scenario *sc, const dv_engine_type *engine,
     th[i] = i ? fmax(th[i - 1], et) : et;
     pa[i] = i ? fmax(pa[i - 1], ep) : ep;
   }
-  c->theta = project(th, pr->n, pr->window, sc->duration, DV_CHOOSE_THETA_GROWTH);
-  c->path = project(pa, pr->n, pr->window, sc->duration, DV_CHOOSE_PATH_GROWTH);
+  c->theta = project(th, pr, DV_CHOOSE_THETA_GROWTH);
+  c->path = project(pa, pr, DV_CHOOSE_PATH_GROWTH);
   c->probed = 1;
   c->margin = fmax(c->theta / pr->theta_target, c->path / pr->path_target);
 }
@@ -150,19 +153,35 @@ static int probe_reference(const dv_scenario *sc, probe *pr) {
                                        fmin(sc->duration / DV_CHOOSE_SHARE, DV_CHOOSE_MAX_WINDOW)));
   if (!(pr->window > 0.0)) return -1;
   if (pr->window < sc->duration / DV_CHOOSE_SHARE * (1.0 - 1e-12)) return -2;
+  /* at least 8 samples of output_dt (where the scene is that long) */
+  pr->window = fmin(sc->duration, fmax(pr->window, 8.0 * sc->output_dt));
+  const double step = fmax(sc->output_dt, pr->window / DV_CHOOSE_SAMPLES);
+  pr->ns = 0;
+  for (int i = 1; i <= DV_CHOOSE_SAMPLES;
+       i++) { /* on output_dt's grid: on every candidate's step */
+    const double at = sc->output_dt * ceil(step * i / sc->output_dt * (1.0 - 1e-12));
+    if (at > pr->window * (1.0 + 1e-12)) break;
+    if (!pr->ns || at > pr->t[pr->ns - 1]) pr->t[pr->ns++] = at;
+  }
   dv_scenario *copy = malloc(sizeof *copy);
   if (!copy) return -1;
   *copy = *sc;
   copy->duration = pr->window;
+  dv_sample ref[DV_CHOOSE_SAMPLES];
   pr->n =
-      run_samples(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), copy, pr->window, pr->theta, pr->xy);
+      run_samples(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), copy, pr, pr->theta, pr->xy, ref);
   free(copy);
-  if (pr->n < 8) return -1; /* the reference ends at once: nothing to measure against */
+  /* a reference that ends inside the window (an event), or stops describing
+   * the physics (its validity window), ends what is compared there */
+  const double valid = pr->n ? dv_reference_valid_until(sc, ref, (size_t)pr->n) : 0.0;
+  int ended = pr->n < pr->ns;
+  while (pr->n > 0 && pr->t[pr->n - 1] > valid) pr->n--, ended = 1;
+  if (pr->n < 8) return -1; /* nothing to measure against */
+  pr->horizon = ended ? pr->t[pr->n - 1] : sc->duration;
   double rolled = 0.0;
   for (int i = 1; i < pr->n; i++)
     rolled += hypot(pr->xy[i][0] - pr->xy[i - 1][0], pr->xy[i][1] - pr->xy[i - 1][1]);
-  const double w = pr->window * pr->n / DV_CHOOSE_SAMPLES;
-  pr->rolled = rolled * sc->duration / w;
+  pr->rolled = rolled * pr->horizon / pr->t[pr->n - 1];
   pr->theta_target = DV_SCENE_ACCURACY;
   pr->path_target = DV_SCENE_ACCURACY * fmax(pr->rolled, sc->disk.r);
   return 0;
@@ -289,7 +308,7 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
                           : "no candidate ran through the probe; the error model's step",
                    run->probed > 0 ? run->theta : NAN, run->probed > 0 ? run->path : NAN,
                    run->probed > 0 ? run->margin : NAN, DV_SCENE_ACCURACY, DV_SCENE_ACCURACY,
-                   pr.rolled, sc->duration, pr.window);
+                   pr.rolled, pr.horizon, pr.window);
   model_reason(sc, kn, given, run->k.choice, model, sizeof model);
   if (m > 0 && (size_t)m < size) m += snprintf(why + m, size - (size_t)m, "; the model: %s", model);
   for (int i = 0, listed = 0; i < nprobed && listed < 3 && m > 0 && (size_t)m < size; i++) {
