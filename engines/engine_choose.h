@@ -8,7 +8,10 @@
  * contact time constant, where the engine has one, at soft_steps timesteps), and
  * their cost is counted: steps over the duration times the cost of a step, never
  * wall time. In order of cost, each candidate runs a probe: the scene's first
- * `window` seconds, DV_CHOOSE_SAMPLES samples against the reduced reference,
+ * `window` seconds against the reduced reference, at up to DV_CHOOSE_SAMPLES
+ * samples on output_dt's grid (every candidate's step divides output_dt), up
+ * to the reference's event or the end of its validity window (where compare
+ * stops judging; the run is then projected to there, not to the duration),
  *
  *   window = min(duration, max(DV_CHOOSE_SCALES T, min(duration / DV_CHOOSE_SHARE,
  *                                                       DV_CHOOSE_MAX_WINDOW))),
