@@ -135,8 +135,7 @@ static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   const int given = dv_scenario_is_given(sc, "mujoco", "integrator");
   const dv_knob_choice in = {given ? s->integrator : -1, s->timestep, s->solref_timeconst};
   dv_knob_choice out;
-  dv_engine_choose(sc, &dv_engine_mujoco, &KNOBS, s->integrator, &in, &out, why, sizeof why,
-                   keys);
+  dv_engine_choose(sc, &dv_engine_mujoco, &KNOBS, s->integrator, &in, &out, why, sizeof why, keys);
   s->integrator = out.choice;
   s->timestep = out.timestep;
   s->solref_timeconst = out.softness;

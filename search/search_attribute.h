@@ -39,8 +39,8 @@ typedef struct dv_attribution_errors {
 /* one knob the engine declares, changed alone (the rest as the scene derives it) */
 #define DV_MAX_KNOBS 8
 typedef struct dv_knob_probe {
-  const char *knob;          /* "integrator", "timestep", "contact softness", "friction", "geometry" */
-  char change[64];           /* "rk4 -> implicit", "5e-05 -> 1.25e-05 s" */
+  const char *knob; /* "integrator", "timestep", "contact softness", "friction", "geometry" */
+  char change[64];  /* "rk4 -> implicit", "5e-05 -> 1.25e-05 s" */
   double metric[DV_NMETRICS]; /* against the engine's reference; NAN where the run failed */
   double theta_thin;          /* theta_max_err against the thin disk */
   double worst;               /* over the metrics judged: value / limit (or / the base's) */
@@ -54,12 +54,12 @@ typedef struct dv_attribution {
   double base[DV_NMETRICS];  /* the scenario's run, against the engine's reference */
   double limit[DV_NMETRICS]; /* the verdict's limits */
   double base_theta_thin;
-  unsigned judged;  /* bit m: metric m exceeds its limit; 0: theta against the thin disk */
+  unsigned judged; /* bit m: metric m exceeds its limit; 0: theta against the thin disk */
   size_t nknobs;
   dv_knob_probe knobs[DV_MAX_KNOBS];
-  int cause; /* the knob whose change removes the error with the smallest worst; -1: none */
-  double timestep;                      /* s, the scenario's */
-  int has_stand_in;                     /* the scenario's geometry is not the thin disk */
+  int cause;        /* the knob whose change removes the error with the smallest worst; -1: none */
+  double timestep;  /* s, the scenario's */
+  int has_stand_in; /* the scenario's geometry is not the thin disk */
   double geometry, time, contact, rest; /* rad; they add up to e.stand_in */
   double order;                         /* observed order of the time error; NAN: flat */
 } dv_attribution;
@@ -91,8 +91,8 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
 
 /* causes over every knob: the scenario's run, then each knob the engine
  * declares changed alone (search_attribute_knobs.c); fills the knob part of out */
-int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine,
-                              dv_attribution *out, dv_error *err);
+int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
+                              dv_error *err);
 
 /* probe the engine on the scenario, split its error and try every knob; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it */
