@@ -21,7 +21,27 @@ static const char HELP[] =
     "               observed order; 0 where the errors do not fall with the step\n"
     "  contact      at dt/4, e minus e with a stiffer contact and 10x friction\n"
     "  rest         what the three leave (interactions, the solver's tolerance)\n"
+    "Then every knob the engine declares is changed alone (its integrator or stepper\n"
+    "to each other value, the step to a quarter, a stiffer contact, 10x friction, a\n"
+    "stand-in to the thin disk) and the cause is the knob whose change removes the\n"
+    "error (every metric over its limit within it; none over: theta halved).\n"
     "A run that fails in any probe is an error (exit 2), not a zero share.\n";
+
+/* each knob changed alone, and the cause: the one whose change removes the error */
+static void print_knobs(const dv_attribution *at) {
+  char cause[300];
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (at->judged >> m & 1u)
+      printf("over its limit: %s = %.4g > %.4g\n", dv_metric_names[m], at->base[m], at->limit[m]);
+  printf("%-17s %-28s %10s  %s\n", "knob", "change", "worst",
+         at->judged ? "(value / limit over the metrics over their limits)"
+                    : "(theta against the thin disk / the scenario's)");
+  for (size_t i = 0; i < at->nknobs; i++)
+    printf("%-17s %-28s %10.3g  %s\n", at->knobs[i].knob, at->knobs[i].change, at->knobs[i].worst,
+           at->knobs[i].removes ? "removes it" : "");
+  dv_search_attribute_cause(at, cause, sizeof cause);
+  printf("cause: %s\n", cause);
+}
 
 /* the table of shares */
 static void print_attribution(const char *engine, const dv_attribution *at) {
@@ -57,6 +77,7 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
   else
     printf("order %.2f; ", at->order);
   printf("stiffer %.3e)\n", at->e.stiff);
+  print_knobs(at);
 }
 
 int dv_cli_attribute(int argc, char **argv) {

@@ -66,6 +66,7 @@
  *                                   reference; why says it where a share is
  *                                   negative (the geometry cancels other error)
  *         "version": TEXT, "settings": {KEY: value, ...}
+ *         "settings_why": TEXT,     the settings chosen for the scene and why ("": none)
  *       }, ...
  *     },
  *     "plots": ["theta.svg", ...]

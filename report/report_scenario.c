@@ -151,6 +151,7 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddItemToObject(o, "geometry_share", geometry_share_json(c, r));
   cJSON_AddStringToObject(o, "version", r->engine->version());
   cJSON_AddItemToObject(o, "settings", dv_run_meta_settings(r->engine, c->sc));
+  cJSON_AddStringToObject(o, "settings_why", dv_scenario_derived(c->sc, r->engine->name));
   return o;
 }
 
@@ -236,6 +237,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             r->engine->name, dv_run_verdict_name(r->verdict), r->decided, r->vs_ref.t_window,
             100 * r->window_fraction, r->pointwise_end);
     if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
+    if (dv_scenario_derived(c->sc, r->engine->name)[0])
+      fprintf(fp, "%s settings chosen: %s.\n\n", r->engine->name,
+              dv_scenario_derived(c->sc, r->engine->name));
     if (r->event.judged)
       fprintf(fp, "Lying down: %s%s%s.\n\n", r->event.agrees ? "agrees" : r->event.why,
               r->event.agrees ? " with the reference: " : ": ", r->event.note);

@@ -50,7 +50,7 @@ typedef struct dv_engine_result {
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
   char decided[160];                /* which part decided the verdict, and why */
-  char cause[96];                   /* an excess's dominant cause, from attribution ("": unknown) */
+  char cause[200];                  /* an excess's cause, from attribution ("": unknown) */
   char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
   int pass;

@@ -85,20 +85,5 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
   out->timestep = dt;
-  return DV_OK;
-}
-
-void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
-  const struct {
-    const char *name;
-    double v;
-  } s[] = {{"geometry", a->geometry},
-           {"time step", a->time},
-           {"contact softness and slip", a->contact},
-           {"the rest", a->rest}};
-  size_t best = 0;
-  for (size_t i = 1; i < 4; i++)
-    if (fabs(s[i].v) > fabs(s[best].v)) best = i;
-  snprintf(out, size, "%s (%.0f%% of %.3g rad)", s[best].name,
-           a->e.stand_in > 0 ? 100.0 * s[best].v / a->e.stand_in : 0.0, a->e.stand_in);
+  return dv_search_attribute_knobs(scenario, engine_name, out, err);
 }

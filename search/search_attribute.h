@@ -12,6 +12,13 @@
  *   rest      what the three leave (interactions, the solver's tolerance)
  * Where the library raises the contact softness to a number of steps (MuJoCo's
  * solref), the softness follows the step in every probe.
+ *
+ * The cause is not a share: every knob the engine declares is changed alone
+ * (search_attribute_knobs.c: the integrator or stepper to each other value,
+ * the step, the contact softness, the friction, a stand-in's shape) and the
+ * cause is the knob whose change removes the error (every metric over its
+ * limit back within it; with none over, theta against the thin disk halved),
+ * named with the numbers; none is named where no change removes it.
  */
 #ifndef DV_SEARCH_ATTRIBUTE_H
 #define DV_SEARCH_ATTRIBUTE_H
@@ -19,6 +26,7 @@
 #include <stddef.h>
 
 #include "dv_error.h"
+#include "scenario.h"
 
 /* the measured errors attribution splits (rad) */
 typedef struct dv_attribution_errors {
@@ -28,10 +36,30 @@ typedef struct dv_attribution_errors {
   double stiff;    /* at dt/4 with a stiffer contact and more friction */
 } dv_attribution_errors;
 
+/* one knob the engine declares, changed alone (the rest as the scene derives it) */
+#define DV_MAX_KNOBS 8
+typedef struct dv_knob_probe {
+  const char *knob; /* "integrator", "timestep", "contact softness", "friction", "geometry" */
+  char change[64];  /* "rk4 -> implicit", "5e-05 -> 1.25e-05 s" */
+  double metric[DV_NMETRICS]; /* against the engine's reference; NAN where the run failed */
+  double theta_thin;          /* theta_max_err against the thin disk */
+  double worst;               /* over the metrics judged: value / limit (or / the base's) */
+  int ok;                     /* the run ran through its window */
+  int removes;                /* every metric judged is within its limit (or halved) */
+} dv_knob_probe;
+
 typedef struct dv_attribution {
   dv_attribution_errors e;
-  double timestep;                      /* s, the scenario's */
-  int has_stand_in;                     /* the scenario's geometry is not the thin disk */
+  /* causes over every knob: the base run, what is judged, each knob changed */
+  double base[DV_NMETRICS];  /* the scenario's run, against the engine's reference */
+  double limit[DV_NMETRICS]; /* the verdict's limits */
+  double base_theta_thin;
+  unsigned judged; /* bit m: metric m exceeds its limit; 0: theta against the thin disk */
+  size_t nknobs;
+  dv_knob_probe knobs[DV_MAX_KNOBS];
+  int cause;        /* the knob whose change removes the error with the smallest worst; -1: none */
+  double timestep;  /* s, the scenario's */
+  int has_stand_in; /* the scenario's geometry is not the thin disk */
   double geometry, time, contact, rest; /* rad; they add up to e.stand_in */
   double order;                         /* observed order of the time error; NAN: flat */
 } dv_attribution;
@@ -55,10 +83,18 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
 void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
                                dv_attribution *out);
 
-/* the largest share in words with its size: "time step (78% of 1.2e-3 rad)" */
+/* the cause in words: the knob whose change removes the error, with the
+ * numbers, "integrator (rk4 -> implicit: path 1.98e-02 -> 1.98e-03 m, energy
+ * 0.99 % -> 0.07 %)"; where no knob's change removes it, "none of the knobs
+ * (...) removes it" and no cause is named */
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
 
-/* probe the engine on the scenario and split its error; a probe that fails
+/* causes over every knob: the scenario's run, then each knob the engine
+ * declares changed alone (search_attribute_knobs.c); fills the knob part of out */
+int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
+                              dv_error *err);
+
+/* probe the engine on the scenario, split its error and try every knob; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it */
 struct dv_scenario;
 int dv_search_attribute(const struct dv_scenario *sc, const char *engine, dv_attribution *out,

@@ -110,6 +110,50 @@ static void not_run(const job *jb, size_t k, dv_sweep_point *pt) {
   pt->verdict = DV_VERDICT_MISSING;
 }
 
+/* does an override in over[0..n) set engine's key */
+static int sets(const char *const *over, size_t n, const char *engine, const char *key) {
+  char pat[96];
+  snprintf(pat, sizeof pat, "%s.%s=", engine, key);
+  for (size_t i = 0; i < n; i++)
+    if (strstr(over[i], pat)) return 1;
+  return 0;
+}
+
+/* over, then the settings the scene chose for the engine (engine_choose.h)
+ * that over leaves alone: its choice key (the integrator), and its step and
+ * contact softness unless over sets the choice key or the step, which are
+ * then chosen again for them. A point varies its own keys; the rest stays
+ * the scenario's. */
+static size_t pin_chosen(const job *jb, const char *const *over, size_t nover, const char **with,
+                         char pins[][160]) {
+  const dv_engine_search *se = jb->engine->search;
+  const dv_engine_contact *k = jb->engine->contact;
+  size_t n = 0, npins = 0;
+  for (size_t i = 0; i < nover; i++) with[n++] = over[i];
+  if (!se || !se->choice_key) return n;
+  const char *name = se->section;
+  const int rechoose =
+      sets(over, nover, name, se->choice_key) || sets(over, nover, name, se->step_key);
+  const char *keys[3] = {se->choice_key, rechoose ? NULL : se->step_key,
+                         rechoose || !k ? NULL : k->softness_key};
+  for (int i = 0; i < 3; i++) {
+    if (!keys[i] || sets(over, nover, name, keys[i]) ||
+        !dv_scenario_is_derived(jb->sc, name, keys[i]))
+      continue;
+    const dv_setting_spec *sp = dv_settings_find(jb->engine->settings, keys[i]);
+    const double v = dv_scenario_get(jb->sc, name, keys[i]);
+    if (!sp) continue;
+    if (sp->type == DV_SETTING_CHOICE) {
+      const char *choice = dv_setting_choice(sp, (size_t)v);
+      if (!choice) continue;
+      snprintf(pins[npins], sizeof pins[npins], "engines.%s.%s=%s", name, keys[i], choice);
+    } else
+      snprintf(pins[npins], sizeof pins[npins], "engines.%s.%s=%.17g", name, keys[i], v);
+    with[n++] = pins[npins++];
+  }
+  return n;
+}
+
 /* run one point: the scenario with over[0..nover) */
 static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
@@ -118,12 +162,19 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   dv_error err = {{0}};
   pt->verdict = DV_VERDICT_INVALID;
   pt->failure = DV_FAILURE_NONE;
-  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = NAN;
+  for (int m = 0; m < DV_NMETRICS; m++) pt->metric[m] = pt->limit[m] = NAN;
   if (!sc || !ref || !c) {
     snprintf(pt->detail, sizeof pt->detail, "out of memory");
     goto cleanup;
   }
-  if (dv_scenario_with(jb->sc, over, nover, sc, &err)) {
+  const char *with[DV_SWEEP_MAX_VARY + 8];
+  char pins[3][160];
+  if (nover > DV_SWEEP_MAX_VARY + 5) {
+    snprintf(pt->detail, sizeof pt->detail, "too many settings varied at once");
+    goto cleanup;
+  }
+  const size_t nwith = pin_chosen(jb, over, nover, with, pins);
+  if (dv_scenario_with(jb->sc, with, nwith, sc, &err)) {
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
     goto cleanup;
   }
@@ -152,6 +203,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   pt->sim_s = sim;
   pt->wall_s = r->wall_s;
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
+  memcpy(pt->limit, r->tolerance, sizeof pt->limit);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
   pt->wall_per_sim_s = dv_run_cost_rate(wall, sim, sc->output_dt);
   pt->steps = r->stats.steps;

@@ -36,6 +36,7 @@ typedef struct dv_vary {
 typedef struct dv_sweep_point {
   char values[DV_SWEEP_MAX_VARY][32]; /* this point's value of each varied key */
   double metric[DV_NMETRICS];         /* against the engine's reference */
+  double limit[DV_NMETRICS];          /* the verdict's limits on them */
   double theta_thin;                  /* theta_max_err against the thin disk */
   double wall_per_sim_s;              /* s per simulated s (median where repeated) */
   int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */

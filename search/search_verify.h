@@ -48,7 +48,7 @@ typedef struct dv_verification {
   double extrapolated;            /* e(0), rad */
   double uncertainty;             /* of e(0), rad (0: not estimated) */
   dv_convergence verdict;
-  char cause[96]; /* converges elsewhere: the dominant share of attribution */
+  char cause[200]; /* converges elsewhere: the knob whose change removes it (attribution) */
 } dv_verification;
 
 /* order, extrapolation, uncertainty and verdict (before attribution) from

@@ -49,6 +49,9 @@ check '[ $code -eq 2 ] && [ ! -e "$full/x.csv" ]' "full disk simulate: exit $cod
 mkdir -p "$work/int/.diskval-tmp.$$.abcdef"
 "$diskval" suite "$scenarios" --out "$work/int" --jobs 2 >/dev/null 2>"$work/err" &
 pid=$!
+# the suite takes --out's lock once every scenario is loaded (with the settings
+# chosen for it, by probes: 7 s of CPU for the default suite), then runs
+for _ in $(seq 600); do [ -e "$work/int/.diskval.lock" ] && break; sleep 0.1; done
 sleep 1
 kill -INT "$pid"
 wait "$pid"; code=$?

@@ -1,0 +1,197 @@
+/* search_attribute_knobs: causes over every knob a contact engine declares
+ * (search_attribute.h). Each knob is changed alone, the rest as the scene
+ * derives it: the choice key (MuJoCo's integrator, ODE's stepper) to each other
+ * value, the step to a quarter, the contact 'stiffer' times stiffer (at a step
+ * that resolves it), the friction 10x, a stand-in shape to the thin disk. The
+ * error judged is every metric over its limit in the scenario's run, removed
+ * where each comes within its limit or loses 90 % of its excess; where none is
+ * over (a floor, a discrepancy that does not converge), theta against the thin
+ * disk, removed when halved. A cause is named only where its change
+ * removes the error (DESIGN section 6).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "dv_engine.h"
+#include "search_attribute.h"
+#include "search_sweep.h"
+
+#define HALVED 0.5  /* with nothing over its limit, a change removes theta's error at half */
+#define RESIDUE 0.1 /* a change removes an excess over a limit that it cuts to a tenth */
+
+/* run sc with over[0..n) and keep what attribution compares; 0, or < 0 (err) */
+static int run_knob(const dv_scenario *sc, const char *engine, const char *const *over, size_t n,
+                    dv_knob_probe *k, dv_error *err) {
+  dv_sweep_point p;
+  if (dv_search_sweep_probe(sc, engine, over, n, &p, err)) return DV_EINPUT;
+  memcpy(k->metric, p.metric, sizeof k->metric);
+  k->theta_thin = p.theta_thin;
+  k->ok = p.ok;
+  return DV_OK;
+}
+
+/* how far k leaves the error: the worst value / limit over the judged metrics;
+ * it removes the error where each judged metric is within its limit or has lost
+ * at least 1 - RESIDUE of its excess over it (a regression limit of 3x a
+ * measurement can sit just under what the right change gives) */
+static void judge(const dv_attribution *a, dv_knob_probe *k) {
+  k->worst = 0.0;
+  k->removes = k->ok;
+  if (!a->judged) {
+    k->worst = a->base_theta_thin > 0.0 ? k->theta_thin / a->base_theta_thin : INFINITY;
+    k->removes = k->ok && k->worst <= HALVED;
+  }
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (a->judged >> m & 1u) {
+      const double excess = (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m]);
+      k->worst = fmax(k->worst, k->metric[m] / a->limit[m]);
+      if (!(excess <= RESIDUE)) k->removes = 0;
+    }
+  if (!k->ok || isnan(k->worst)) k->worst = INFINITY, k->removes = 0;
+}
+
+/* one knob: its name, its change in words and the overrides that make it */
+typedef struct knob {
+  const char *name;
+  char change[64];
+  char over[3][128];
+  size_t n;
+} knob;
+
+/* the knobs engine declares, changed from sc's values */
+static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob *kn) {
+  const dv_engine_contact *k = engine->contact;
+  const dv_engine_search *se = engine->search;
+  const char *name = engine->name;
+  size_t n = 0;
+  const dv_setting_spec *ck = dv_settings_find(engine->settings, se->choice_key);
+  const int now = (int)dv_scenario_get(sc, name, se->choice_key);
+  for (size_t v = 0; ck && dv_setting_choice(ck, v) && n < DV_MAX_KNOBS - 4; v++) {
+    if ((int)v == now) continue;
+    kn[n] = (knob){se->choice_key, "", {""}, 1};
+    snprintf(kn[n].change, sizeof kn[n].change, "%s -> %s", dv_setting_choice(ck, (size_t)now),
+             dv_setting_choice(ck, v));
+    snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, se->choice_key,
+             dv_setting_choice(ck, v));
+    n++;
+  }
+  const double dt = dv_scenario_get(sc, name, se->step_key);
+  const double soft = dv_scenario_get(sc, name, k->softness_key);
+  const double friction = dv_scenario_get(sc, name, k->friction_key);
+  kn[n] = (knob){se->step_key, "", {""}, 2};
+  snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g s", dt, dt / 4);
+  snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, se->step_key, dt / 4);
+  snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, k->softness_key,
+           fmax(soft, k->softness_min_steps * dt / 4));
+  n++;
+  /* a stiffer contact, at a step that resolves it where the library ties them */
+  const double stiff = fmax(soft, k->softness_min_steps * dt) * k->stiffer;
+  const double step = k->softness_min_steps > 0.0 ? fmin(dt, stiff / k->softness_min_steps) : dt;
+  kn[n] = (knob){"contact softness", "", {""}, 2};
+  snprintf(kn[n].change, sizeof kn[n].change, "%s %.3g -> %.3g", k->softness_key,
+           fmax(soft, k->softness_min_steps * dt), stiff);
+  snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->softness_key, stiff);
+  snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, se->step_key, step);
+  n++;
+  kn[n] = (knob){"friction", "", {""}, 1};
+  snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g", friction, 10 * friction);
+  snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->friction_key,
+           10 * friction);
+  n++;
+  if (dv_engine_stand_in(engine, sc)) {
+    kn[n] = (knob){"geometry", "", {""}, 1};
+    snprintf(kn[n].change, sizeof kn[n].change, "stand-in -> %s", k->thin_choice);
+    snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, k->geom_key,
+             k->thin_choice);
+    n++;
+  }
+  return n;
+}
+
+int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv_attribution *out,
+                              dv_error *err) {
+  const dv_engine_type *engine = dv_engine_find(engine_name);
+  if (!engine || !engine->contact || !engine->search)
+    return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute", engine_name);
+  dv_knob_probe base = {0};
+  dv_sweep_point p;
+  if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
+  memcpy(out->base, p.metric, sizeof out->base);
+  memcpy(out->limit, p.limit, sizeof out->limit);
+  out->base_theta_thin = p.theta_thin;
+  out->judged = 0;
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (p.metric[m] > p.limit[m]) out->judged |= 1u << m;
+  (void)base;
+  knob kn[DV_MAX_KNOBS];
+  out->nknobs = declare(sc, engine, kn);
+  out->cause = -1;
+  for (size_t i = 0; i < out->nknobs; i++) {
+    dv_knob_probe *k = &out->knobs[i];
+    const char *over[3] = {kn[i].over[0], kn[i].over[1], kn[i].over[2]};
+    memset(k, 0, sizeof *k);
+    k->knob = kn[i].name;
+    snprintf(k->change, sizeof k->change, "%s", kn[i].change);
+    if (run_knob(sc, engine->name, over, kn[i].n, k, err)) return DV_EINPUT;
+    judge(out, k);
+    if (k->removes && (out->cause < 0 || k->worst < out->knobs[out->cause].worst))
+      out->cause = (int)i;
+  }
+  return DV_OK;
+}
+
+/* "path 1.98e-02 -> 1.98e-03 m" for metric m from a to b */
+static int metric_change(int m, double a, double b, char *buf, size_t size) {
+  static const struct {
+    int m;
+    const char *name, *unit;
+    double scale;
+  } names[] = {{DV_THETA_MAX_ERR, "theta", "rad", 1},
+               {DV_PATH_MAX_ERR, "path", "m", 1},
+               {DV_ENERGY_DRIFT, "energy", "%", 100},
+               {DV_INVARIANT_DRIFT, "invariants", "%", 100},
+               {DV_SLIP_MAX, "slip", "m/s", 1},
+               {DV_PATH_HAUSDORFF, "path (as curves)", "m", 1},
+               {DV_THETA_RMS_ERR, "theta rms", "rad", 1},
+               {DV_PATH_RMS_ERR, "path rms", "m", 1},
+               {DV_THETA_EXTREMA_ERR, "theta extrema", "rad", 1}};
+  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+    if (names[i].m == m)
+      return snprintf(buf, size, "%s %.3g -> %.3g %s", names[i].name, names[i].scale * a,
+                      names[i].scale * b, names[i].unit);
+  return snprintf(buf, size, "%s %.3g -> %.3g", dv_metric_names[m], a, b);
+}
+
+void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
+  if (a->cause < 0) {
+    int n = snprintf(out, size, "none of the knobs removes it (");
+    for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
+      if (i == 0 || strcmp(a->knobs[i].knob, a->knobs[i - 1].knob))
+        n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
+    if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " tried)");
+    return;
+  }
+  const dv_knob_probe *k = &a->knobs[a->cause];
+  int n = snprintf(out, size, "%s (%s: ", k->knob, k->change);
+  int first = 1;
+  for (int m = 0; m < DV_NMETRICS && n > 0 && (size_t)n < size; m++)
+    if (a->judged >> m & 1u) {
+      n += snprintf(out + n, size - (size_t)n, "%s", first ? "" : ", ");
+      if ((size_t)n < size)
+        n += metric_change(m, a->base[m], k->metric[m], out + n, size - (size_t)n);
+      first = 0;
+    }
+  if (!a->judged && n > 0 && (size_t)n < size) {
+    n += snprintf(out + n, size - (size_t)n, "theta against the thin disk %.3g -> %.3g rad",
+                  a->base_theta_thin, k->theta_thin);
+    first = 0;
+  }
+  if (!(a->judged >> DV_ENERGY_DRIFT & 1u) && n > 0 && (size_t)n < size) {
+    n += snprintf(out + n, size - (size_t)n, ", ");
+    if ((size_t)n < size)
+      n += metric_change(DV_ENERGY_DRIFT, a->base[DV_ENERGY_DRIFT], k->metric[DV_ENERGY_DRIFT],
+                         out + n, size - (size_t)n);
+  }
+  if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, ")");
+}
