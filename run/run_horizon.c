@@ -158,7 +158,8 @@ double dv_run_horizon_of(const dv_amplification *a, double early_err, double t_e
                          double limit, double *gain) {
   const double eps = fmax(early_err, a->nudge);
   for (size_t i = 0; i < a->n; i++)
-    if (a->t[i] >= t_early && !(eps * a->gain[i] < limit)) {
+    /* what the dynamics add to the early error: a bounded x1.4 adds little */
+    if (a->t[i] >= t_early && !(eps * (a->gain[i] - 1.0) < limit)) {
       if (gain) *gain = a->gain[i];
       return a->t[i];
     }

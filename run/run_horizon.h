@@ -7,9 +7,11 @@
  * amplitude), exponential near a separatrix or a fall from upright.
  *
  * An engine's pointwise comparison ends at its horizon: where its own early
- * error (its largest theta error over the scene's shortest time scale, at
- * least the nudge), amplified by G(t), reaches DV_HORIZON_SPREAD rad, and
- * never before the early window itself. Up to there a pointwise error
+ * error e (its largest theta error over the scene's shortest time scale, at
+ * least the nudge) grows by e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the
+ * dynamics add to it (an engine's own large early error on a scene that
+ * amplifies little does not end its pointwise judging), and never before
+ * the early window itself. Up to there a pointwise error
  * measures the engine; past it, it measures the scene's sensitivity, and
  * only timing-insensitive measures mean something: turning points,
  * period, the path's Hausdorff distance, the drift of E, f1, f2 along the
@@ -42,7 +44,7 @@ typedef struct dv_amplification {
   size_t n;           /* samples: the reference's */
   double *t, *gain;   /* G(t_i): running max |theta_nudged - theta_ref| / |nudge| */
   double measured_to; /* s: G is measured to here (where a nudged run ended first, or ref's end) */
-  double horizon;     /* s: where nudge * G reaches DV_HORIZON_SPREAD (INFINITY: never) */
+  double horizon;     /* s: where nudge * (G - 1) reaches DV_HORIZON_SPREAD (INFINITY: never) */
   char growth[16];    /* "linear", "power", "exponential", "bounded" (from the fits below) */
   double exponent;    /* G ~ t^exponent, least squares over where G >= 2 */
   double efold;       /* s: G ~ exp(t / efold), the same samples */
@@ -66,7 +68,7 @@ int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, double size,
                          double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err);
 
 /* the horizon (s) of an engine whose early error, to t_early (s), is
- * early_err rad: where max(early_err, nudge) * G(t) reaches limit, and no
+ * early_err rad: where max(early_err, nudge) * (G(t) - 1) reaches limit, and no
  * earlier than t_early; INFINITY when it never does. gain: G there (or at
  * the end) */
 double dv_run_horizon_of(const dv_amplification *a, double early_err, double t_early,

@@ -72,13 +72,13 @@ static void find_horizon(const dv_comparison *c, const dv_traj *ref, dv_engine_r
   else if (isfinite(r->horizon))
     snprintf(r->horizon_why, sizeof r->horizon_why,
              "its early error %.2g rad (to t = %g s)%s, amplified x%.3g as the reference amplifies "
-             "a %g rad nudge, reaches %g rad at t = %g s; amplification %s",
+             "a %g rad nudge, has grown by %g rad at t = %g s; amplification %s",
              r->early_err, r->early_until, floor, r->horizon_gain, a->nudge, DV_HORIZON_SPREAD,
              r->horizon, growth);
   else
     snprintf(r->horizon_why, sizeof r->horizon_why,
              "its early error %.2g rad (to t = %g s)%s, amplified as the reference amplifies a %g "
-             "rad nudge (%s), stays below %g rad to t = %g s",
+             "rad nudge (%s), grows by less than %g rad to t = %g s",
              r->early_err, r->early_until, floor, a->nudge, growth, DV_HORIZON_SPREAD,
              a->measured_to);
 }
