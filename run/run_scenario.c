@@ -322,6 +322,16 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                  r->nudge, r->spread[m]);
       }
     }
+    /* turning points and periods: NAN where there is nothing to compare */
+    static const dv_metric_id cycles[] = {DV_THETA_TURNING_ERR, DV_NUTATION_PERIOD_ERR,
+                                          DV_HEADING_PERIOD_ERR};
+    for (size_t k = 0; k < sizeof cycles / sizeof cycles[0]; k++)
+      if (isnan(r->vs_ref.value[cycles[k]])) {
+        r->tolerance[cycles[k]] = NAN;
+        snprintf(r->limit_why[cycles[k]], sizeof r->limit_why[cycles[k]], "not judged: %s",
+                 k ? "the reference completes no nutation period in the window"
+                   : "neither run turns (a swing of 1e-3 rad) in the window");
+      }
     if (ref != &c->thin) { /* f1, f2 are integrals of the thin disk only */
       r->tolerance[DV_INVARIANT_DRIFT] = NAN;
       snprintf(r->limit_why[DV_INVARIANT_DRIFT], sizeof r->limit_why[DV_INVARIANT_DRIFT],
