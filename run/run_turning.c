@@ -81,6 +81,14 @@ static double extreme(const dv_traj *tr, double t_end, int kind) {
   return v;
 }
 
+/* is tr, at its last sample to t_end, still moving toward a turn of kind
+ * (its turn may lie just past the window) */
+static int heading_to(const dv_traj *tr, double t_end, int kind) {
+  size_t n = 0;
+  while (n < tr->n && tr->s[n].t <= t_end + 1e-12) n++;
+  return n > 0 && kind * tr->s[n - 1].y[RED_VTH] > 0;
+}
+
 double dv_run_theta_rate_max(const dv_traj *tr, double t_end) {
   double v = 0.0;
   for (size_t i = 0; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++)
@@ -100,11 +108,15 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
     const size_t me = of_kind(te, ne, kind, ke), mr = of_kind(tr, nr, kind, kr);
     const size_t paired = me < mr ? me : mr;
     for (size_t k = 0; k < paired; k++) turn_err = fmax(turn_err, fabs(ke[k].theta - kr[k].theta));
-    /* a turn the other run does not make: against that run's extreme of its kind */
+    /* a turn the other run does not make: against that run's extreme of its
+     * kind; not the last, where the other is still on its way to it (its turn
+     * lies past the window: that is timing, the period's) */
     for (size_t k = paired; k < me; k++)
-      turn_err = fmax(turn_err, fabs(ke[k].theta - extreme(ref, t_end, kind)));
+      if (k + 1 < me || !heading_to(ref, t_end, kind))
+        turn_err = fmax(turn_err, fabs(ke[k].theta - extreme(ref, t_end, kind)));
     for (size_t k = paired; k < mr; k++)
-      turn_err = fmax(turn_err, fabs(kr[k].theta - extreme(e, t_end, kind)));
+      if (k + 1 < mr || !heading_to(e, t_end, kind))
+        turn_err = fmax(turn_err, fabs(kr[k].theta - extreme(e, t_end, kind)));
     ref_periods += mr > 1;
     for (size_t k = 0; k + 1 < paired; k++) {
       period_err =

@@ -7,7 +7,9 @@
  *                        theta at the reference's k-th maximum|, and the same
  *                        for minima (rad); a turning point one run has and
  *                        the other has not is compared with that other run's
- *                        extreme of its kind over the window
+ *                        extreme of its kind over the window, unless it is
+ *                        the last and the other run, at the window's end, is
+ *                        still on its way to it
  *   nutation_period_err  the largest |engine's k-th period - reference's k-th
  *                        period| (s), a period being the time from one maximum
  *                        (or minimum) to the next; INFINITY where the reference

@@ -73,7 +73,20 @@ int main(void) {
   CHECK_NEAR(v[1], 0.02, 1e-5, "one period in 4 s");
   CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / 1.74, 1e-4, "fastest rate");
 
-  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy};
-  for (size_t i = 0; i < 5; i++) dv_run_traj_free(all[i]);
+  /* a turn just inside the window, where the reference's comes just after
+   * it: timing, not a turning point off (upright_unstable's MuJoCo: a minimum
+   * at 1.94 s, the reference's past 2 s, was compared with its start, 0.024
+   * rad away). Starting at a minimum whose swing shrinks 0.05 rad/s, the
+   * start lies 0.085 rad below the faster run's first minimum at 1.70 s */
+  dv_traj rising = {0}, rising_fast = {0};
+  nutation(&rising, 1.74, -0.5, -0.05, 0.7, 0.0);
+  nutation(&rising_fast, 1.70, -0.5, -0.05, 0.7, 0.0);
+  dv_run_turning_compare(&rising_fast, &rising, 1.72, v);
+  CHECK(v[0] < 2e-3, "a minimum the reference makes just past the window: %g", v[0]);
+  dv_run_turning_compare(&rising_fast, &rising, 2.5, v);
+  CHECK(v[0] < 2e-3, "both minima inside: %g", v[0]);
+
+  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy, &rising, &rising_fast};
+  for (size_t i = 0; i < 7; i++) dv_run_traj_free(all[i]);
   return TEST_RESULT();
 }
