@@ -419,6 +419,7 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
     fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
             dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR],
             r->vs_ref.value[DV_PATH_MAX_ERR], r->pass ? "pass" : "FAIL");
+    fprintf(fp, "    decided by %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);
     if (r->event.judged && r->event.agrees) fprintf(fp, "    lies down: %s\n", r->event.note);
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);
