@@ -256,7 +256,7 @@ static int compare(const diskval_scenario *sc, const char *engine, diskval_compa
     memset(out, 0, sizeof *out);
     out->pass = r->pass;
     snprintf(out->verdict, sizeof out->verdict, "%s", dv_run_verdict_name(r->verdict));
-    snprintf(out->decided, sizeof out->decided, "%s", r->decided);
+    snprintf(out->decided, sizeof out->decided, "%.*s", (int)sizeof out->decided - 1, r->decided);
     metrics_out(&r->vs_ref, &out->metrics);
     for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++)
       out->limit[i] = i < DV_NMETRICS ? r->tolerance[i] : NAN;

@@ -10,14 +10,24 @@
  *     "duration": s, "output_dt": s,
  *     "reference": {"engine": "reduced", "integrator": NAME, "rtol": x,
  *                   "outcome": "completed"|"event", "detail": TEXT, "t_end": s,
- *                   "version": TEXT, "horizon": s | null (predictable to the end),
+ *                   "version": TEXT, "horizon": s | null: where a 1e-6 rad nudge
+ *                   of theta(0) has grown by 0.01 rad, the latest any engine's
+ *                   horizon is (null: never, to the end),
+ *                   "amplification": {"nudge": rad, "growth": "linear"|"power"|
+ *                                     "exponential"|"bounded"|"too short",
+ *                                     "exponent", "efold_s", "factor": G,
+ *                                     "factor_t": s, "measured_to": s,
+ *                                     "words": TEXT} (run_horizon.h),
  *                   "wall_s": s, its run's wall-clock time,
  *                   "horizon_wall_s": s, the nudged runs' that find the horizon},
  *     "pass": bool,                       every engine passed
  *     "engines": {
  *       ENGINE: {
  *         "theta_max_err", "theta_rms_err", "path_max_err", "path_rms_err",
- *         "path_hausdorff", "energy_drift", "slip_max":  numbers, against the
+ *         "path_hausdorff", "energy_drift", "slip_max", "theta_extrema_err",
+ *         "invariant_drift", "theta_turning_err", "nutation_period_err",
+ *         "heading_period_err" (dv_metric_names):  numbers (null: not
+ *                                  measurable, or infinite), against the
  *                                  geometry-matched reference (the thin disk
  *                                  for a thin or ellipsoid stand-in),
  *         "wall_per_sim_s": s per simulated s; null for a run shorter than
@@ -36,9 +46,14 @@
  *         "window_fraction": x,     of the reference's run it covers
  *         "pointwise_end": s,       the pointwise metrics (theta_max_err,
  *                                   theta_rms_err, path_max_err, path_rms_err)
- *                                   cover the window to here: the reference's
- *                                   predictability horizon (run_horizon.h)
- *         "decided": TEXT,          which part decided the verdict
+ *                                   cover the window to here: the engine's
+ *                                   horizon (run_horizon.h)
+ *         "decided": TEXT,          which part decided the verdict, with the
+ *                                   engine's early error, the reference's
+ *                                   amplification and why the horizon is there
+ *         "horizon": {"t": s | null, "early_error": rad, "early_until": s,
+ *                     "amplification": G there (null: a nudged run ended),
+ *                     "nudge": rad (its spread's and lying down's), "why": TEXT}
  *         "cause": TEXT,            an excess's dominant cause from attribution
  *                                   (geometry, time step, contact softness and
  *                                   slip, the rest, with its share), or ""

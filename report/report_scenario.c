@@ -115,6 +115,34 @@ static cJSON *event_json(const dv_engine_result *r) {
   return o;
 }
 
+/* the engine's horizon: its early error, the amplification there, why */
+static cJSON *horizon_json(const dv_engine_result *r) {
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddItemToObject(o, "t", dv_io_json_number(r->horizon));
+  cJSON_AddNumberToObject(o, "early_error", r->early_err);
+  cJSON_AddNumberToObject(o, "early_until", r->early_until);
+  cJSON_AddItemToObject(o, "amplification", dv_io_json_number(r->horizon_gain));
+  cJSON_AddNumberToObject(o, "nudge", r->nudge);
+  cJSON_AddStringToObject(o, "why", r->horizon_why);
+  return o;
+}
+
+/* how the reference amplifies a nudge of theta(0) (run_horizon.h) */
+static cJSON *amplification_json(const dv_amplification *a) {
+  cJSON *o = cJSON_CreateObject();
+  char words[160];
+  dv_run_amplification_words(a, words, sizeof words);
+  cJSON_AddNumberToObject(o, "nudge", a->nudge);
+  cJSON_AddStringToObject(o, "growth", a->growth);
+  cJSON_AddItemToObject(o, "exponent", dv_io_json_number(a->exponent));
+  cJSON_AddItemToObject(o, "efold_s", dv_io_json_number(a->efold));
+  cJSON_AddItemToObject(o, "factor", dv_io_json_number(a->factor));
+  cJSON_AddNumberToObject(o, "factor_t", a->factor_t);
+  cJSON_AddNumberToObject(o, "measured_to", a->measured_to);
+  cJSON_AddStringToObject(o, "words", words);
+  return o;
+}
+
 static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON *o = metrics_json(r->vs_ref.value);
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
@@ -142,6 +170,7 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
   cJSON_AddNumberToObject(o, "pointwise_end", r->pointwise_end);
   cJSON_AddStringToObject(o, "decided", r->decided);
+  cJSON_AddItemToObject(o, "horizon", horizon_json(r));
   cJSON_AddStringToObject(o, "cause", r->cause);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
   cJSON_AddStringToObject(o, "reference_note", r->reference_note);
@@ -172,6 +201,7 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON_AddStringToObject(ref, "detail", c->thin_stats.detail);
   cJSON_AddStringToObject(ref, "method", c->thin_stats.method);
   cJSON_AddItemToObject(ref, "horizon", dv_io_json_number(c->horizon));
+  cJSON_AddItemToObject(ref, "amplification", amplification_json(&c->amp));
   cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   cJSON_AddStringToObject(ref, "version", thin->version());
   cJSON_AddNumberToObject(ref, "wall_s", c->thin_wall_s);
@@ -207,6 +237,10 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
           dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",
           c->thin_stats.detail, c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   if (c->thin_stats.method[0]) fprintf(fp, "Reference method: %s.\n\n", c->thin_stats.method);
+  char words[160];
+  dv_run_amplification_words(&c->amp, words, sizeof words);
+  fprintf(fp, "Amplification: the reference nudged by %g rad leaves it %s.\n\n", c->amp.nudge,
+          words);
   fprintf(fp,
           "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
           "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
@@ -236,6 +270,7 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             "run), pointwise metrics to t = %g s\n\n",
             r->engine->name, dv_run_verdict_name(r->verdict), r->decided, r->vs_ref.t_window,
             100 * r->window_fraction, r->pointwise_end);
+    fprintf(fp, "Horizon: %s.\n\n", r->horizon_why);
     if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
     if (dv_scenario_derived(c->sc, r->engine->name)[0])
       fprintf(fp, "%s settings chosen: %s.\n\n", r->engine->name,
@@ -391,6 +426,7 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
     fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
             dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR],
             r->vs_ref.value[DV_PATH_MAX_ERR], r->pass ? "pass" : "FAIL");
+    fprintf(fp, "    decided by %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);
     if (r->event.judged && r->event.agrees) fprintf(fp, "    lies down: %s\n", r->event.note);
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);

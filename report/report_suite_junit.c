@@ -102,6 +102,11 @@ static void put_case_properties(FILE *fp, const cJSON *report, const cJSON *eng)
   put_metrics(fp, eng);
   put_number(fp, "window_end", item(eng, "window_end"));
   put_number(fp, "pointwise_end", item(eng, "pointwise_end"));
+  const cJSON *hz = item(eng, "horizon");
+  if (hz) {
+    put_number(fp, "horizon.early_error", item(hz, "early_error"));
+    put_number(fp, "horizon.amplification", item(hz, "amplification"));
+  }
   if (item(eng, "decided")) put_property(fp, "decided", text(eng, "decided"));
   fputs("      </properties>\n", fp);
 }
@@ -152,6 +157,11 @@ static void put_scenario(FILE *fp, const dvs_entry *e) {
   put_property(fp, "reference.outcome", text(ref, "outcome"));
   put_number(fp, "reference.t_end", item(ref, "t_end"));
   put_number(fp, "reference.horizon", item(ref, "horizon"));
+  const cJSON *amp = item(ref, "amplification");
+  if (amp) {
+    put_property(fp, "reference.amplification", text(amp, "words"));
+    put_number(fp, "reference.amplification.nudge", item(amp, "nudge"));
+  }
   fputs("    </properties>\n", fp);
   cJSON_ArrayForEach(eng, e->engines) {
     dv_report_escape_put(fp, "    <testcase classname=\"", e->name, 1, "\"");

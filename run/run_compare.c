@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "red_invariants.h"
+#include "run_turning.h"
 
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
   if (tr->n == tr->cap) {
@@ -75,6 +76,11 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
   out->value[DV_SLIP_MAX] = slip;
   out->value[DV_THETA_EXTREMA_ERR] = n ? fmax(fabs(lo[0] - lo[1]), fabs(hi[0] - hi[1])) : 0.0;
   out->value[DV_INVARIANT_DRIFT] = NAN; /* needs the disk: dv_run_invariant_drift */
+  double turning[3];
+  dv_run_turning_compare(e, ref, n ? out->t_window : -INFINITY, turning);
+  out->value[DV_THETA_TURNING_ERR] = turning[0];
+  out->value[DV_NUTATION_PERIOD_ERR] = turning[1];
+  out->value[DV_HEADING_PERIOD_ERR] = turning[2];
   free(pa);
   free(pb);
 }

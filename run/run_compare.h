@@ -15,6 +15,9 @@
  *   invariant_drift                max |f_i(t) - f_i(0)| of the engine's own states
  *                                  over the momentum scale sqrt(2 E0 (A + m r^2))
  *                                  (dv_run_invariant_drift; NAN from dv_run_compare)
+ *   theta_turning_err,             theta's turning points and the nutation period
+ *   nutation_period_err,           and heading advance, cycle by cycle
+ *   heading_period_err             (run_turning.h; NAN: nothing to compare)
  */
 #ifndef DV_COMPARE_H
 #define DV_COMPARE_H

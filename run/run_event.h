@@ -3,7 +3,7 @@
  * Every engine ends its run where the disk lies down (theta reaches
  * [engines.reduced] theta_limit or pi - theta_limit: dv_engine_stats
  * lay_down). When it does is timing-insensitive, and the reference nudged by
- * +- DV_HORIZON_NUDGE rad (run_horizon.h) bounds how far it may move: on the
+ * +- the engine's early error (run_horizon.h) bounds how far it may move: on the
  * side the engine lies down, the reference and its nudged runs that lie
  * down there give the times [from, to], widened by one output_dt. An engine
  * inside the compared window (before the reference's end and its validity

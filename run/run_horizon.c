@@ -1,31 +1,39 @@
-/* run_horizon: the reference's predictability horizon (run_horizon.h). */
+/* run_horizon: the reference's amplification and an engine's horizon (run_horizon.h). */
 #include "run_horizon.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "dv_reference.h"
 #include "run_trajectory.h"
 
-/* the nudges of theta(0) that start inside the lying-down limits (0: none) */
-static void nudges(const dv_scenario *sc, double nudge[2]) {
+/* the nudges of theta(0) by +- size that start inside the lying-down limits (0: none) */
+static void nudges(const dv_scenario *sc, double size, double nudge[2]) {
   const double lim = dv_reference_settings(sc)->theta_limit, th = sc->initial[RED_TH];
   for (int k = 0; k < 2; k++) {
-    const double t0 = th + (k ? 1 : -1) * DV_HORIZON_NUDGE;
+    const double t0 = th + (k ? 1 : -1) * size;
     nudge[k] = t0 > lim && t0 < M_PI - lim ? t0 - th : 0.0;
   }
   if (nudge[0] == 0.0 && nudge[1] == 0.0) /* the limits lie within a nudge of each side */
     nudge[th < M_PI_2] = 0.5 * (th < M_PI_2 ? M_PI - lim - th : lim - th);
 }
 
-int dv_run_horizon(const dv_scenario *sc, const dv_traj *ref, double *horizon,
-                   double spread[DV_NMETRICS], dv_run_end nudged[2], dv_error *err) {
+/* sc's reference nudged runs; each run's |theta - theta_ref| / |nudge| as a
+ * running max into gain (may be NULL; INFINITY past a run's end), spread
+ * (may be NULL) and ends */
+static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, double size, double *gain,
+                       double spread[DV_NMETRICS], dv_run_end ends[2], double *nudge_made,
+                       dv_error *err) {
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   double nudge[2];
-  nudges(sc, nudge);
-  *horizon = INFINITY;
-  for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
+  nudges(sc, size, nudge);
+  *nudge_made = fmax(fabs(nudge[0]), fabs(nudge[1]));
+  for (int m = 0; spread && m < DV_NMETRICS; m++) spread[m] = 0.0;
+  for (size_t i = 0; gain && i < ref->n; i++) gain[i] = 0.0;
   for (int k = 0; k < 2; k++) {
-    nudged[k] = (dv_run_end){.nudge = nudge[k]};
+    ends[k] = (dv_run_end){.nudge = nudge[k]};
     if (nudge[k] == 0.0) continue;
     dv_scenario moved_sc = *sc;
     moved_sc.initial[RED_TH] += nudge[k];
@@ -38,19 +46,134 @@ int dv_run_horizon(const dv_scenario *sc, const dv_traj *ref, double *horizon,
       return dv_fail(err, status, "the %s reference nudged by %+g rad (for the horizon): %s",
                      thin->name, nudge[k], cause.msg);
     }
-    nudged[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
-    size_t i = 0;
-    for (; i < tr.n && i < ref->n && fabs(tr.s[i].t - ref->s[i].t) < 1e-9; i++)
-      if (fabs(tr.s[i].y[RED_TH] - ref->s[i].y[RED_TH]) > DV_HORIZON_SPREAD) break;
-    /* the first sample past the spread, or where the nudged run ended first */
-    if (i < ref->n && i < tr.n)
-      *horizon = fmin(*horizon, tr.s[i].t);
-    else if (i < ref->n && i > 0)
-      *horizon = fmin(*horizon, tr.s[i - 1].t);
-    dv_metrics moved;
-    dv_run_compare(&tr, ref, INFINITY, &moved);
-    for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
+    ends[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
+    double run_max = 0.0;
+    for (size_t i = 0; gain && i < ref->n; i++) {
+      const int shared = i < tr.n && fabs(tr.s[i].t - ref->s[i].t) < 1e-9;
+      if (shared)
+        run_max = fmax(run_max, fabs(tr.s[i].y[RED_TH] - ref->s[i].y[RED_TH]) / fabs(nudge[k]));
+      gain[i] = fmax(gain[i], shared ? run_max : INFINITY); /* past its end: unpredictable */
+    }
+    if (spread) {
+      dv_metrics moved;
+      dv_run_compare(&tr, ref, INFINITY, &moved);
+      for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
+    }
     dv_run_traj_free(&tr);
   }
   return DV_OK;
+}
+
+int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, double size,
+                         double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err) {
+  double made;
+  return nudged_runs(sc, ref, size, NULL, spread, ends, &made, err);
+}
+
+/* least-squares slope of y on x and its residual sum of squares */
+static double fit(const double *x, const double *y, size_t n, double *rss) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (size_t i = 0; i < n; i++) {
+    sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  }
+  const double den = n * sxx - sx * sx, slope = den > 0 ? (n * sxy - sx * sy) / den : NAN;
+  const double icpt = (sy - slope * sx) / n;
+  *rss = 0.0;
+  for (size_t i = 0; i < n; i++) *rss += pow(y[i] - icpt - slope * x[i], 2);
+  return slope;
+}
+
+/* the growth's shape: ln G against ln t (a power of t) and against t (an
+ * exponential), over the samples where G rises to a new maximum (the
+ * growth, not the plateaus between), G >= 2 and nudge * G is below the
+ * spread; the better fit names it */
+static void classify(dv_amplification *a) {
+  size_t n = 0, last = 0;
+  double *lt = malloc((a->n ? a->n : 1) * sizeof *lt), *lg = malloc((a->n ? a->n : 1) * sizeof *lg);
+  double *tt = malloc((a->n ? a->n : 1) * sizeof *tt);
+  for (size_t i = 1; lt && lg && tt && i < a->n && a->t[i] <= a->measured_to; i++) {
+    if (a->gain[i] * a->nudge >= DV_HORIZON_SPREAD || !isfinite(a->gain[i])) break;
+    if (a->gain[i] >= 2.0 && a->gain[i] > 1.001 * a->gain[i - 1] && a->t[i] > 0.0) {
+      tt[n] = a->t[i];
+      lt[n] = log(a->t[i]);
+      lg[n++] = log(a->gain[i]);
+      last = i;
+    }
+  }
+  a->exponent = a->efold = NAN;
+  if (n < 3) {
+    snprintf(a->growth, sizeof a->growth, "%s", n ? "too short" : "bounded");
+  } else {
+    double rss_pow, rss_exp;
+    a->exponent = fit(lt, lg, n, &rss_pow);
+    const double rate = fit(tt, lg, n, &rss_exp);
+    a->efold = rate > 0 ? 1.0 / rate : NAN;
+    snprintf(a->growth, sizeof a->growth, "%s",
+             rss_exp < rss_pow                 ? "exponential"
+             : fabs(a->exponent - 1.0) < 0.5 ? "linear"
+                                             : "power");
+    a->factor = a->gain[last];
+    a->factor_t = a->t[last];
+  }
+  free(lt);
+  free(lg);
+  free(tt);
+}
+
+int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplification *a,
+                         double spread[DV_NMETRICS], dv_error *err) {
+  memset(a, 0, sizeof *a);
+  a->n = ref->n;
+  a->t = malloc((ref->n ? ref->n : 1) * sizeof *a->t);
+  a->gain = malloc((ref->n ? ref->n : 1) * sizeof *a->gain);
+  if (!a->t || !a->gain) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
+  for (size_t i = 0; i < ref->n; i++) a->t[i] = ref->s[i].t;
+  const int status =
+      nudged_runs(sc, ref, DV_HORIZON_NUDGE, a->gain, spread, a->ends, &a->nudge, err);
+  if (status < 0) return status;
+  a->measured_to = ref->n ? ref->s[ref->n - 1].t : 0.0;
+  a->factor = 1.0;
+  for (size_t i = 0; i < ref->n; i++) {
+    if (!isfinite(a->gain[i])) {
+      a->measured_to = i ? a->t[i - 1] : 0.0;
+      break;
+    }
+    a->factor = a->gain[i];
+    a->factor_t = a->t[i];
+  }
+  a->horizon = dv_run_horizon_of(a, a->nudge, 0.0, DV_HORIZON_SPREAD, NULL);
+  classify(a);
+  return DV_OK;
+}
+
+void dv_run_amplification_free(dv_amplification *a) {
+  if (!a) return;
+  free(a->t);
+  free(a->gain);
+  a->t = a->gain = NULL;
+  a->n = 0;
+}
+
+double dv_run_horizon_of(const dv_amplification *a, double early_err, double t_early,
+                         double limit, double *gain) {
+  const double eps = fmax(early_err, a->nudge);
+  for (size_t i = 0; i < a->n; i++)
+    /* what the dynamics add to the early error: a bounded x1.4 adds little */
+    if (a->t[i] >= t_early && !(eps * (a->gain[i] - 1.0) < limit)) {
+      if (gain) *gain = a->gain[i];
+      return a->t[i];
+    }
+  if (gain) *gain = a->n ? a->gain[a->n - 1] : 1.0;
+  return INFINITY;
+}
+
+void dv_run_amplification_words(const dv_amplification *a, char *out, size_t size) {
+  if (!strcmp(a->growth, "exponential"))
+    snprintf(out, size, "exponential (e-folding every %.3g s), x%.3g by t = %g s", a->efold,
+             a->factor, a->factor_t);
+  else if (!strcmp(a->growth, "linear") || !strcmp(a->growth, "power"))
+    snprintf(out, size, "%s (like t^%.2f), x%.3g by t = %g s", a->growth, a->exponent, a->factor,
+             a->factor_t);
+  else
+    snprintf(out, size, "%s, x%.3g by t = %g s", a->growth, a->factor, a->factor_t);
 }

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "run_turning.h"
+
 double dv_run_distance_rolled(const dv_traj *tr, double t_end) {
   double d = 0.0;
   for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++)
@@ -36,6 +38,7 @@ void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref
       case DV_THETA_MAX_ERR:
       case DV_THETA_RMS_ERR:
       case DV_THETA_EXTREMA_ERR:
+      case DV_THETA_TURNING_ERR:
         l->value = DV_LIMIT_THETA;
         snprintf(l->why, sizeof l->why, "default: %g rad", DV_LIMIT_THETA);
         break;
@@ -55,6 +58,20 @@ void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref
         l->value = DV_LIMIT_INVARIANTS;
         snprintf(l->why, sizeof l->why, "default: %g%% of the momentum scale",
                  100 * DV_LIMIT_INVARIANTS);
+        break;
+      case DV_NUTATION_PERIOD_ERR: { /* a timing error that moves theta by its limit */
+        const double rate = dv_run_theta_rate_max(ref, t_end);
+        l->value = rate > 0.0 ? DV_LIMIT_THETA / rate : INFINITY;
+        snprintf(l->why, sizeof l->why,
+                 "default: %g rad over the reference's fastest theta rate, %.3g rad/s",
+                 DV_LIMIT_THETA, rate);
+        break;
+      }
+      case DV_HEADING_PERIOD_ERR:
+        l->value = DV_LIMIT_HEADING;
+        snprintf(l->why, sizeof l->why,
+                 "default: %g rad, turns the path by %g%% of the distance rolled", DV_LIMIT_HEADING,
+                 100 * DV_LIMIT_PATH);
         break;
       case DV_SLIP_MAX:
         l->value = DV_LIMIT_SLIP * speed;

@@ -3,9 +3,14 @@
  * A limit comes from the scenario ([tolerance.ENGINE], then [tolerance]) or,
  * where it gives none, from a rule grounded in the scene (README, "Verdicts"):
  *   theta_max_err, theta_rms_err,   DV_LIMIT_THETA rad: the default accuracy
- *   theta_extrema_err
- *                                   of the engines' derived settings, 1e-3,
- *                                   with a margin of 10
+ *   theta_extrema_err,              of the engines' derived settings, 1e-3,
+ *   theta_turning_err               with a margin of 10
+ *   nutation_period_err             DV_LIMIT_THETA over the reference's largest
+ *                                   |theta_dot|: a period off by that moves
+ *                                   theta by at most the theta limit
+ *   heading_period_err              DV_LIMIT_HEADING rad: a heading off by it
+ *                                   moves a point rolled L away by 1% of L,
+ *                                   the path limit
  *   path_max_err, path_rms_err,     DV_LIMIT_PATH of the distance the
  *   path_hausdorff                  reference's contact point travels over
  *                                   the compared window, and at least that
@@ -27,6 +32,7 @@
 #define DV_LIMIT_ENERGY 1e-2     /* of the initial energy */
 #define DV_LIMIT_SLIP 1e-2       /* of the speed scale */
 #define DV_LIMIT_INVARIANTS 1e-2 /* of the momentum scale sqrt(2 E0 (A + m r^2)) */
+#define DV_LIMIT_HEADING 1e-2    /* rad a period: moves a point rolled L away by 1% of L */
 
 typedef struct dv_limit {
   double value;  /* the metric passes when value <= this */

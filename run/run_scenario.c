@@ -42,13 +42,54 @@ int dv_run_metric_pointwise(dv_metric_id metric) {
          metric == DV_PATH_RMS_ERR;
 }
 
-/* the pointwise metrics up to the horizon, when it ends before the window */
+/* the engine's largest theta error against ref over its early window: the
+ * scene's shortest time scale (engine_scene.h), at least one output_dt */
+static double early_error(const dv_comparison *c, const dv_traj *eng, const dv_traj *ref,
+                          double *until) {
+  const double t0 = ref->n ? ref->s[0].t : 0.0;
+  *until = t0 + fmax(c->min_window, c->sc->output_dt);
+  double e = 0.0;
+  for (size_t i = 0; i < eng->n && i < ref->n && ref->s[i].t <= *until + 1e-12; i++)
+    if (fabs(eng->s[i].t - ref->s[i].t) < 1e-9)
+      e = fmax(e, fabs(eng->s[i].y[RED_TH] - ref->s[i].y[RED_TH]));
+  return e;
+}
+
+/* the engine's horizon from its early error and the reference's amplification */
+static void find_horizon(const dv_comparison *c, const dv_traj *ref, dv_engine_result *r) {
+  const dv_amplification *a = &c->amp;
+  r->early_err = early_error(c, &r->traj, ref, &r->early_until);
+  r->horizon = dv_run_horizon_of(a, r->early_err, r->early_until, DV_HORIZON_SPREAD, &r->horizon_gain);
+  r->nudge = fmax(r->early_err, a->nudge);
+  char growth[120];
+  dv_run_amplification_words(a, growth, sizeof growth);
+  const char *floor = r->early_err < a->nudge ? " (below the nudge: taken as the nudge)" : "";
+  if (isfinite(r->horizon) && !isfinite(r->horizon_gain))
+    snprintf(r->horizon_why, sizeof r->horizon_why,
+             "a nudged reference run (a %g rad nudge) ended at t = %g s, before the reference: past "
+             "it nothing measures the amplification; amplification %s",
+             a->nudge, a->measured_to, growth);
+  else if (isfinite(r->horizon))
+    snprintf(r->horizon_why, sizeof r->horizon_why,
+             "its early error %.2g rad (to t = %g s)%s, amplified x%.3g as the reference amplifies "
+             "a %g rad nudge, has grown by %g rad at t = %g s; amplification %s",
+             r->early_err, r->early_until, floor, r->horizon_gain, a->nudge, DV_HORIZON_SPREAD,
+             r->horizon, growth);
+  else
+    snprintf(r->horizon_why, sizeof r->horizon_why,
+             "its early error %.2g rad (to t = %g s)%s, amplified as the reference amplifies a %g "
+             "rad nudge (%s), grows by less than %g rad to t = %g s",
+             r->early_err, r->early_until, floor, a->nudge, growth, DV_HORIZON_SPREAD,
+             a->measured_to);
+}
+
+/* the pointwise metrics up to the engine's horizon, when it ends before the window */
 static void pointwise_to_horizon(const dv_traj *eng, const dv_traj *ref, double ref_end,
-                                 double horizon, dv_engine_result *r) {
+                                 dv_engine_result *r) {
   r->pointwise_end = r->vs_ref.t_window;
-  if (!(horizon < r->vs_ref.t_window)) return;
+  if (!(r->horizon < r->vs_ref.t_window)) return;
   dv_metrics early;
-  dv_run_compare(eng, ref, fmin(ref_end, horizon), &early);
+  dv_run_compare(eng, ref, fmin(ref_end, r->horizon), &early);
   for (int m = 0; m < DV_NMETRICS; m++)
     if (dv_run_metric_pointwise((dv_metric_id)m)) r->vs_ref.value[m] = early.value[m];
   r->pointwise_end = early.t_window;
@@ -61,13 +102,12 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
     if (!(r->vs_ref.value[m] <= r->tolerance[m]) && !isnan(r->tolerance[m]))
       failed[!dv_run_metric_pointwise((dv_metric_id)m)] = 1;
   const int whole = r->pointwise_end >= r->vs_ref.t_window - 0.5 * sc->output_dt;
-  char part[96];
+  char part[480];
   if (whole)
-    snprintf(part, sizeof part, "pointwise over the whole window");
+    snprintf(part, sizeof part, "pointwise over the whole window: %s", r->horizon_why);
   else
-    snprintf(part, sizeof part,
-             "pointwise to the reference's horizon t = %g s, timing-insensitive after",
-             r->pointwise_end);
+    snprintf(part, sizeof part, "pointwise to its horizon t = %g s, timing-insensitive after: %s",
+             r->pointwise_end, r->horizon_why);
   if (r->verdict == DV_VERDICT_NOT_JUDGED || r->verdict == DV_VERDICT_OUTSIDE_VALIDITY ||
       dv_run_verdict_failed(r->verdict))
     snprintf(r->decided, sizeof r->decided, "the run: %s", dv_run_verdict_name(r->verdict));
@@ -101,7 +141,7 @@ static void judge_event(const dv_comparison *c, const dv_traj *ref, const dv_eng
                         double valid_end, dv_engine_result *r) {
   const dv_run_end eng = {0.0, 1, r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0, r->stats.lay_down};
   const dv_run_end own = {0.0, 1, ref->n ? ref->s[ref->n - 1].t : 0.0, ref_st->lay_down};
-  dv_run_event_judge(c->sc, r->engine->name, &eng, &own, c->nudged, valid_end, &r->event);
+  dv_run_event_judge(c->sc, r->engine->name, &eng, &own, r->nudged, valid_end, &r->event);
   if (r->event.agrees) return;
   r->verdict = r->stats.lay_down ? DV_VERDICT_ENDED_BY_EVENT : DV_VERDICT_EXCEEDS;
   add_failure(r, "%s: %s: %s: %s", c->sc->name, r->engine->name, r->event.why, r->event.note);
@@ -210,9 +250,10 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   }
   c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
   const double t_horizon = dv_clock_now();
-  status = dv_run_horizon(ref_sc, &c->thin, &c->horizon, c->spread, c->nudged, err);
+  status = dv_run_amplification(ref_sc, &c->thin, &c->amp, c->spread, err);
   c->horizon_wall_s = dv_clock_now() - t_horizon;
   if (status < 0) return status; /* err names the nudged run */
+  c->horizon = c->amp.horizon;
   for (size_t i = 0; i < n; i++) {
     dv_engine_result *r = &c->r[c->n++];
     dv_error e = {{0}};
@@ -256,7 +297,16 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       r->vs_ref = r->vs_thin;
     else
       dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
-    pointwise_to_horizon(&r->traj, ref, ref_end, c->horizon, r);
+    find_horizon(c, ref, r);
+    memcpy(r->spread, c->spread, sizeof r->spread);
+    memcpy(r->nudged, c->amp.ends, sizeof r->nudged);
+    if (r->nudge > c->amp.nudge) { /* its own nudge: the spread and the lying down it allows */
+      const double t_spread = dv_clock_now();
+      status = dv_run_nudged_spread(ref_sc, &c->thin, r->nudge, r->spread, r->nudged, err);
+      c->horizon_wall_s += dv_clock_now() - t_spread;
+      if (status < 0) return status;
+    }
+    pointwise_to_horizon(&r->traj, ref, ref_end, r);
     r->vs_ref.value[DV_INVARIANT_DRIFT] = r->vs_thin.value[DV_INVARIANT_DRIFT] =
         dv_run_invariant_drift(&sc->disk, &r->traj, r->vs_ref.t_window);
     dv_limit limits[DV_NMETRICS];
@@ -265,13 +315,23 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       r->tolerance[m] = limits[m].value;
       memcpy(r->limit_why[m], limits[m].why, sizeof r->limit_why[m]);
       /* past the horizon: a measure the nudge alone moves by half its limit is unpredictable */
-      if (!dv_run_metric_pointwise((dv_metric_id)m) && c->spread[m] > 0.5 * r->tolerance[m]) {
+      if (!dv_run_metric_pointwise((dv_metric_id)m) && r->spread[m] > 0.5 * r->tolerance[m]) {
         r->tolerance[m] = NAN;
         snprintf(r->limit_why[m], sizeof r->limit_why[m],
-                 "not judged: the reference nudged by %g rad moves it by %.3g", DV_HORIZON_NUDGE,
-                 c->spread[m]);
+                 "not judged: the reference nudged by its early error %.2g rad moves it by %.3g",
+                 r->nudge, r->spread[m]);
       }
     }
+    /* turning points and periods: NAN where there is nothing to compare */
+    static const dv_metric_id cycles[] = {DV_THETA_TURNING_ERR, DV_NUTATION_PERIOD_ERR,
+                                          DV_HEADING_PERIOD_ERR};
+    for (size_t k = 0; k < sizeof cycles / sizeof cycles[0]; k++)
+      if (isnan(r->vs_ref.value[cycles[k]])) {
+        r->tolerance[cycles[k]] = NAN;
+        snprintf(r->limit_why[cycles[k]], sizeof r->limit_why[cycles[k]], "not judged: %s",
+                 k ? "the reference completes no nutation period in the window"
+                   : "neither run turns (a swing of 1e-3 rad) in the window");
+      }
     if (ref != &c->thin) { /* f1, f2 are integrals of the thin disk only */
       r->tolerance[DV_INVARIANT_DRIFT] = NAN;
       snprintf(r->limit_why[DV_INVARIANT_DRIFT], sizeof r->limit_why[DV_INVARIANT_DRIFT],
@@ -290,6 +350,7 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
 void dv_run_comparison_free(dv_comparison *c) {
   if (!c) return;
   dv_run_traj_free(&c->thin);
+  dv_run_amplification_free(&c->amp);
   for (size_t i = 0; i < c->n; i++) {
     dv_run_traj_free(&c->r[i].traj);
     dv_run_traj_free(&c->r[i].matched);

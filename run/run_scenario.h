@@ -6,11 +6,13 @@
  * case, with the thin disk. The compared window ends where the reference
  * ends (its event or validity limit). Every metric has a limit
  * (run_limits.h). The pointwise metrics (theta_max_err, theta_rms_err,
- * path_max_err, path_rms_err) cover the window up to the reference's
- * predictability horizon (run_horizon.h); the timing-insensitive ones
+ * path_max_err, path_rms_err) cover the window up to the engine's horizon:
+ * where its early error, amplified as the reference amplifies a nudge,
+ * reaches the theta limit (run_horizon.h); the timing-insensitive ones
  * (path_hausdorff, theta_extrema_err, energy_drift, invariant_drift,
- * slip_max) the whole window. An engine's lying down is judged against the
- * reference's and the nudged runs' (run_event.h).
+ * slip_max) the whole window, unless the reference nudged by the engine's
+ * early error moves them by half their limit. An engine's lying down is
+ * judged against the reference's and those nudged runs' (run_event.h).
  *
  * Not judged, never a pass: an engine that is the reference it would be
  * compared with (the same engine on the same scenario: it measures nothing),
@@ -23,6 +25,7 @@
 
 #include "run_compare.h"
 #include "run_event.h"
+#include "run_horizon.h"
 #include "run_verdict.h"
 #include "dv_engine.h"
 #include "scenario.h"
@@ -49,7 +52,15 @@ typedef struct dv_engine_result {
   char limit_why[DV_NMETRICS][112]; /* where each limit came from */
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
-  char decided[160];                /* which part decided the verdict, and why */
+  double early_err;                 /* rad: its largest theta error to early_until (run_horizon.h) */
+  double early_until;               /* s: the scene's shortest time scale, at least output_dt */
+  double horizon;                   /* s: where early_err amplified reaches the limit (INFINITY) */
+  double horizon_gain;              /* the reference's amplification there (at the end: INFINITY) */
+  double nudge;                     /* rad: its spread's and event's nudge, max(early_err, ...) */
+  double spread[DV_NMETRICS];       /* what that nudge of the reference moves each metric by */
+  dv_run_end nudged[2];             /* how those nudged reference runs ended */
+  char horizon_why[400];            /* why the horizon is where it is, in words */
+  char decided[560];                /* which part decided the verdict, and why */
   char cause[200];                  /* an excess's cause, from attribution ("": unknown) */
   char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
@@ -64,11 +75,11 @@ typedef struct dv_comparison {
   dv_traj thin; /* the thin-disk reference */
   dv_engine_stats thin_stats;
   double thin_wall_s;         /* wall-clock time of the thin reference's run, s */
-  double horizon_wall_s;      /* of the nudged reference runs that find the horizon, s */
+  double horizon_wall_s;      /* of the nudged reference runs (amplification, spreads), s */
   double thin_valid_end;      /* where rolling stops describing the physics, s */
-  double horizon;             /* s: the reference is predictable up to here (run_horizon.h) */
-  double spread[DV_NMETRICS]; /* what a nudge of the reference alone moves each metric by */
-  dv_run_end nudged[2];       /* how the nudged reference runs ended */
+  dv_amplification amp;       /* how the reference amplifies a DV_HORIZON_NUDGE (run_horizon.h) */
+  double horizon;             /* s: amp.horizon, an engine's latest (its early error >= the nudge) */
+  double spread[DV_NMETRICS]; /* what amp's nudge of the reference moves each metric by */
   double min_window;          /* s: the scene's shortest time scale (no shorter window judged) */
   size_t n;
   dv_engine_result r[DV_MAX_ENGINES];

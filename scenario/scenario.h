@@ -57,6 +57,9 @@ typedef enum dv_metric_id {
   DV_SLIP_MAX,
   DV_THETA_EXTREMA_ERR, /* the lowest and highest theta, each against the reference's */
   DV_INVARIANT_DRIFT,   /* f1, f2 along the engine's own states, of the momentum scale */
+  DV_THETA_TURNING_ERR, /* theta at the k-th maximum and minimum, each against the reference's */
+  DV_NUTATION_PERIOD_ERR, /* the k-th nutation period against the reference's, s */
+  DV_HEADING_PERIOD_ERR,  /* the heading advance over the k-th period against the reference's */
   DV_NMETRICS
 } dv_metric_id;
 

@@ -1,0 +1,41 @@
+/* run_turning: theta's turning points and the nutation period, cycle by cycle.
+ *
+ * The reduced motion nutates: theta swings between two turning points of the
+ * effective potential, every period the same (README "Periodic motion").
+ * These measures stay meaningful where a pointwise error measures timing:
+ *   theta_turning_err    the largest |theta at the engine's k-th maximum -
+ *                        theta at the reference's k-th maximum|, and the same
+ *                        for minima (rad); a turning point one run has and
+ *                        the other has not is compared with that other run's
+ *                        extreme of its kind over the window, unless it is
+ *                        the last and the other run, at the window's end, is
+ *                        still on its way to it
+ *   nutation_period_err  the largest |engine's k-th period - reference's k-th
+ *                        period| (s), a period being the time from one maximum
+ *                        (or minimum) to the next; INFINITY where the reference
+ *                        completes a period and the engine none
+ *   heading_period_err   the same for the heading advance over each period,
+ *                        phi(t_{k+1}) - phi(t_k) (rad)
+ * A turning point is where theta_dot changes sign between two samples, placed
+ * by the cubic Hermite interpolant of theta and theta_dot (of phi and phi_dot
+ * for the heading); a swing smaller than DV_TURNING_MIN_SWING is not one.
+ * NAN (not judged, run_scenario.c says why) where there is nothing to
+ * compare: neither run turns, or the reference completes no period.
+ */
+#ifndef DV_RUN_TURNING_H
+#define DV_RUN_TURNING_H
+
+#include "run_compare.h"
+
+/* rad: a tenth of the default theta limit; smaller swings (contact noise on
+ * a steady circle: measured up to 2.4e-5 rad, the early errors) are not turns */
+#define DV_TURNING_MIN_SWING 1e-3
+
+/* the three measures of e against ref over samples up to t_end into out:
+ * theta_turning_err, nutation_period_err, heading_period_err */
+void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]);
+
+/* the largest |theta_dot| of tr up to t_end (rad/s) */
+double dv_run_theta_rate_max(const dv_traj *tr, double t_end);
+
+#endif
