@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "io_file.h"
 #include "io_lock.h"
@@ -73,4 +74,49 @@ int dv_io_within(const char *path, const char *dir) {
   if (!realpath(dir, d) || (!realpath(path, p) && dv_io_canonical(path, p, sizeof p))) return 0;
   const size_t n = strlen(d);
   return !strncmp(p, d, n) && (p[n] == '/' || p[n] == '\0');
+}
+
+int dv_io_dir_begin(char *tmp, size_t size, const char *parent, dv_error *err) {
+  if (dv_io_temp_template(tmp, size, parent, err)) return DV_EINPUT;
+  dv_io_temp_remove_stale(parent); /* what runs killed while writing here left */
+  if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno));
+  dv_io_temp_track(tmp);
+  const mode_t mask = umask(0);
+  umask(mask);
+  chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */
+  if (dv_io_mark(tmp, err)) return dv_io_dir_discard(tmp), DV_ESYSTEM;
+  return DV_OK;
+}
+
+void dv_io_dir_discard(const char *tmp) {
+  dv_io_remove_tree(tmp);
+  dv_io_temp_forget(tmp);
+}
+
+/* move the marked directory final aside, into a new temporary directory of
+ * parent whose path goes into old; 0, or -1 when there is none */
+static int set_aside(const char *final, const char *parent, char *old, size_t size) {
+  if (!dv_io_owned(final) || dv_io_temp_template(old, size, parent, NULL) || !mkdtemp(old))
+    return -1;
+  if (rename(final, old) == 0) return 0; /* a directory replaces an empty one */
+  rmdir(old);
+  return -1;
+}
+
+int dv_io_dir_install(const char *tmp, const char *final, const char *parent, dv_error *err) {
+  char old[PATH_MAX];
+  if (dv_io_check_replaceable(final, err)) {
+    dv_io_dir_discard(tmp);
+    return DV_EINPUT;
+  }
+  const int had_old = set_aside(final, parent, old, sizeof old) == 0;
+  if (rename(tmp, final)) {
+    dv_fail(err, DV_ESYSTEM, "%s: %s", final, strerror(errno));
+    if (had_old) rename(old, final);
+    dv_io_dir_discard(tmp);
+    return DV_ESYSTEM;
+  }
+  dv_io_temp_forget(tmp);
+  if (had_old) dv_io_remove_tree(old);
+  return DV_OK;
 }

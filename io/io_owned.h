@@ -11,6 +11,8 @@
 #ifndef DV_IO_OWNED_H
 #define DV_IO_OWNED_H
 
+#include <stddef.h>
+
 #include "dv_error.h"
 
 #define DV_IO_MARK ".diskval-report"
@@ -33,5 +35,17 @@ int dv_io_own_dir(const char *dir, dv_error *err);
 
 /* path lies inside dir (both resolved; dir need not exist: then no) */
 int dv_io_within(const char *path, const char *dir);
+
+/* a new temporary directory of parent (stale ones removed first), marked
+ * and tracked for removal on a signal; its path in tmp */
+int dv_io_dir_begin(char *tmp, size_t size, const char *parent, dv_error *err);
+
+/* remove tmp (from dv_io_dir_begin) and stop tracking it */
+void dv_io_dir_discard(const char *tmp);
+
+/* put the complete directory tmp in place of final (in parent): a marked
+ * final is set aside, tmp renamed in, the old one removed; anything else at
+ * final is an error, and on failure tmp is removed and the old one kept */
+int dv_io_dir_install(const char *tmp, const char *final, const char *parent, dv_error *err);
 
 #endif

@@ -17,50 +17,22 @@ int dv_report_dir_begin(char *tmp, size_t size, const char *out_dir, const char 
                         dv_error *err) {
   char final[1200];
   if (dv_io_path(final, sizeof final, err, "%s/%s", out_dir, name) ||
-      dv_io_check_replaceable(final, err) || dv_io_temp_template(tmp, size, out_dir, err))
+      dv_io_check_replaceable(final, err))
     return DV_EINPUT;
-  dv_io_temp_remove_stale(out_dir); /* what runs killed while writing here left */
-  if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno));
-  dv_io_temp_track(tmp);
-  const mode_t mask = umask(0);
-  umask(mask);
-  chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */
-  if (dv_io_mark(tmp, err)) return dv_report_dir_discard(tmp), DV_ESYSTEM;
-  return DV_OK;
+  return dv_io_dir_begin(tmp, size, out_dir, err);
 }
 
 void dv_report_dir_discard(const char *tmp) {
-  dv_io_remove_tree(tmp);
-  dv_io_temp_forget(tmp);
-}
-
-/* move the report at final aside, into a new temporary directory of
- * out_dir whose path goes into old; 0, or -1 when there is none */
-static int set_aside(const char *final, const char *out_dir, char *old, size_t size) {
-  if (!dv_io_owned(final) || dv_io_temp_template(old, size, out_dir, NULL) || !mkdtemp(old))
-    return -1;
-  if (rename(final, old) == 0) return 0; /* a directory replaces an empty one */
-  rmdir(old);
-  return -1;
+  dv_io_dir_discard(tmp);
 }
 
 int dv_report_dir_install(const char *tmp, const char *out_dir, const char *name, dv_error *err) {
-  char final[1200], old[1300];
-  if (dv_io_path(final, sizeof final, err, "%s/%s", out_dir, name) ||
-      dv_io_check_replaceable(final, err)) {
-    dv_report_dir_discard(tmp);
+  char final[1200];
+  if (dv_io_path(final, sizeof final, err, "%s/%s", out_dir, name)) {
+    dv_io_dir_discard(tmp);
     return DV_EINPUT;
   }
-  const int had_old = set_aside(final, out_dir, old, sizeof old) == 0;
-  if (rename(tmp, final)) {
-    dv_fail(err, DV_ESYSTEM, "%s: %s", final, strerror(errno));
-    if (had_old) rename(old, final);
-    dv_report_dir_discard(tmp);
-    return DV_ESYSTEM;
-  }
-  dv_io_temp_forget(tmp);
-  if (had_old) dv_io_remove_tree(old);
-  return DV_OK;
+  return dv_io_dir_install(tmp, final, out_dir, err);
 }
 
 /* path (an input of the run) lies inside dir, which the run replaces */
