@@ -10,10 +10,12 @@
  *     "duration": s, "output_dt": s,
  *     "reference": {"engine": "reduced", "integrator": NAME, "rtol": x,
  *                   "outcome": "completed"|"event", "detail": TEXT, "t_end": s,
- *                   "version": TEXT, "horizon": s | null: where a 1e-6 rad nudge
- *                   of theta(0) has grown by 0.01 rad, the latest any engine's
- *                   horizon is (null: never, to the end),
- *                   "amplification": {"nudge": rad, "growth": "linear"|"power"|
+ *                   "version": TEXT, "horizon": s | null: where nudges of 1e-6
+ *                   (rad in theta, of the rate scale in each rate) have grown
+ *                   by 0.01 rad, the latest any engine's horizon is (null:
+ *                   never, to the end),
+ *                   "amplification": {"nudge": rad, "rate_nudge": rad/s,
+ *                                     "growth": "linear"|"power"|
  *                                     "exponential"|"bounded"|"too short",
  *                                     "exponent", "efold_s", "factor": G,
  *                                     "factor_t": s, "measured_to": s,
@@ -52,8 +54,10 @@
  *                                   engine's early error, the reference's
  *                                   amplification and why the horizon is there
  *         "horizon": {"t": s | null, "early_error": rad, "early_until": s,
+ *                     "early_errors": {"theta": rad, "theta_dot", "phi_dot",
+ *                                      "psi_dot": rad/s},
  *                     "amplification": G there (null: a nudged run ended),
- *                     "nudge": rad (its spread's and lying down's), "why": TEXT}
+ *                     "nudge": rad (its lying down's), "why": TEXT}
  *         "cause": TEXT,            an excess's dominant cause from attribution
  *                                   (geometry, time step, contact softness and
  *                                   slip, the rest, with its share), or ""

@@ -120,6 +120,9 @@ static cJSON *horizon_json(const dv_engine_result *r) {
   cJSON *o = cJSON_CreateObject();
   cJSON_AddItemToObject(o, "t", dv_io_json_number(r->horizon));
   cJSON_AddNumberToObject(o, "early_error", r->early_err);
+  cJSON *each = cJSON_AddObjectToObject(o, "early_errors");
+  static const char *const dirs[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot", "psi_dot"};
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) cJSON_AddNumberToObject(each, dirs[j], r->early_of[j]);
   cJSON_AddNumberToObject(o, "early_until", r->early_until);
   cJSON_AddItemToObject(o, "amplification", dv_io_json_number(r->horizon_gain));
   cJSON_AddNumberToObject(o, "nudge", r->nudge);
@@ -127,12 +130,13 @@ static cJSON *horizon_json(const dv_engine_result *r) {
   return o;
 }
 
-/* how the reference amplifies a nudge of theta(0) (run_horizon.h) */
+/* how the reference amplifies nudges of its initial state (run_horizon.h) */
 static cJSON *amplification_json(const dv_amplification *a) {
   cJSON *o = cJSON_CreateObject();
   char words[160];
   dv_run_amplification_words(a, words, sizeof words);
   cJSON_AddNumberToObject(o, "nudge", a->nudge);
+  cJSON_AddNumberToObject(o, "rate_nudge", a->size[RED_VPH]);
   cJSON_AddStringToObject(o, "growth", a->growth);
   cJSON_AddItemToObject(o, "exponent", dv_io_json_number(a->exponent));
   cJSON_AddItemToObject(o, "efold_s", dv_io_json_number(a->efold));
@@ -239,8 +243,10 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   if (c->thin_stats.method[0]) fprintf(fp, "Reference method: %s.\n\n", c->thin_stats.method);
   char words[160];
   dv_run_amplification_words(&c->amp, words, sizeof words);
-  fprintf(fp, "Amplification: the reference nudged by %g rad leaves it %s.\n\n", c->amp.nudge,
-          words);
+  fprintf(fp,
+          "Amplification: the reference nudged by %g rad in theta and by %g rad/s in each rate "
+          "leaves it %s (per %g of a nudge).\n\n",
+          c->amp.nudge, c->amp.size[RED_VPH], words, DV_HORIZON_NUDGE);
   fprintf(fp,
           "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
           "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "

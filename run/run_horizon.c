@@ -10,7 +10,7 @@
 #include "run_trajectory.h"
 
 /* the nudges of theta(0) by +- size that start inside the lying-down limits (0: none) */
-static void nudges(const dv_scenario *sc, double size, double nudge[2]) {
+static void theta_nudges(const dv_scenario *sc, double size, double nudge[2]) {
   const double lim = dv_reference_settings(sc)->theta_limit, th = sc->initial[RED_TH];
   for (int k = 0; k < 2; k++) {
     const double t0 = th + (k ? 1 : -1) * size;
@@ -20,33 +20,34 @@ static void nudges(const dv_scenario *sc, double size, double nudge[2]) {
     nudge[th < M_PI_2] = 0.5 * (th < M_PI_2 ? M_PI - lim - th : lim - th);
 }
 
-/* sc's reference nudged runs; each run's |theta - theta_ref| / |nudge| as a
- * running max into gain (may be NULL; INFINITY past a run's end), spread
- * (may be NULL) and ends */
-static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, double size, double *gain,
-                       double spread[DV_NMETRICS], dv_run_end ends[2], double *nudge_made,
-                       dv_error *err) {
+/* sc's reference run from direction dir nudged by +- size; each run's
+ * |theta - theta_ref| / |nudge| as a running max into gain (may be NULL;
+ * INFINITY past a run's end), spread (each metric's largest value, not
+ * reset) and, for theta, ends (may be NULL) */
+static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, double size,
+                       double *gain, double spread[DV_NMETRICS], dv_run_end ends[2],
+                       double *nudge_made, dv_error *err) {
+  static const char *const names[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot", "psi_dot"};
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
-  double nudge[2];
-  nudges(sc, size, nudge);
+  double nudge[2] = {-size, size};
+  if (dir == RED_TH) theta_nudges(sc, size, nudge);
   *nudge_made = fmax(fabs(nudge[0]), fabs(nudge[1]));
-  for (int m = 0; spread && m < DV_NMETRICS; m++) spread[m] = 0.0;
   for (size_t i = 0; gain && i < ref->n; i++) gain[i] = 0.0;
   for (int k = 0; k < 2; k++) {
-    ends[k] = (dv_run_end){.nudge = nudge[k]};
+    if (ends) ends[k] = (dv_run_end){.nudge = nudge[k]};
     if (nudge[k] == 0.0) continue;
     dv_scenario moved_sc = *sc;
-    moved_sc.initial[RED_TH] += nudge[k];
+    moved_sc.initial[dir] += nudge[k];
     dv_traj tr = {0};
     dv_engine_stats st;
     const int status = dv_run_collect(thin, &moved_sc, dv_run_traj_keep, &tr, &st, err);
     if (status < 0) {
       dv_error cause = *err;
       dv_run_traj_free(&tr);
-      return dv_fail(err, status, "the %s reference nudged by %+g rad (for the horizon): %s",
-                     thin->name, nudge[k], cause.msg);
+      return dv_fail(err, status, "the %s reference with %s nudged by %+g (for the horizon): %s",
+                     thin->name, names[dir], nudge[k], cause.msg);
     }
-    ends[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
+    if (ends) ends[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
     double run_max = 0.0;
     for (size_t i = 0; gain && i < ref->n; i++) {
       const int shared = i < tr.n && fabs(tr.s[i].t - ref->s[i].t) < 1e-9;
@@ -54,20 +55,35 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, double size, d
         run_max = fmax(run_max, fabs(tr.s[i].y[RED_TH] - ref->s[i].y[RED_TH]) / fabs(nudge[k]));
       gain[i] = fmax(gain[i], shared ? run_max : INFINITY); /* past its end: unpredictable */
     }
-    if (spread) {
-      dv_metrics moved;
-      dv_run_compare(&tr, ref, INFINITY, &moved);
-      for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
-    }
+    dv_metrics moved;
+    dv_run_compare(&tr, ref, INFINITY, &moved);
+    for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
     dv_run_traj_free(&tr);
   }
   return DV_OK;
 }
 
-int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, double size,
-                         double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err) {
-  double made;
-  return nudged_runs(sc, ref, size, NULL, spread, ends, &made, err);
+void dv_run_floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+                         double e[DV_NUDGE_DIRS]) {
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) e[j] = fmax(early[j], a->size[j]);
+}
+
+int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
+                         const double e[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
+                         dv_run_end ends[2], dv_error *err) {
+  memcpy(ends, a->ends, sizeof a->ends);
+  for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
+    double made;
+    if (!(e[j] > a->size[j])) {
+      for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
+      continue;
+    }
+    const int status =
+        nudged_runs(sc, ref, j, e[j], NULL, spread, j == RED_TH ? ends : NULL, &made, err);
+    if (status < 0) return status;
+  }
+  return DV_OK;
 }
 
 /* least-squares slope of y on x and its residual sum of squares */
@@ -92,7 +108,7 @@ static void classify(dv_amplification *a) {
   double *lt = malloc((a->n ? a->n : 1) * sizeof *lt), *lg = malloc((a->n ? a->n : 1) * sizeof *lg);
   double *tt = malloc((a->n ? a->n : 1) * sizeof *tt);
   for (size_t i = 1; lt && lg && tt && i < a->n && a->t[i] <= a->measured_to; i++) {
-    if (a->gain[i] * a->nudge >= DV_HORIZON_SPREAD || !isfinite(a->gain[i])) break;
+    if (a->gain[i] * DV_HORIZON_NUDGE >= DV_HORIZON_SPREAD || !isfinite(a->gain[i])) break;
     if (a->gain[i] >= 2.0 && a->gain[i] > 1.001 * a->gain[i - 1] && a->t[i] > 0.0) {
       tt[n] = a->t[i];
       lt[n] = log(a->t[i]);
@@ -120,17 +136,41 @@ static void classify(dv_amplification *a) {
   free(tt);
 }
 
+/* rad/s: the scene's rate scale, its largest initial spin or roll rate or sqrt(g / r) */
+static double rate_scale(const dv_scenario *sc) {
+  const double *y = sc->initial;
+  return fmax(fmax(fabs(y[RED_VPH]), fabs(y[RED_VPS])), sqrt(sc->disk.g / sc->disk.r));
+}
+
 int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplification *a,
                          double spread[DV_NMETRICS], dv_error *err) {
   memset(a, 0, sizeof *a);
+  const size_t n = ref->n ? ref->n : 1;
   a->n = ref->n;
-  a->t = malloc((ref->n ? ref->n : 1) * sizeof *a->t);
-  a->gain = malloc((ref->n ? ref->n : 1) * sizeof *a->gain);
+  a->t = malloc(n * sizeof *a->t);
+  a->gain = malloc(n * sizeof *a->gain);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) a->gain_of[j] = malloc(n * sizeof *a->gain_of[j]);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    if (!a->gain_of[j]) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
   if (!a->t || !a->gain) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
   for (size_t i = 0; i < ref->n; i++) a->t[i] = ref->s[i].t;
-  const int status =
-      nudged_runs(sc, ref, DV_HORIZON_NUDGE, a->gain, spread, a->ends, &a->nudge, err);
-  if (status < 0) return status;
+  a->rate_scale = rate_scale(sc);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
+    a->size[j] = DV_HORIZON_NUDGE * (j == RED_TH ? 1.0 : a->rate_scale);
+    const int status = nudged_runs(sc, ref, j, a->size[j], a->gain_of[j], a->spread_of[j],
+                                   j == RED_TH ? a->ends : NULL, &a->size[j], err);
+    if (status < 0) return status;
+  }
+  a->nudge = a->size[RED_TH];
+  for (int m = 0; spread && m < DV_NMETRICS; m++) {
+    spread[m] = 0.0;
+    for (int j = 0; j < DV_NUDGE_DIRS; j++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
+  }
+  for (size_t i = 0; i < ref->n; i++) {
+    a->gain[i] = 0.0;
+    for (int j = 0; j < DV_NUDGE_DIRS; j++)
+      a->gain[i] = fmax(a->gain[i], a->gain_of[j][i] * a->size[j] / DV_HORIZON_NUDGE);
+  }
   a->measured_to = ref->n ? ref->s[ref->n - 1].t : 0.0;
   a->factor = 1.0;
   for (size_t i = 0; i < ref->n; i++) {
@@ -141,7 +181,8 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
     a->factor = a->gain[i];
     a->factor_t = a->t[i];
   }
-  a->horizon = dv_run_horizon_of(a, a->nudge, 0.0, DV_HORIZON_SPREAD, NULL);
+  const double none[DV_NUDGE_DIRS] = {0};
+  a->horizon = dv_run_horizon_of(a, none, 0.0, DV_HORIZON_SPREAD, NULL);
   classify(a);
   return DV_OK;
 }
@@ -150,16 +191,26 @@ void dv_run_amplification_free(dv_amplification *a) {
   if (!a) return;
   free(a->t);
   free(a->gain);
-  a->t = a->gain = NULL;
-  a->n = 0;
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) free(a->gain_of[j]);
+  memset(a, 0, sizeof *a);
 }
 
-double dv_run_horizon_of(const dv_amplification *a, double early_err, double t_early,
-                         double limit, double *gain) {
-  const double eps = fmax(early_err, a->nudge);
+double dv_run_relative_error(const dv_amplification *a, const double early[DV_NUDGE_DIRS]) {
+  double e[DV_NUDGE_DIRS], rel = 0.0;
+  dv_run_floor_errors(a, early, e);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    rel = fmax(rel, e[j] / (j == RED_TH ? 1.0 : a->rate_scale));
+  /* an early error past the limit is the engine's own failure, judged
+   * pointwise: it does not buy itself a shorter horizon */
+  return fmin(rel, DV_HORIZON_SPREAD);
+}
+
+double dv_run_horizon_of(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+                         double t_early, double limit, double *gain) {
+  const double rel = dv_run_relative_error(a, early);
   for (size_t i = 0; i < a->n; i++)
     /* what the dynamics add to the early error: a bounded x1.4 adds little */
-    if (a->t[i] >= t_early && !(eps * (a->gain[i] - 1.0) < limit)) {
+    if (a->t[i] >= t_early && !(rel * (a->gain[i] - 1.0) < limit)) {
       if (gain) *gain = a->gain[i];
       return a->t[i];
     }

@@ -1,28 +1,38 @@
 /* run_horizon: how long the reference is predictable at an engine's accuracy.
  *
- * The thin-disk reference is run again from theta(0) +- DV_HORIZON_NUDGE
- * rad; its amplification G(t) is the largest |theta_nudged - theta_ref| up
- * to t, over the nudge. It comes from the measurement, whatever its shape:
- * linear in t in integrable motion (a wobble's period depends on its
- * amplitude), exponential near a separatrix or a fall from upright.
+ * The thin-disk reference is run again from its initial state nudged in
+ * each reduced direction j (theta, theta_dot, phi_dot, psi_dot) by +- d_j:
+ * DV_HORIZON_NUDGE rad for theta, DV_HORIZON_NUDGE times the scene's rate
+ * scale (its largest initial spin or roll rate, at least sqrt(g / r)) for
+ * the rates. Its amplification A_j(t) is the largest
+ * |theta_nudged - theta_ref| up to t over d_j. A theta nudge alone is not
+ * enough: at the saddle of a separatrix it changes the energy only to second
+ * order, while an engine's error lies mostly in its rates (the energy and
+ * f1, f2 that choose the well). The growth comes from the measurement,
+ * whatever its shape: linear in t in integrable motion (a wobble's period
+ * depends on its amplitude), exponential near a separatrix or a fall from
+ * upright.
  *
- * An engine's pointwise comparison ends at its horizon: where its own early
- * error e (its largest theta error over the scene's shortest time scale, at
- * least the nudge) grows by e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the
- * dynamics add to it (an engine's own large early error on a scene that
- * amplifies little does not end its pointwise judging), and never before
- * the early window itself. Up to there a pointwise error
- * measures the engine; past it, it measures the scene's sensitivity, and
- * only timing-insensitive measures mean something: turning points,
- * period, the path's Hausdorff distance, the drift of E, f1, f2 along the
- * engine's own states, when the disk lies down (run_event.h). Those are
- * judged unless the reference nudged by +- the engine's early error moves
- * them by half their limit (the well a separatrix start falls into): their
- * spread.
+ * G(t), the largest A_j(t) d_j / DV_HORIZON_NUDGE, is the amplification of
+ * a relative nudge. An engine's pointwise comparison ends at its horizon:
+ * where its own early error e (its largest error over the scene's shortest
+ * time scale in theta, and in each rate over the rate scale; at least the
+ * nudge, at most DV_HORIZON_SPREAD: a larger one is the engine's own
+ * failure, not the scene's sensitivity) grows by e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the dynamics
+ * add to it (an engine's own large early error on a scene that amplifies
+ * little does not end its pointwise judging), and never before the early
+ * window itself. Up to there a pointwise error measures the engine; past
+ * it, it measures the scene's sensitivity, and only timing-insensitive
+ * measures mean something: turning points, period, the path's Hausdorff
+ * distance, the drift of E, f1, f2 along the engine's own states, when the
+ * disk lies down (run_event.h).
+ * Those are judged unless the reference nudged by +- the engine's early
+ * error in some direction moves them by half their limit (the well a
+ * separatrix start falls into): their spread.
  *
- * A nudge that would start at or past the lying-down limit (theta_limit,
- * pi - theta_limit) is not made: the other side alone gives the
- * measurement; if neither fits, one run is nudged toward upright by half
+ * A theta nudge that would start at or past the lying-down limit
+ * (theta_limit, pi - theta_limit) is not made: the other side alone gives
+ * the measurement; if neither fits, one run is nudged toward upright by half
  * the room left.
  */
 #ifndef DV_RUN_HORIZON_H
@@ -39,41 +49,58 @@
 #define DV_HORIZON_NUDGE 1e-6
 #define DV_HORIZON_SPREAD 1e-2 /* rad: the default theta limit */
 
-/* the reference's amplification of a nudge of theta(0) */
+/* the nudged directions: the reduced state's RED_TH, RED_VTH, RED_VPH, RED_VPS */
+#define DV_NUDGE_DIRS 4
+
+/* the reference's amplification of nudges of its initial state */
 typedef struct dv_amplification {
-  double nudge;       /* rad: the nudge made (the larger of the two) */
-  size_t n;           /* samples: the reference's */
-  double *t, *gain;   /* G(t_i): running max |theta_nudged - theta_ref| / |nudge| */
+  double nudge;                 /* rad: the theta nudge made (the larger of the two) */
+  double size[DV_NUDGE_DIRS];   /* each direction's nudge: rad, then rad/s */
+  double rate_scale;            /* rad/s: the rates' nudge over DV_HORIZON_NUDGE */
+  size_t n;                     /* samples: the reference's */
+  double *t;                    /* s: the reference's sample times */
+  double *gain_of[DV_NUDGE_DIRS]; /* A_j(t_i): running max |theta_nudged - theta_ref| / size[j] */
+  double *gain;       /* G(t_i): max over j of A_j size[j] / DV_HORIZON_NUDGE (a relative nudge) */
+  double spread_of[DV_NUDGE_DIRS][DV_NMETRICS]; /* each metric between a nudged run and ref */
   double measured_to; /* s: G is measured to here (where a nudged run ended first, or ref's end) */
-  double horizon;     /* s: where nudge * (G - 1) reaches DV_HORIZON_SPREAD (INFINITY: never) */
+  double horizon;     /* s: the horizon of an engine with no early error (INFINITY: never) */
   char growth[16];    /* "linear", "power", "exponential", "bounded" (from the fits below) */
   double exponent;    /* G ~ t^exponent, least squares over where G >= 2 */
   double efold;       /* s: G ~ exp(t / efold), the same samples */
   double factor;      /* G at the end of the samples fitted (at measured_to when bounded) */
   double factor_t;    /* s: where */
-  dv_run_end ends[2]; /* how the nudged runs ended (ends[k].ran 0: not made) */
+  dv_run_end ends[2]; /* how the theta-nudged runs ended (ends[k].ran 0: not made) */
 } dv_amplification;
 
 /* measure a's amplification of sc's thin reference ref; spread (may be
- * NULL): each metric between a nudged run and ref. < 0 when a nudged run
- * fails, err naming it */
+ * NULL): each metric's largest value between a nudged run and ref. < 0 when
+ * a nudged run fails, err naming it */
 int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplification *a,
                          double spread[DV_NMETRICS], dv_error *err);
 
 void dv_run_amplification_free(dv_amplification *a); /* NULL-safe */
 
-/* the reference run again from theta(0) +- size (kept inside the lying-down
- * limits): spread, the largest value of each metric between a nudged run
- * and ref, and how each nudged run ended. < 0 when a run fails */
-int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, double size,
-                         double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err);
+/* an engine's early errors e_j (rad, then rad/s), each floored at a's nudge */
+void dv_run_floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+                         double e[DV_NUDGE_DIRS]);
 
-/* the horizon (s) of an engine whose early error, to t_early (s), is
- * early_err rad: where max(early_err, nudge) * (G(t) - 1) reaches limit, and no
- * earlier than t_early; INFINITY when it never does. gain: G there (or at
- * the end) */
-double dv_run_horizon_of(const dv_amplification *a, double early_err, double t_early,
-                         double limit, double *gain);
+/* the reference run again from each direction j nudged by +- e[j] (a theta
+ * nudge kept inside the lying-down limits), where e[j] exceeds a's own
+ * nudge (a's spread_of[j] elsewhere): spread, the largest value of each
+ * metric between a nudged run and ref, and how the theta-nudged runs ended
+ * (ends: a's when theta is not nudged again). < 0 when a run fails */
+int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
+                         const double e[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
+                         dv_run_end ends[2], dv_error *err);
+
+/* the relative early error e of an engine whose early errors are early[j] */
+double dv_run_relative_error(const dv_amplification *a, const double early[DV_NUDGE_DIRS]);
+
+/* the horizon (s) of an engine whose early errors, to t_early (s), are
+ * early[j]: where e (G(t) - 1) reaches limit, and no earlier than t_early;
+ * INFINITY when it never does. gain: G there (or at the end) */
+double dv_run_horizon_of(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+                         double t_early, double limit, double *gain);
 
 /* the amplification in words: "linear (G ~ t^1.02), x99 by t = 8 s" */
 void dv_run_amplification_words(const dv_amplification *a, char *out, size_t size);

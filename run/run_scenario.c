@@ -42,45 +42,56 @@ int dv_run_metric_pointwise(dv_metric_id metric) {
          metric == DV_PATH_RMS_ERR;
 }
 
-/* the engine's largest theta error against ref over its early window: the
- * scene's shortest time scale (engine_scene.h), at least one output_dt */
-static double early_error(const dv_comparison *c, const dv_traj *eng, const dv_traj *ref,
-                          double *until) {
+/* the engine's largest error in each nudged direction against ref over its
+ * early window: the scene's shortest time scale (engine_scene.h), at least
+ * one output_dt */
+static void early_errors(const dv_comparison *c, const dv_traj *eng, const dv_traj *ref,
+                         double e[DV_NUDGE_DIRS], double *until) {
   const double t0 = ref->n ? ref->s[0].t : 0.0;
   *until = t0 + fmax(c->min_window, c->sc->output_dt);
-  double e = 0.0;
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) e[j] = 0.0;
   for (size_t i = 0; i < eng->n && i < ref->n && ref->s[i].t <= *until + 1e-12; i++)
     if (fabs(eng->s[i].t - ref->s[i].t) < 1e-9)
-      e = fmax(e, fabs(eng->s[i].y[RED_TH] - ref->s[i].y[RED_TH]));
-  return e;
+      for (int j = 0; j < DV_NUDGE_DIRS; j++)
+        e[j] = fmax(e[j], fabs(eng->s[i].y[j] - ref->s[i].y[j]));
 }
 
-/* the engine's horizon from its early error and the reference's amplification */
+/* the engine's horizon from its early errors and the reference's amplification */
 static void find_horizon(const dv_comparison *c, const dv_traj *ref, dv_engine_result *r) {
   const dv_amplification *a = &c->amp;
-  r->early_err = early_error(c, &r->traj, ref, &r->early_until);
-  r->horizon = dv_run_horizon_of(a, r->early_err, r->early_until, DV_HORIZON_SPREAD, &r->horizon_gain);
-  r->nudge = fmax(r->early_err, a->nudge);
-  char growth[120];
+  early_errors(c, &r->traj, ref, r->early_of, &r->early_until);
+  r->early_err = r->early_of[RED_TH];
+  r->horizon =
+      dv_run_horizon_of(a, r->early_of, r->early_until, DV_HORIZON_SPREAD, &r->horizon_gain);
+  double e[DV_NUDGE_DIRS];
+  dv_run_floor_errors(a, r->early_of, e);
+  r->nudge = e[RED_TH];
+  const double rates = fmax(fmax(r->early_of[RED_VTH], r->early_of[RED_VPH]), r->early_of[RED_VPS]);
+  const double rel = dv_run_relative_error(a, r->early_of);
+  char growth[120], early[240];
   dv_run_amplification_words(a, growth, sizeof growth);
-  const char *floor = r->early_err < a->nudge ? " (below the nudge: taken as the nudge)" : "";
+  snprintf(early, sizeof early,
+           "its early error (to t = %g s: %.2g rad in theta, %.2g rad/s in the rates, of %.3g "
+           "rad/s) %.2g%s",
+           r->early_until, r->early_err, rates, a->rate_scale, rel,
+           rel <= DV_HORIZON_NUDGE * (1 + 1e-9) ? " (the nudge: the errors are below it)"
+           : rel >= DV_HORIZON_SPREAD           ? " (at most the limit)"
+                                                : "");
   if (isfinite(r->horizon) && !isfinite(r->horizon_gain))
     snprintf(r->horizon_why, sizeof r->horizon_why,
-             "a nudged reference run (a %g rad nudge) ended at t = %g s, before the reference: past "
-             "it nothing measures the amplification; amplification %s",
-             a->nudge, a->measured_to, growth);
+             "a nudged reference run ended at t = %g s, before the reference: past it nothing "
+             "measures the amplification; amplification %s",
+             a->measured_to, growth);
   else if (isfinite(r->horizon))
     snprintf(r->horizon_why, sizeof r->horizon_why,
-             "its early error %.2g rad (to t = %g s)%s, amplified x%.3g as the reference amplifies "
-             "a %g rad nudge, has grown by %g rad at t = %g s; amplification %s",
-             r->early_err, r->early_until, floor, r->horizon_gain, a->nudge, DV_HORIZON_SPREAD,
-             r->horizon, growth);
+             "%s, amplified x%.3g as the reference amplifies a nudge of theta or a rate, has grown "
+             "by %g rad at t = %g s; amplification %s",
+             early, r->horizon_gain, DV_HORIZON_SPREAD, r->horizon, growth);
   else
     snprintf(r->horizon_why, sizeof r->horizon_why,
-             "its early error %.2g rad (to t = %g s)%s, amplified as the reference amplifies a %g "
-             "rad nudge (%s), grows by less than %g rad to t = %g s",
-             r->early_err, r->early_until, floor, a->nudge, growth, DV_HORIZON_SPREAD,
-             a->measured_to);
+             "%s, amplified as the reference amplifies a nudge of theta or a rate (%s), grows "
+             "by less than %g rad to t = %g s",
+             early, growth, DV_HORIZON_SPREAD, a->measured_to);
 }
 
 /* the pointwise metrics up to the engine's horizon, when it ends before the window */
@@ -102,7 +113,7 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
     if (!(r->vs_ref.value[m] <= r->tolerance[m]) && !isnan(r->tolerance[m]))
       failed[!dv_run_metric_pointwise((dv_metric_id)m)] = 1;
   const int whole = r->pointwise_end >= r->vs_ref.t_window - 0.5 * sc->output_dt;
-  char part[480];
+  char part[660];
   if (whole)
     snprintf(part, sizeof part, "pointwise over the whole window: %s", r->horizon_why);
   else
@@ -298,11 +309,11 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
     else
       dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
     find_horizon(c, ref, r);
-    memcpy(r->spread, c->spread, sizeof r->spread);
-    memcpy(r->nudged, c->amp.ends, sizeof r->nudged);
-    if (r->nudge > c->amp.nudge) { /* its own nudge: the spread and the lying down it allows */
+    { /* its own nudges: the spread and the lying down they allow */
       const double t_spread = dv_clock_now();
-      status = dv_run_nudged_spread(ref_sc, &c->thin, r->nudge, r->spread, r->nudged, err);
+      double floored[DV_NUDGE_DIRS];
+      dv_run_floor_errors(&c->amp, r->early_of, floored);
+      status = dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, floored, r->spread, r->nudged, err);
       c->horizon_wall_s += dv_clock_now() - t_spread;
       if (status < 0) return status;
     }
@@ -318,8 +329,8 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
       if (!dv_run_metric_pointwise((dv_metric_id)m) && r->spread[m] > 0.5 * r->tolerance[m]) {
         r->tolerance[m] = NAN;
         snprintf(r->limit_why[m], sizeof r->limit_why[m],
-                 "not judged: the reference nudged by its early error %.2g rad moves it by %.3g",
-                 r->nudge, r->spread[m]);
+                 "not judged: the reference nudged by its early errors moves it by %.3g",
+                 r->spread[m]);
       }
     }
     /* turning points and periods: NAN where there is nothing to compare */

@@ -53,14 +53,15 @@ typedef struct dv_engine_result {
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
   double early_err;                 /* rad: its largest theta error to early_until (run_horizon.h) */
+  double early_of[DV_NUDGE_DIRS];   /* its largest errors there: theta, theta_dot, phi_dot, psi_dot */
   double early_until;               /* s: the scene's shortest time scale, at least output_dt */
   double horizon;                   /* s: where early_err amplified reaches the limit (INFINITY) */
   double horizon_gain;              /* the reference's amplification there (at the end: INFINITY) */
-  double nudge;                     /* rad: its spread's and event's nudge, max(early_err, ...) */
-  double spread[DV_NMETRICS];       /* what that nudge of the reference moves each metric by */
+  double nudge;                     /* rad: its event's theta nudge, max(early_err, the nudge) */
+  double spread[DV_NMETRICS];       /* what its early errors as nudges move each metric by */
   dv_run_end nudged[2];             /* how those nudged reference runs ended */
-  char horizon_why[400];            /* why the horizon is where it is, in words */
-  char decided[560];                /* which part decided the verdict, and why */
+  char horizon_why[560];            /* why the horizon is where it is, in words */
+  char decided[720];                /* which part decided the verdict, and why */
   char cause[200];                  /* an excess's cause, from attribution ("": unknown) */
   char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
