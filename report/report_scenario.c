@@ -121,8 +121,8 @@ static cJSON *horizon_json(const dv_engine_result *r) {
   cJSON_AddItemToObject(o, "t", dv_io_json_number(r->horizon));
   cJSON_AddNumberToObject(o, "early_error", r->early_err);
   cJSON *each = cJSON_AddObjectToObject(o, "early_errors");
-  static const char *const dirs[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot", "psi_dot"};
-  for (int j = 0; j < DV_NUDGE_DIRS; j++) cJSON_AddNumberToObject(each, dirs[j], r->early_of[j]);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    cJSON_AddNumberToObject(each, dv_nudge_dir_names[j], r->early_of[j]);
   cJSON_AddNumberToObject(o, "early_until", r->early_until);
   cJSON_AddItemToObject(o, "amplification", dv_io_json_number(r->horizon_gain));
   cJSON_AddNumberToObject(o, "nudge", r->nudge);

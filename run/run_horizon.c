@@ -7,7 +7,11 @@
 #include <string.h>
 
 #include "dv_reference.h"
+#include "run_limits.h"
 #include "run_trajectory.h"
+
+const char *const dv_nudge_dir_names[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot",
+                                                       "psi_dot"};
 
 /* the nudges of theta(0) by +- size that start inside the lying-down limits (0: none) */
 static void theta_nudges(const dv_scenario *sc, double size, double nudge[2]) {
@@ -27,7 +31,6 @@ static void theta_nudges(const dv_scenario *sc, double size, double nudge[2]) {
 static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, double size,
                        double *gain, double spread[DV_NMETRICS], dv_run_end ends[2],
                        double *nudge_made, dv_error *err) {
-  static const char *const names[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot", "psi_dot"};
   const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   double nudge[2] = {-size, size};
   if (dir == RED_TH) theta_nudges(sc, size, nudge);
@@ -45,7 +48,7 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
       dv_error cause = *err;
       dv_run_traj_free(&tr);
       return dv_fail(err, status, "the %s reference with %s nudged by %+g (for the horizon): %s",
-                     thin->name, names[dir], nudge[k], cause.msg);
+                     thin->name, dv_nudge_dir_names[dir], nudge[k], cause.msg);
     }
     if (ends) ends[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
     double run_max = 0.0;
@@ -63,24 +66,25 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
   return DV_OK;
 }
 
-void dv_run_floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+/* an engine's early errors (rad, then rad/s), each floored at a's nudge */
+static void floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
                          double e[DV_NUDGE_DIRS]) {
   for (int j = 0; j < DV_NUDGE_DIRS; j++) e[j] = fmax(early[j], a->size[j]);
 }
 
 int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double e[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
+                         const double early[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
                          dv_run_end ends[2], dv_error *err) {
   memcpy(ends, a->ends, sizeof a->ends);
   for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
   for (int j = 0; j < DV_NUDGE_DIRS; j++) {
     double made;
-    if (!(e[j] > a->size[j])) {
+    if (!(early[j] > a->size[j])) {
       for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
       continue;
     }
     const int status =
-        nudged_runs(sc, ref, j, e[j], NULL, spread, j == RED_TH ? ends : NULL, &made, err);
+        nudged_runs(sc, ref, j, early[j], NULL, spread, j == RED_TH ? ends : NULL, &made, err);
     if (status < 0) return status;
   }
   return DV_OK;
@@ -136,12 +140,6 @@ static void classify(dv_amplification *a) {
   free(tt);
 }
 
-/* rad/s: the scene's rate scale, its largest initial spin or roll rate or sqrt(g / r) */
-static double rate_scale(const dv_scenario *sc) {
-  const double *y = sc->initial;
-  return fmax(fmax(fabs(y[RED_VPH]), fabs(y[RED_VPS])), sqrt(sc->disk.g / sc->disk.r));
-}
-
 int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplification *a,
                          double spread[DV_NMETRICS], dv_error *err) {
   memset(a, 0, sizeof *a);
@@ -154,7 +152,7 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
     if (!a->gain_of[j]) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
   if (!a->t || !a->gain) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
   for (size_t i = 0; i < ref->n; i++) a->t[i] = ref->s[i].t;
-  a->rate_scale = rate_scale(sc);
+  a->rate_scale = dv_run_rate_scale(sc);
   for (int j = 0; j < DV_NUDGE_DIRS; j++) {
     a->size[j] = DV_HORIZON_NUDGE * (j == RED_TH ? 1.0 : a->rate_scale);
     const int status = nudged_runs(sc, ref, j, a->size[j], a->gain_of[j], a->spread_of[j],
@@ -197,7 +195,7 @@ void dv_run_amplification_free(dv_amplification *a) {
 
 double dv_run_relative_error(const dv_amplification *a, const double early[DV_NUDGE_DIRS]) {
   double e[DV_NUDGE_DIRS], rel = 0.0;
-  dv_run_floor_errors(a, early, e);
+  floor_errors(a, early, e);
   for (int j = 0; j < DV_NUDGE_DIRS; j++)
     rel = fmax(rel, e[j] / (j == RED_TH ? 1.0 : a->rate_scale));
   /* an early error past the limit is the engine's own failure, judged

@@ -5,23 +5,24 @@
  * DV_HORIZON_NUDGE rad for theta, DV_HORIZON_NUDGE times the scene's rate
  * scale (its largest initial spin or roll rate, at least sqrt(g / r)) for
  * the rates. Its amplification A_j(t) is the largest
- * |theta_nudged - theta_ref| up to t over d_j. A theta nudge alone is not
- * enough: at the saddle of a separatrix it changes the energy only to second
- * order, while an engine's error lies mostly in its rates (the energy and
- * f1, f2 that choose the well). The growth comes from the measurement,
- * whatever its shape: linear in t in integrable motion (a wobble's period
- * depends on its amplitude), exponential near a separatrix or a fall from
- * upright.
+ * |theta_nudged - theta_ref| up to t over d_j. The directions respond alike
+ * (within 0.3-1x of theta's on the hoop, long_horizon, upright_stable,
+ * critical_below and the separatrix), but an engine's early error often
+ * lies in its rates (MuJoCo on steady_circle: 2.5e-5 of the rate scale
+ * against 1.1e-5 rad in theta), which only these nudges put in scale. The
+ * growth comes from the measurement, whatever its shape: linear in t in
+ * integrable motion (a wobble's period depends on its amplitude),
+ * exponential near a separatrix or a fall from upright.
  *
  * G(t), the largest A_j(t) d_j / DV_HORIZON_NUDGE, is the amplification of
  * a relative nudge. An engine's pointwise comparison ends at its horizon:
  * where its own early error e (its largest error over the scene's shortest
  * time scale in theta, and in each rate over the rate scale; at least the
  * nudge, at most DV_HORIZON_SPREAD: a larger one is the engine's own
- * failure, not the scene's sensitivity) grows by e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the dynamics
- * add to it (an engine's own large early error on a scene that amplifies
- * little does not end its pointwise judging), and never before the early
- * window itself. Up to there a pointwise error measures the engine; past
+ * failure, not the scene's sensitivity) grows by
+ * e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the dynamics add to it (an
+ * engine's own large early error on a scene that amplifies little does not
+ * end its pointwise judging), and never before the early window itself. Up to there a pointwise error measures the engine; past
  * it, it measures the scene's sensitivity, and only timing-insensitive
  * measures mean something: turning points, period, the path's Hausdorff
  * distance, the drift of E, f1, f2 along the engine's own states, when the
@@ -51,6 +52,7 @@
 
 /* the nudged directions: the reduced state's RED_TH, RED_VTH, RED_VPH, RED_VPS */
 #define DV_NUDGE_DIRS 4
+extern const char *const dv_nudge_dir_names[DV_NUDGE_DIRS]; /* "theta", "theta_dot", ... */
 
 /* the reference's amplification of nudges of its initial state */
 typedef struct dv_amplification {
@@ -80,17 +82,13 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
 
 void dv_run_amplification_free(dv_amplification *a); /* NULL-safe */
 
-/* an engine's early errors e_j (rad, then rad/s), each floored at a's nudge */
-void dv_run_floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
-                         double e[DV_NUDGE_DIRS]);
-
-/* the reference run again from each direction j nudged by +- e[j] (a theta
- * nudge kept inside the lying-down limits), where e[j] exceeds a's own
- * nudge (a's spread_of[j] elsewhere): spread, the largest value of each
- * metric between a nudged run and ref, and how the theta-nudged runs ended
- * (ends: a's when theta is not nudged again). < 0 when a run fails */
+/* the reference run again from each direction j nudged by +- early[j] (a
+ * theta nudge kept inside the lying-down limits), where early[j] exceeds
+ * a's own nudge (a's spread_of[j] elsewhere): spread, the largest value of
+ * each metric between a nudged run and ref, and how the theta-nudged runs
+ * ended (ends: a's when theta is not nudged again). < 0 when a run fails */
 int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double e[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
+                         const double early[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
                          dv_run_end ends[2], dv_error *err);
 
 /* the relative early error e of an engine whose early errors are early[j] */

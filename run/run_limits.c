@@ -24,13 +24,16 @@ static int given(const dv_scenario *sc, const char *engine, dv_metric_id metric,
   return 1;
 }
 
+double dv_run_rate_scale(const dv_scenario *sc) {
+  const double *y = sc->initial;
+  return fmax(fmax(fabs(y[RED_VPS]), fabs(y[RED_VPH])), sqrt(sc->disk.g / sc->disk.r));
+}
+
 void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,
                    dv_limit out[DV_NMETRICS]) {
   const red_disk *d = &sc->disk;
-  const double *y = sc->initial;
   const double rolled = dv_run_distance_rolled(ref, t_end);
-  const double speed =
-      fmax(fmax(d->r * fabs(y[RED_VPS]), d->r * fabs(y[RED_VPH])), sqrt(d->g * d->r));
+  const double speed = d->r * dv_run_rate_scale(sc);
   for (int m = 0; m < DV_NMETRICS; m++) {
     dv_limit *l = &out[m];
     if (given(sc, engine, (dv_metric_id)m, l)) continue;

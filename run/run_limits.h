@@ -44,6 +44,10 @@ typedef struct dv_limit {
 void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,
                    dv_limit out[DV_NMETRICS]);
 
+/* rad/s: sc's rate scale, its largest initial spin or roll rate, at least
+ * sqrt(g / r); r times it is the speed scale */
+double dv_run_rate_scale(const dv_scenario *sc);
+
 /* the distance (m) the contact point of tr travels up to t_end */
 double dv_run_distance_rolled(const dv_traj *tr, double t_end);
 

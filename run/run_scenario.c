@@ -63,9 +63,7 @@ static void find_horizon(const dv_comparison *c, const dv_traj *ref, dv_engine_r
   r->early_err = r->early_of[RED_TH];
   r->horizon =
       dv_run_horizon_of(a, r->early_of, r->early_until, DV_HORIZON_SPREAD, &r->horizon_gain);
-  double e[DV_NUDGE_DIRS];
-  dv_run_floor_errors(a, r->early_of, e);
-  r->nudge = e[RED_TH];
+  r->nudge = fmax(r->early_err, a->nudge);
   const double rates = fmax(fmax(r->early_of[RED_VTH], r->early_of[RED_VPH]), r->early_of[RED_VPS]);
   const double rel = dv_run_relative_error(a, r->early_of);
   char growth[120], early[240];
@@ -311,9 +309,8 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
     find_horizon(c, ref, r);
     { /* its own nudges: the spread and the lying down they allow */
       const double t_spread = dv_clock_now();
-      double floored[DV_NUDGE_DIRS];
-      dv_run_floor_errors(&c->amp, r->early_of, floored);
-      status = dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, floored, r->spread, r->nudged, err);
+      status =
+          dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, r->early_of, r->spread, r->nudged, err);
       c->horizon_wall_s += dv_clock_now() - t_spread;
       if (status < 0) return status;
     }

@@ -53,9 +53,9 @@ typedef struct dv_engine_result {
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
   double early_err;                 /* rad: its largest theta error to early_until (run_horizon.h) */
-  double early_of[DV_NUDGE_DIRS];   /* its largest errors there: theta, theta_dot, phi_dot, psi_dot */
+  double early_of[DV_NUDGE_DIRS];   /* its largest errors there, by dv_nudge_dir_names */
   double early_until;               /* s: the scene's shortest time scale, at least output_dt */
-  double horizon;                   /* s: where early_err amplified reaches the limit (INFINITY) */
+  double horizon;                   /* s: where early_of amplified reaches the limit (INFINITY) */
   double horizon_gain;              /* the reference's amplification there (at the end: INFINITY) */
   double nudge;                     /* rad: its event's theta nudge, max(early_err, the nudge) */
   double spread[DV_NMETRICS];       /* what its early errors as nudges move each metric by */
