@@ -3,9 +3,10 @@
  * Each file is drawn on a stream of its own (plmkstrm ... plend1), so the
  * caller's PLplot stream, if any, is left alone and consecutive calls work;
  * PLplot's state is global, so this is not thread-safe. Each file is written
- * under a temporary name in dir (created first, so PLplot never has to
- * prompt or give up on an unwritable path), checked to be a complete SVG
- * document, then renamed. PLplot's recoverable errors (plabort) are caught
+ * as dv_io_open writes (io_file.h: a temporary in dir, created first so
+ * PLplot never has to prompt or give up on an unwritable path, removed on
+ * failure or a signal), checked to be a complete SVG document, then renamed
+ * by dv_io_commit. PLplot's recoverable errors (plabort) are caught
  * per stream with plsError instead of printed. Non-finite samples break a
  * curve; a plot without any finite point still gets axes and "no data".
  */
@@ -18,11 +19,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <plplot.h>
 
-#include "io_temp.h"
+#include "io_file.h"
 #include "report_plot_internal.h"
 
 const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg",
@@ -441,23 +441,23 @@ static int svg_complete(const char *path) {
 }
 
 int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error *err) {
-  char tmp[PATH_MAX], plmsg[1024] = "";
+  char plmsg[1024] = "";
   PLINT plcode = 0, prev = 0, strm = -1;
-  int status = DV_OK;
-  const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
-  const int dirlen = slash ? (int)(slash + 1 - path) : 0; /* with its '/' */
-  if (!*base) return dv_fail(err, DV_EINPUT, "%s: no file name", path);
-  char dir[PATH_MAX];
-  if (snprintf(dir, sizeof dir, "%.*s", dirlen ? dirlen - 1 : 1, dirlen ? path : ".") >=
-          (int)sizeof dir ||
-      dv_io_temp_template(tmp, sizeof tmp, dir, NULL))
-    return dv_fail(err, DV_ESYSTEM, "%s: path too long", path);
-  if (strstr(tmp, "%n")) /* PLplot would read it as a file family pattern */
-    return dv_fail(err, DV_ESYSTEM, "%s: PLplot cannot write a path containing %%n", path);
-  const int fd = mkstemp(tmp);
-  if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
-  fchmod(fd, 0644);
-  close(fd);
+  const char *slash = strrchr(path, '/');
+  if (!*(slash ? slash + 1 : path)) return dv_fail(err, DV_EINPUT, "%s: no file name", path);
+  dv_io_file out;
+  int status = dv_io_open(&out, path, err);
+  if (status != DV_OK) return status;
+  /* PLplot writes the file by its name: the temporary, or a device in place */
+  const char *name = out.direct ? out.path : out.tmp_path;
+  if (out.fp == stdout) {
+    status = dv_fail(err, DV_EINPUT, "%s: a plot needs a file", path);
+    goto cleanup;
+  }
+  if (strstr(name, "%n")) { /* PLplot would read it as a file family pattern */
+    status = dv_fail(err, DV_ESYSTEM, "%s: PLplot cannot write a path containing %%n", path);
+    goto cleanup;
+  }
 
   plgstrm(&prev);
   plmkstrm(&strm);
@@ -467,7 +467,7 @@ int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error 
   }
   plsError(&plcode, plmsg); /* plabort fills these instead of printing */
   plsdev("svg");
-  plsfnam(tmp);
+  plsfnam(name);
   plspage(0, 0, DVP_PAGE_W, DVP_PAGE_H, 0, 0);
   plscmap0n(DVP_NCOLOURS);
   plscmap0(red, green, blue, DVP_NCOLOURS);
@@ -480,15 +480,14 @@ int dvp_write_svg(const char *path, dvp_draw_fn draw, const void *arg, dv_error 
     status = dv_fail(err, DV_ESYSTEM, "%s: PLplot: %s", path, plmsg[0] ? plmsg : "error");
     goto cleanup;
   }
-  if (!svg_complete(tmp)) {
+  if (!out.direct && !svg_complete(name)) {
     status = dv_fail(err, DV_ESYSTEM, "%s: PLplot wrote an incomplete SVG file", path);
     goto cleanup;
   }
-  if (rename(tmp, path) != 0)
-    status = dv_fail(err, DV_ESYSTEM, "%s: cannot rename: %s", path, strerror(errno));
+  return dv_io_commit(&out, err); /* renames the temporary over path */
 
 cleanup:
-  if (status != DV_OK) unlink(tmp);
+  dv_io_abort(&out);
   return status;
 }
 
