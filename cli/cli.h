@@ -35,11 +35,17 @@ struct dv_error;
 int dv_cli_engine_list(const char *list, const struct dv_engine_type **engines,
                        struct dv_error *err);
 
+/* load path with sets (--set) applied, as dv_engine_load_scenario; a line on
+ * stderr for each engine whose check replaced a setting the file or --set gave */
+struct dv_scenario;
+struct dv_cli_list;
+int dv_cli_load_scenario(const char *command, const char *path, const struct dv_cli_list *sets,
+                         struct dv_scenario *sc, struct dv_error *err);
+
 /* the report layer's explainer of an engine's excess: attribution of the
  * scenario as the command loaded it (its --set overrides applied: sets is
  * kept for the callers, the file is not read again) */
 struct dv_report_explain;
-struct dv_cli_list;
 void dv_cli_explainer(const struct dv_cli_list *sets, struct dv_report_explain *out);
 
 #endif

@@ -185,7 +185,7 @@ int dv_cli_analyze(int argc, char **argv) {
   dv_error err = {{0}};
   analysis an;
   int code = DV_EXIT_OK;
-  if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err)) {
+  if (dv_cli_load_scenario("analyze", a.args.items[0], &a.sets, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
     code = DV_EXIT_ERROR;
   } else if (analyse(&sc, &an, &err)) {

@@ -96,7 +96,7 @@ int dv_cli_attribute(int argc, char **argv) {
     code = dv_cli_usage_error("attribute", "no --engine given");
   else if (!dv_engine_find(engine))
     code = dv_cli_unknown_engine("attribute", engine);
-  else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+  else if (dv_cli_load_scenario("attribute", a.args.items[0], &a.sets, &sc, &err))
     code = dv_cli_error("attribute", "%s", err.msg);
   else if (dv_search_attribute(&sc, engine, &at, &err))
     code = dv_cli_error("attribute", "%s", err.msg);

@@ -85,7 +85,7 @@ int dv_cli_best(int argc, char **argv) {
     code = dv_cli_usage_error("best", "no --theta-tol given");
   else if (!s || !sc)
     code = dv_cli_error("best", "out of memory");
-  else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, sc, &err) ||
+  else if (dv_cli_load_scenario("best", a.args.items[0], &a.sets, sc, &err) ||
            dv_search_best(sc, engine, tol, s, &err))
     code = dv_cli_error("best", "%s", err.msg);
   else

@@ -45,7 +45,7 @@ int dv_cli_compare(int argc, char **argv) {
   int code, lock = -1;
   if (dv_cli_engine_list(list, engines, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if (dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+  else if (dv_cli_load_scenario("compare", a.args.items[0], &a.sets, &sc, &err))
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
   else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
            dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))

@@ -262,7 +262,7 @@ static int read_disk(const dv_cli_args *a, map *mp) {
   dv_scenario *sc = malloc(sizeof *sc);
   dv_error err = {{0}};
   if (!sc) return dv_cli_error("map", "out of memory");
-  const int status = dv_engine_load_scenario(a->args.items[0], a->sets.items, a->sets.n, sc, &err);
+  const int status = dv_cli_load_scenario("map", a->args.items[0], &a->sets, sc, &err);
   if (!status) {
     mp->disk = sc->disk;
     snprintf(mp->name, sizeof mp->name, "%s", sc->name);

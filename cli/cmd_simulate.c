@@ -56,7 +56,7 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
     return dv_cli_usage_error("simulate", "--out and --forces name the same file: stdout");
   dv_scenario sc;
   dv_error err = {{0}};
-  if (dv_engine_load_scenario(scenario, sets->items, sets->n, &sc, &err)) {
+  if (dv_cli_load_scenario("simulate", scenario, sets, &sc, &err)) {
     fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }

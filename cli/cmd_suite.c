@@ -95,7 +95,7 @@ static int list_files(const dv_cli_list *args, dv_cli_list *files) {
 static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenario *scs) {
   for (size_t i = 0; i < files->n; i++) {
     dv_error err = {{0}};
-    if (dv_engine_load_scenario(files->items[i], sets->items, sets->n, &scs[i], &err))
+    if (dv_cli_load_scenario("suite", files->items[i], sets, &scs[i], &err))
       return fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR;
     for (size_t k = 0; k < i; k++)
       if (!strcmp(scs[k].name, scs[i].name))

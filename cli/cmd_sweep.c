@@ -129,7 +129,7 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
   dv_error err = {{0}};
   /* read once: every point is this scenario with its settings (a file edited
    * during the sweep, or a pipe, changes nothing) */
-  if (dv_engine_load_scenario(scenario, sets->items, sets->n, sc, &err))
+  if (dv_cli_load_scenario("sweep", scenario, sets, sc, &err))
     return dv_cli_error("sweep", "%s", err.msg);
   for (size_t v = 0; v < specs->n; v++) {
     if (dv_search_vary_parse(specs->items[v], engine->name, &vary[v], &err) ||

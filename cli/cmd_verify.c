@@ -53,7 +53,7 @@ int dv_cli_verify(int argc, char **argv) {
     if (!engines[i]->contact || !engines[i]->search)
       code = dv_cli_usage_error(
           "verify", "--engines: %s is not a contact engine: nothing to verify", engines[i]->name);
-  if (!code && dv_engine_load_scenario(a.args.items[0], a.sets.items, a.sets.n, &sc, &err))
+  if (!code && dv_cli_load_scenario("verify", a.args.items[0], &a.sets, &sc, &err))
     code = dv_cli_error("verify", "%s", err.msg);
   for (size_t i = 0; code != DV_EXIT_ERROR && engines[i]; i++) {
     dv_verification v;

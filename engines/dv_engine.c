@@ -69,8 +69,7 @@ void dv_engine_init_scenario(dv_scenario *sc) {
 int dv_engine_derive_settings(dv_scenario *sc, dv_error *err) {
   for (size_t i = 0; i < sc->nsections; i++) {
     dv_setting_issue issue = {0};
-    const dv_settings_section *sec = sc->sections[i];
-    if (sec->check && sec->check(sc, &sc->settings[i], &issue)) /* "initial.theta" is no engine's */
+    if (dv_scenario_check_engine(sc, i, &issue)) /* "initial.theta" is no engine's */
       return dv_fail(err, DV_EINPUT, "%s%s.%s: %s", dv_engine_find(issue.section) ? "engines." : "",
                      issue.section, issue.key, issue.what);
   }

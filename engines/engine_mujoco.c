@@ -139,6 +139,12 @@ static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   s->integrator = out.choice;
   s->timestep = out.timestep;
   s->solref_timeconst = out.softness;
+  if (s->solref_timeconst < 2.0 * s->timestep) { /* what MuJoCo would do unnoticed */
+    s->solref_timeconst = 2.0 * s->timestep;
+    const size_t used = strlen(why);
+    snprintf(why + used, sizeof why - used, "%ssolref_timeconst 2 timesteps, MuJoCo's least",
+             used ? "; " : "");
+  }
   size_t n = 0;
   while (keys[n]) n++;
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys + n);

@@ -25,6 +25,7 @@
 #define DV_MAX_ENGINE_SECTIONS 8
 #define DV_SETTINGS_BYTES 256 /* the largest engine settings struct */
 #define DV_DERIVED_BYTES 640  /* why an engine's derived settings are what they are */
+#define DV_REPLACED_BYTES 160 /* the given settings an engine's check changed */
 
 /* what a scenario name may hold: it names the report's directory, so it is
  * one path component of these characters, and not "." or ".." */
@@ -103,6 +104,8 @@ typedef struct dv_scenario {
    * line saying why, per section ("" when nothing was derived) */
   char derived[DV_MAX_ENGINE_SECTIONS][DV_DERIVED_BYTES];
   unsigned derived_keys[DV_MAX_ENGINE_SECTIONS]; /* bit i: the section's key i was derived */
+  /* given settings the section's check changed: "timestep 0.01 -> 0.005; ..." */
+  char replaced[DV_MAX_ENGINE_SECTIONS][DV_REPLACED_BYTES];
   unsigned given_keys[DV_MAX_ENGINE_SECTIONS];   /* bit i: the file, --set or code set key i */
   unsigned core_given[3]; /* the same for [scenario], [disk], [initial] (dv_scenario_with) */
 } dv_scenario;
@@ -163,6 +166,14 @@ int dv_scenario_is_derived(const dv_scenario *sc, const char *engine, const char
 /* 1 when [engines.ENGINE] key was given (file, --set, dv_scenario_set*), else 0:
  * a section's check derives only what was not */
 int dv_scenario_is_given(const dv_scenario *sc, const char *engine, const char *key);
+
+/* run engine section i's check (0, or -1 with issue filled in), recording
+ * every given setting it changed (dv_scenario_replaced) */
+int dv_scenario_check_engine(dv_scenario *sc, size_t i, dv_setting_issue *issue);
+
+/* the given settings of engine its check changed ("timestep 0.01 -> 0.005"),
+ * the reason being in dv_scenario_derived; "" when none */
+const char *dv_scenario_replaced(const dv_scenario *sc, const char *engine);
 
 /* for a section's check: record why, naming the keys derived (NULL-terminated) */
 void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,

@@ -102,7 +102,7 @@ int dv_scenario_with(const dv_scenario *base, const char *const *overrides, size
   for (size_t i = 0; i < out->nsections; i++) {
     dv_setting_issue is = {0};
     const dv_settings_section *sec = out->sections[i];
-    if (sec->check && sec->check(out, &out->settings[i], &is))
+    if (dv_scenario_check_engine(out, i, &is))
       return dv_fail(err, DV_EINPUT, "%s%s.%s: %s", strcmp(is.section, sec->name) ? "" : "engines.",
                      is.section, is.key, is.what);
   }

@@ -279,7 +279,10 @@ static int validate(parse_ctx *c) {
   if (read_values(c)) return -1;
   for (size_t s = 0; s < c->nsec; s++) {
     dv_setting_issue is = {0};
-    if (!c->sec[s]->check || !c->sec[s]->check(c->sc, c->block[s], &is)) continue;
+    const int bad = s < DV_NCORE_SECTIONS
+                        ? c->sec[s]->check && c->sec[s]->check(c->sc, c->block[s], &is)
+                        : dv_scenario_check_engine(c->sc, s - DV_NCORE_SECTIONS, &is);
+    if (!bad) continue;
     char name[64];
     snprintf(name, sizeof name, "engines.%s", is.section);
     int t = find_section(c, is.section);

@@ -92,6 +92,42 @@ void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *co
   snprintf(sc->derived[i], sizeof sc->derived[i], "%s", why ? why : "");
 }
 
+/* value v of sp as a scenario file writes it */
+static void value_text(const dv_setting_spec *sp, double v, char *buf, size_t size) {
+  const char *name = sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
+  if (name)
+    snprintf(buf, size, "%s", name);
+  else
+    snprintf(buf, size, "%.6g", v);
+}
+
+int dv_scenario_check_engine(dv_scenario *sc, size_t i, dv_setting_issue *issue) {
+  const dv_settings_section *sec = sc->sections[i];
+  const size_t n = sec->nspecs < 32 ? sec->nspecs : 32;
+  double before[32];
+  for (size_t k = 0; k < n; k++) before[k] = dv_setting_value(&sec->specs[k], &sc->settings[i]);
+  sc->replaced[i][0] = '\0';
+  if (!sec->check) return 0;
+  if (sec->check(sc, &sc->settings[i], issue)) return -1;
+  for (size_t k = 0; k < n; k++) {
+    const double after = dv_setting_value(&sec->specs[k], &sc->settings[i]);
+    if (!(sc->given_keys[i] >> k & 1u) || after == before[k] || (isnan(after) && isnan(before[k])))
+      continue;
+    char was[48], now[48];
+    value_text(&sec->specs[k], before[k], was, sizeof was);
+    value_text(&sec->specs[k], after, now, sizeof now);
+    const size_t used = strlen(sc->replaced[i]);
+    snprintf(sc->replaced[i] + used, sizeof sc->replaced[i] - used, "%s%s %s -> %s",
+             used ? "; " : "", sec->specs[k].key, was, now);
+  }
+  return 0;
+}
+
+const char *dv_scenario_replaced(const dv_scenario *sc, const char *engine) {
+  const int i = find(sc, engine);
+  return i < 0 ? "" : sc->replaced[i];
+}
+
 double dv_scenario_tolerance(const dv_scenario *sc, const char *engine, dv_metric_id metric,
                              int *own) {
   double limit = INFINITY;

@@ -8,6 +8,9 @@
 #                  target (its [tolerance]: theta 1e-3 rad, path 1e-3 of the
 #                  6.65 m rolled), and report.json ("settings_why") and
 #                  report.md ("settings chosen:") give the choice and its reason
+#   given          a setting given and replaced by the engine's check (a step
+#                  longer than output_dt, a time constant under MuJoCo's two
+#                  steps) is named on stderr; one kept is not
 #   cause          with integrator=rk4 forced, MuJoCo fails and the cause names
 #                  the integrator, with its numbers
 set -u
@@ -48,6 +51,19 @@ cause)
   check '[ $code -eq 1 ]' "rk4 forced: exit $code, want 1: $(cat "$work/out")"
   check 'grep -q "cause: integrator (rk4 -> [a-z]*: path [0-9.e-]* -> [0-9.e-]* m" "$work/out"' \
     "the cause is not the integrator: $(cat "$work/out")"
+  ;;
+given)
+  "$diskval" simulate "$saucer" --engine ode --set engines.ode.timestep=0.01 \
+    --set engines.mujoco.timestep=1e-4 --set engines.mujoco.solref_timeconst=1e-6 \
+    --out "$work/g.csv" >/dev/null 2>"$work/err" || fail=1
+  check 'grep -q "engines.ode: given timestep 0.01 -> 0.005, replaced (.*output_dt" "$work/err"' \
+    "the ode step replaced silently: $(cat "$work/err")"
+  check 'grep -q "engines.mujoco: given solref_timeconst 1e-06 -> 0.0002, replaced" "$work/err"' \
+    "the mujoco time constant replaced silently: $(cat "$work/err")"
+  check '[ "$(jq .settings.timestep "$work/g.csv.json")" = 0.005 ]' "ode ran another step"
+  "$diskval" simulate "$saucer" --engine ode --set engines.ode.timestep=0.001 \
+    --out "$work/k.csv" >/dev/null 2>"$work/err" || fail=1
+  check '! grep -q "replaced" "$work/err"' "a kept step said replaced: $(cat "$work/err")"
   ;;
 *) echo "unknown mode $mode"; exit 2 ;;
 esac
