@@ -45,6 +45,27 @@ int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {
   return shape && strcmp(shape, k->thin_choice) != 0;
 }
 
+void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, char *buf,
+                          size_t size) {
+  const dv_engine_search *se = engine->search;
+  const dv_engine_contact *k = engine->contact;
+  const char *keys[] = {se ? se->choice_key : NULL, se ? se->step_key : NULL,
+                        k ? k->softness_key : NULL, k ? k->geom_key : NULL};
+  size_t n = 0;
+  buf[0] = '\0';
+  for (size_t i = 0; i < sizeof keys / sizeof keys[0] && n < size; i++) {
+    const dv_setting_spec *sp = keys[i] ? dv_settings_find(engine->settings, keys[i]) : NULL;
+    if (!sp) continue;
+    const double v = dv_scenario_get(sc, engine->name, sp->key);
+    const char *name = sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
+    const int w = name ? snprintf(buf + n, size - n, "%s%s %s", n ? ", " : "", sp->key, name)
+                       : snprintf(buf + n, size - n, "%s%s %.3g%s%s", n ? ", " : "", sp->key, v,
+                                  sp->unit[0] ? " " : "", sp->unit);
+    if (w < 0) return;
+    n += (size_t)w;
+  }
+}
+
 /* every engine's settings table, NULL-terminated */
 static void tables(const dv_settings_section **out) {
   size_t n = 0;

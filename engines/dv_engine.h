@@ -149,6 +149,12 @@ void dv_engine_limit_detail(int lower, double theta_limit, double t, char *buf, 
 /* does engine simulate a stand-in shape in sc, not the exact thin disk (0 for references) */
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* the knobs of engine that decide its answer, as they ran in sc: "integrator
+ * implicit, timestep 8e-06 s, solref_timeconst 1.6e-05 s, geom thin" ("" for
+ * an engine with none) */
+void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, char *buf,
+                          size_t size);
+
 /* sc, loaded against every engine's settings table (scenario.h) */
 int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
                             dv_scenario *sc, dv_error *err);

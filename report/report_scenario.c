@@ -185,6 +185,9 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddStringToObject(o, "version", r->engine->version());
   cJSON_AddItemToObject(o, "settings", dv_run_meta_settings(r->engine, c->sc));
   cJSON_AddStringToObject(o, "settings_why", dv_scenario_derived(c->sc, r->engine->name));
+  char knobs[256];
+  dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
+  cJSON_AddStringToObject(o, "ran_with", knobs);
   return o;
 }
 
@@ -278,6 +281,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             100 * r->window_fraction, r->pointwise_end);
     fprintf(fp, "Horizon: %s.\n\n", r->horizon_why);
     if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
+    char knobs[256];
+    dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
+    if (knobs[0]) fprintf(fp, "%s ran with %s.\n\n", r->engine->name, knobs);
     if (dv_scenario_derived(c->sc, r->engine->name)[0])
       fprintf(fp, "%s settings chosen: %s.\n\n", r->engine->name,
               dv_scenario_derived(c->sc, r->engine->name));

@@ -205,6 +205,7 @@ static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   dv_report_escape_put(fp, "<td>", eng->string, 0, "</td>");
   dv_report_escape_put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
   fprintf(fp, "<td class=\"%s\">%s</td>", ok ? "pass" : "fail", ok ? "pass" : "FAIL");
+  dv_report_escape_put(fp, "<td>", text(eng, "ran_with"), 0, "</td>");
   for (size_t k = 0; k < sizeof metrics / sizeof *metrics; k++)
     put_num(fp, "<td class=\"n\">", item(eng, metrics[k]), "</td>");
   put_num(fp, "<td class=\"n\">", item(item(eng, "geometry_share"), "theta_max_err"), "</td>");
@@ -290,7 +291,7 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
           failing, errors);
   fputs(
       "<table>\n<tr><th>scenario</th><th>engine</th><th>outcome</th><th>verdict</th>"
-      "<th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
+      "<th>ran with</th><th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
       "<th>energy_drift</th><th>geometry share</th><th>largest margin (value / limit)</th>"
       "<th>wall_per_sim_s</th><th>what decided; failures</th></tr>\n",
       fp);
@@ -299,7 +300,7 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
     if (es[i].error[0]) {
       fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
       dv_report_escape_put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
-      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"6\"></td><td>",
+      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"8\"></td><td>",
                            es[i].error, 0, "</td></tr>\n");
     }
     cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);

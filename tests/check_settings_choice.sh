@@ -7,7 +7,8 @@
 #   reported       compare at defaults: both engines agree within the saucer's
 #                  target (its [tolerance]: theta 1e-3 rad, path 1e-3 of the
 #                  6.65 m rolled), and report.json ("settings_why") and
-#                  report.md ("settings chosen:") give the choice and its reason
+#                  report.md ("settings chosen:") give the choice and its reason,
+#                  and both say which step ran ("ran with")
 #   given          a setting given and replaced by the engine's check (a step
 #                  longer than output_dt, a time constant under MuJoCo's two
 #                  steps) is named on stderr; one kept is not
@@ -42,6 +43,11 @@ reported)
       "report.json: no choice for $e: $(jq -c ".engines.$e.settings_why" "$work/r/saucer/report.json")"
     check 'grep -q "^$e settings chosen: .*from a probe of" "$work/r/saucer/report.md"' \
       "report.md: no choice for $e"
+    dt=$(printf '%.3g' "$(jq .engines.$e.settings.timestep "$work/r/saucer/report.json")")
+    check 'grep -q "^$e ran with .*timestep $dt s" "$work/r/saucer/report.md"' \
+      "report.md does not say which step ran ($dt s): $(grep "^$e ran with" "$work/r/saucer/report.md")"
+    check 'jq -e ".engines.$e.ran_with | test(\"timestep $dt s\")" "$work/r/saucer/report.json" >/dev/null' \
+      "report.json ran_with is not the step that ran ($dt s)"
   done
   ;;
 cause)

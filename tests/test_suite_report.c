@@ -211,6 +211,9 @@ static void check_junit(const char *xml, const char *schema, const char *path, i
   CHECK(strstr(xml, "name=\"harness_failed\"") && strstr(xml, "classname=\"falling\" name=\"ode\""),
         "test case names");
   CHECK(strstr(xml, "theta_max_err = 0.21 &gt; 0.05"), "failure text not escaped");
+  CHECK(count(xml, "<property name=\"ran_with\" value=\"integrator implicit, timestep 8e-06 s\"") ==
+            1,
+        "the settings that ran, in the JUnit properties");
   /* real times: an engine's own run; a scenario's also counts its reference runs
    * (rolling_pass: reference 0.25 + horizon 0.5 + mujoco 0.1 and its matched
    * reference 0.05 + ode 0.25 s/s over its 2 s window, a report without wall_s) */
@@ -378,6 +381,7 @@ static void check_full(const char *fixtures, const char *out) {
     CHECK(!strstr(html, "<script") && strstr(html, "<style>"), "scripts or no inline CSS");
     CHECK(strstr(html, "rolling_pass/report.md") && strstr(html, "rolling_pass/ode.csv"), "links");
     CHECK(count(html, "class=\"err\">ERROR") == NERRORED, "error rows");
+    CHECK(strstr(html, "<td>integrator implicit, timestep 8e-06 s</td>"), "the settings that ran");
     xml_ok(html, "index.html");
     xmllint(path, NULL);
   }
