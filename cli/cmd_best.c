@@ -13,12 +13,16 @@ static const char HELP[] =
     "\n"
     "Search the engine's settings (its integrator or stepper, and its timestep; the\n"
     "reference: integrator and rtol) for the cheapest run whose max theta error is\n"
-    "at most 0.5 X rad (a margin of 2 below the limit): from the default step, double\n"
-    "or halve until the answer changes, then bisect six times on a log scale, for each\n"
-    "integrator. Cost is counted, so the answer does not depend on timing: steps per\n"
-    "simulated second times the integrator's seconds per step, calibrated once as the\n"
-    "median over its probes (printed with min and max). Prints every probe (meets,\n"
-    "marginal: within X but above the margin, exceeds, failed) and the winner.\n"
+    "at most 0.5 X rad (a margin of 2 below the limit): every integrator at the\n"
+    "default step first; one whose error there ties another's (within 1 percent) at\n"
+    "1.5x the cost a step or more is not searched further; for the others, double or\n"
+    "halve the step until the answer changes, then bisect on a log scale until the\n"
+    "step is known to 10 percent. Cost is counted, so the answer does not depend on\n"
+    "timing: steps per simulated second times the integrator's seconds per step,\n"
+    "calibrated once as the median over its probes (printed with min and max). Each\n"
+    "probe is told on stderr as it ends, with a forecast of the rest (--quiet: not);\n"
+    "stdout lists every probe (meets, marginal: within X but above the margin,\n"
+    "exceeds, failed) and the winner.\n"
     "A failed probe says why. Exit status 1 when no probe meets 0.5 X, 2 when no probe\n"
     "could run at all.\n";
 
@@ -48,6 +52,7 @@ static int print_search(const dv_search *s) {
     printf(" %s %.3g (%.3g..%.3g, %d)", c->choice, c->median, c->min, c->max, c->runs);
   }
   printf("\n");
+  if (s->skipped[0]) printf("%s\n", s->skipped);
   if (s->best < 0) {
     printf("no probe meets theta error <= %g x %g rad\n", s->margin, s->tolerance);
     return DV_EXIT_FAIL;

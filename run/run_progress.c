@@ -2,6 +2,7 @@
 #include "run_progress.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -170,6 +171,23 @@ void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engin
   snprintf(what, sizeof what, "%.40s: %s to t = %g s", sc->name, engine->name, sc->duration);
   snprintf(basis, sizeof basis, "its rate timed for %g s", DV_PROGRESS_PROBE_S);
   announce(what, total, 0, basis);
+}
+
+void dv_run_progress_plan_total(const char *what, double seconds, const char *basis) {
+  if (!P.warn || P.depth > 0 || P.planned || !(seconds > DV_PROGRESS_WARN_S)) return;
+  P.planned = 1;
+  announce(what, seconds, 0, basis);
+}
+
+void dv_run_progress_say(const char *fmt, ...) {
+  if (!P.warn || P.depth > 0) return;
+  char text[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(text, sizeof text, fmt, ap);
+  va_end(ap);
+  clear();
+  fprintf(stderr, "diskval %s: %s\n", P.command, text);
 }
 
 void dv_run_progress_run_begin(const char *scenario, const char *engine, double duration) {

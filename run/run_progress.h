@@ -78,6 +78,14 @@ void dv_run_progress_tasks_begin(const char *noun, size_t n);
 void dv_run_progress_task_ended(const char *note);
 void dv_run_progress_tasks_end(void);
 
+/* work of a known forecast begins (best's search): announced as above when
+ * longer than DV_PROGRESS_WARN_S */
+void dv_run_progress_plan_total(const char *what, double seconds, const char *basis);
+
+/* one line on stderr, "diskval COMMAND: text", where the warning is on and
+ * not in a pool's task (best's probes as each ends) */
+void dv_run_progress_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
 /* dv_run_progress_task_ended(NULL) as the exec pool's on_result */
 void dv_run_progress_on_result(size_t k, int ran, void *ctx);
 

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_clock.h"
+#include "run_progress.h"
 #include "scenario.h"
 
 /* what a search varies: the engine's declared keys, and the names of its choices */
@@ -17,6 +19,7 @@ typedef struct space {
   const dv_setting_spec *choice;     /* the choice key's spec */
   char choice_key[96], step_key[96]; /* engines.SECTION.KEY */
   double lo, hi;                     /* range of the step */
+  double wall_exponent;              /* a run's wall ~ step^-this, until two probes measure it */
 } space;
 typedef struct ctx {
   const dv_scenario *sc; /* loaded once: every probe varies it in memory */
@@ -58,39 +61,114 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   return p->pass;
 }
 
-/* largest passing step for choice: bracket from start by factors of 2, then
- * bisect on a log scale; returns the passing step or NAN, sets *fail_probe */
-static double largest(ctx *c, const char *choice, double start, int *fail_probe, dv_error *err) {
-  double pass = NAN, fail = NAN, h = start;
-  *fail_probe = -1;
-  for (int i = 0; i < DV_SEARCH_BRACKET; i++) {
-    const int ok = probe(c, choice, h, err);
-    if (ok < 0) return pass;
-    if (ok) {
-      pass = h;
-      if (!isnan(fail) || h * 2.0 > c->sp.hi) break;
-      h *= 2.0;
-    } else {
-      fail = h;
-      *fail_probe = (int)c->out->nprobes - 1;
-      if (!isnan(pass) || h / 2.0 < c->sp.lo) break;
-      h /= 2.0;
+/* the bracketing and bisection of one choice's step, one probe at a time, so
+ * that the real search and its forecast take the same path */
+typedef struct bracket {
+  double pass, fail, h; /* h: the next step to probe, NAN when done */
+  int bisecting, n;     /* the phase and the probes made in it */
+} bracket;
+
+static bracket bracket_start(double start) { return (bracket){NAN, NAN, start, 0, 0}; }
+
+/* record the probe of b->h and choose the next: from start by factors of 2
+ * until the answer changes, then bisection on a log scale to the resolution */
+static void bracket_record(bracket *b, int ok, double lo, double hi) {
+  if (ok)
+    b->pass = b->h;
+  else
+    b->fail = b->h;
+  const int bracketed = !isnan(b->pass) && !isnan(b->fail);
+  b->n++;
+  if (!b->bisecting) {
+    const double next = ok ? b->h * 2.0 : b->h / 2.0;
+    if (!bracketed && b->n < DV_SEARCH_BRACKET && next <= hi && next >= lo) {
+      b->h = next;
+      return;
     }
+    b->bisecting = 1, b->n = 0;
   }
-  for (int i = 0; i < DV_SEARCH_BISECTIONS && !isnan(pass) && !isnan(fail) &&
-                  fmax(pass, fail) / fmin(pass, fail) > DV_SEARCH_RESOLUTION;
-       i++) {
-    const double mid = sqrt(pass * fail);
-    const int ok = probe(c, choice, mid, err);
-    if (ok < 0) break;
-    if (ok)
-      pass = mid;
-    else {
-      fail = mid;
-      *fail_probe = (int)c->out->nprobes - 1;
-    }
+  b->h = bracketed && b->n < DV_SEARCH_BISECTIONS &&
+                 fmax(b->pass, b->fail) / fmin(b->pass, b->fail) > DV_SEARCH_RESOLUTION
+             ? sqrt(b->pass * b->fail)
+             : NAN;
+}
+
+/* the wall seconds the rest of b will take, forecast from the choice's last
+ * probes: theta error ~ step^p and the engine's run ~ step^-q (p and q from its
+ * last two probes where they differ in step, else 1 and the engine's q), plus
+ * the rest of the last probe's wall time (the comparison) */
+static double forecast(const ctx *c, const bracket *b, const dv_probe *last, const dv_probe *prev,
+                       double probe_wall) {
+  const double last_wall = last->point.wall_s, prev_wall = prev ? prev->point.wall_s : NAN;
+  const double overhead = fmax(probe_wall - last_wall, 0.0);
+  const dv_search *s = c->out;
+  double p = 1.0, q = c->sp.wall_exponent;
+  const double e1 = last->point.metric[DV_THETA_MAX_ERR], h1 = last->step;
+  if (prev && prev->step != h1) {
+    const double e0 = prev->point.metric[DV_THETA_MAX_ERR], r = log(prev->step / h1);
+    if (e0 > 0.0 && e1 > 0.0 && isfinite(e0) && isfinite(e1))
+      p = fmin(fmax(log(e0 / e1) / r, 0.5), 8.0);
+    if (prev_wall > 0.0 && last_wall > 0.0) q = fmin(fmax(-log(prev_wall / last_wall) / r, 0.0), 2.0);
   }
-  return pass;
+  bracket m = *b;
+  double wall = 0.0;
+  for (int i = 0; !isnan(m.h) && i < DV_SEARCH_BRACKET + DV_SEARCH_BISECTIONS; i++) {
+    wall += overhead + last_wall * pow(h1 / m.h, q);
+    const double e = e1 > 0.0 && isfinite(e1) ? e1 * pow(m.h / h1, p) : 0.0;
+    bracket_record(&m, e <= s->margin * s->tolerance, c->sp.lo, c->sp.hi);
+  }
+  return wall;
+}
+
+/* one choice's search under way */
+typedef struct lane {
+  const char *choice;  /* NULL: the scenario's */
+  bracket b;
+  int last, prev;      /* its last two probes, or -1 */
+  double wall_per_step; /* s, of its last probe */
+  double last_wall;     /* s, its last probe's */
+  int fail_probe;      /* the probe just above its limit, or -1 */
+  int skipped;         /* not searched: another choice ties it at less cost */
+} lane;
+
+/* probe lane's next step; 1 passed, 0 not, -1 an error (the lane ends) */
+static int step_lane(ctx *c, lane *l, dv_error *err) {
+  const double began = dv_clock_now();
+  const int ok = probe(c, l->choice, l->b.h, err);
+  const double wall = dv_clock_now() - began;
+  if (ok < 0) {
+    l->b.h = NAN;
+    return -1;
+  }
+  const dv_probe *p = &c->out->probes[c->out->nprobes - 1];
+  l->prev = l->last;
+  l->last = (int)c->out->nprobes - 1;
+  if (p->point.steps > 0) l->wall_per_step = wall / (double)p->point.steps;
+  l->last_wall = wall;
+  if (!ok) l->fail_probe = l->last;
+  bracket_record(&l->b, ok, c->sp.lo, c->sp.hi);
+  return ok;
+}
+
+/* the wall seconds lanes[from..n) have left, forecast */
+static double left(const ctx *c, const lane *lanes, size_t n, size_t from) {
+  double total = 0.0;
+  for (size_t i = from; i < n; i++)
+    if (!lanes[i].skipped && lanes[i].last >= 0 && !isnan(lanes[i].b.h))
+      total += forecast(c, &lanes[i].b, &c->out->probes[lanes[i].last],
+                        lanes[i].prev >= 0 ? &c->out->probes[lanes[i].prev] : NULL,
+                        lanes[i].last_wall);
+  return total;
+}
+
+/* a line on stderr for the probe just ended, with the forecast of the rest */
+static void tell(const ctx *c, double rest) {
+  const dv_probe *p = &c->out->probes[c->out->nprobes - 1];
+  char err[32] = "no error measured";
+  if (p->state != DV_PROBE_FAILED)
+    snprintf(err, sizeof err, "theta error %.3e rad", p->point.metric[DV_THETA_MAX_ERR]);
+  dv_run_progress_say("%s %s %.4g: %s, %s; about %.0f s left", c->sp.engine, p->choice, p->step,
+                      err, dv_probe_state_name(p->state), rest);
 }
 
 static int setup(const dv_scenario *sc, const char *engine, double tol, dv_search *out, ctx *c,
@@ -124,6 +202,7 @@ static int setup(const dv_scenario *sc, const char *engine, double tol, dv_searc
   out->tolerance = tol;
   out->margin = 1.0;
   out->best = out->first_failure = -1;
+  c->sp.wall_exponent = type->contact ? 1.0 : 0.125; /* a timestep; rtol, an 8th order's */
   out->limit = NAN;
   return DV_OK;
 }
@@ -178,22 +257,69 @@ static int cheaper(const dv_search *s, size_t a, size_t b) {
   return pa->steps_per_sim_s < pb->steps_per_sim_s;
 }
 
-/* probe every choice (best), or only the scenario's (stability) */
+/* a choice whose first probe's error ties an earlier choice's at the same
+ * step (DV_SEARCH_TIE) and whose steps cost DV_SEARCH_TIE_COST times more
+ * would search the same curve at more cost: it is not searched */
+static void skip_ties(ctx *c, lane *lanes, size_t n) {
+  for (size_t j = 1; j < n; j++)
+    for (size_t i = 0; i < j && !lanes[j].skipped; i++) {
+      if (lanes[i].skipped || lanes[i].last < 0 || lanes[j].last < 0) continue;
+      const dv_probe *a = &c->out->probes[lanes[i].last], *b = &c->out->probes[lanes[j].last];
+      const double ea = a->point.metric[DV_THETA_MAX_ERR], eb = b->point.metric[DV_THETA_MAX_ERR];
+      if (a->state == DV_PROBE_FAILED || b->state == DV_PROBE_FAILED || !(ea > 0.0) ||
+          fabs(eb - ea) > DV_SEARCH_TIE * ea ||
+          !(lanes[j].wall_per_step > DV_SEARCH_TIE_COST * lanes[i].wall_per_step))
+        continue;
+      lanes[j].skipped = 1;
+      dv_search *s = c->out;
+      const size_t used = strlen(s->skipped);
+      snprintf(s->skipped + used, sizeof s->skipped - used,
+               "%s%s not searched: its error at %.4g (%.4g rad) ties %s's, at %.2gx the cost a step",
+               used ? "; " : "", lanes[j].choice, b->step, eb, lanes[i].choice,
+               lanes[j].wall_per_step / lanes[i].wall_per_step);
+    }
+}
+
+/* probe every choice (best), or only the scenario's (stability): each
+ * choice's start first, so that ties are seen and the whole search is
+ * forecast (and announced when long) before the rest */
 static int search(const dv_scenario *sc, const char *engine, double tol, int every_choice,
                   dv_search *out, dv_error *err) {
   ctx c;
   double start = NAN;
   const int status = setup(sc, engine, tol, out, &c, &start, err);
   if (status) return status;
-  if (!every_choice) {
-    out->limit = largest(&c, NULL, start, &out->first_failure, err);
-    return DV_OK;
-  }
-  out->margin = DV_SEARCH_MARGIN;
+  lane lanes[DV_SEARCH_MAX_CHOICES];
+  size_t n = 0;
   const char *choice;
-  for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++) {
-    int fail;
-    largest(&c, choice, start, &fail, err);
+  if (!every_choice)
+    lanes[n++] = (lane){NULL, bracket_start(start), -1, -1, NAN, NAN, -1, 0};
+  else
+    for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++)
+      lanes[n++] = (lane){choice, bracket_start(start), -1, -1, NAN, NAN, -1, 0};
+  out->margin = every_choice ? DV_SEARCH_MARGIN : 1.0;
+  for (size_t i = 0; i < n; i++) {
+    step_lane(&c, &lanes[i], err);
+    tell(&c, left(&c, lanes, n, 0));
+  }
+  skip_ties(&c, lanes, n);
+  if (out->skipped[0]) dv_run_progress_say("%s", out->skipped);
+  char what[96];
+  snprintf(what, sizeof what, "%.40s: the search of %s", sc->name, engine);
+  const double forecast_s = left(&c, lanes, n, 0), began = dv_clock_now();
+  dv_run_progress_plan_total(what, forecast_s, "forecast from each choice's first probe");
+  dv_run_progress_say("the rest of the search forecast at %.3g s", forecast_s);
+  for (size_t i = 0; i < n; i++)
+    while (!lanes[i].skipped && !isnan(lanes[i].b.h)) {
+      step_lane(&c, &lanes[i], err);
+      tell(&c, left(&c, lanes, n, i));
+    }
+  dv_run_progress_say("the rest of the search took %.3g s (forecast %.3g s)",
+                      dv_clock_now() - began, forecast_s);
+  if (!every_choice) {
+    out->limit = lanes[0].b.pass;
+    out->first_failure = lanes[0].fail_probe;
+    return DV_OK;
   }
   calibrate(out);
   for (size_t i = 0; i < out->nprobes; i++)

@@ -31,6 +31,8 @@
 #define DV_SEARCH_MAX_CHOICES 8 /* choices of the discrete setting a search takes */
 #define DV_SEARCH_MAX_PROBES (DV_SEARCH_MAX_CHOICES * (DV_SEARCH_BRACKET + DV_SEARCH_BISECTIONS))
 #define DV_SEARCH_MARGIN 0.5 /* best: the error it accepts, as a share of the tolerance */
+#define DV_SEARCH_TIE 0.01   /* errors within 1 % at the same step are the same error */
+#define DV_SEARCH_TIE_COST 1.5 /* ... and a choice whose steps cost this much more is not searched */
 
 /* a probe's state, one word each: meets (within the margin), marginal (within
  * the tolerance, above the margin), exceeds, failed (the run did not complete,
@@ -71,6 +73,7 @@ typedef struct dv_search {
   int first_failure; /* stability: the probe just above the limit, or -1 */
   size_t nchoices;   /* best: the calibration of each choice probed */
   dv_step_cost step_cost[DV_SEARCH_MAX_CHOICES];
+  char skipped[512]; /* best: the choices not searched and why ("" when none) */
 } dv_search;
 
 /* the cheapest settings of engine meeting theta_max_err <= DV_SEARCH_MARGIN tol */
