@@ -27,6 +27,7 @@ typedef struct xy_curve {
   const int *marked; /* the caller's, or NULL */
   size_t n;
   int style, any;  /* any: a point to draw */
+  int zeros;       /* every y is 0: on a log axis, below it rather than missing */
   PLINT colour;    /* cmap0 index */
   char label[128]; /* PLplot-escaped */
 } xy_curve;
@@ -66,10 +67,12 @@ static int fill_curve(xy_curve *c, const dv_plot_curve *in, int flags) {
     c->y = malloc(c->n * sizeof *c->y);
     if (!c->x || !c->y) return -1;
   }
+  c->zeros = c->n > 0 && (flags & DV_PLOT_LOGY);
   for (size_t i = 0; i < c->n; i++) {
     c->x[i] = axis_value(in->x[i], flags & DV_PLOT_LOGX);
     c->y[i] = axis_value(in->y[i], flags & DV_PLOT_LOGY);
     c->any |= point_ok(c, i);
+    c->zeros &= in->y[i] == 0.0;
   }
   dvp_escape(c->label, sizeof c->label, in->label, "");
   return 0;
@@ -251,16 +254,20 @@ static void draw_figure(const void *arg) {
   draw_legend(f, r);
 }
 
-/* f's title: title, then "(no data: ...)" naming the labelled curves without a drawable point */
+/* f's title: title, then "(zero at every point: ...)" and "(no data: ...)"
+ * naming the labelled curves without a drawable point */
 static void title_with_missing(xy_figure *f, const char *title) {
   size_t k = (size_t)snprintf(f->title, sizeof f->title, "%s", title ? title : "");
-  int named = 0;
-  for (size_t i = 0; i < f->n && k < sizeof f->title; i++) {
-    if (f->c[i].any || !f->c[i].label[0]) continue;
-    k += (size_t)snprintf(f->title + k, sizeof f->title - k, "%s%s",
-                          named++ ? ", " : " (no data: ", f->c[i].label);
+  for (int zeros = 1; zeros >= 0; zeros--) {
+    int named = 0;
+    for (size_t i = 0; i < f->n && k < sizeof f->title; i++) {
+      if (f->c[i].any || !f->c[i].label[0] || f->c[i].zeros != zeros) continue;
+      k += (size_t)snprintf(f->title + k, sizeof f->title - k, "%s%s",
+                            named++ ? ", " : zeros ? " (zero at every point: " : " (no data: ",
+                            f->c[i].label);
+    }
+    if (named && k < sizeof f->title) k += (size_t)snprintf(f->title + k, sizeof f->title - k, ")");
   }
-  if (named && k < sizeof f->title) snprintf(f->title + k, sizeof f->title - k, ")");
 }
 
 /* free the coordinates of f */

@@ -179,6 +179,10 @@ void dv_run_progress_plan_total(const char *what, double seconds, const char *ba
   announce(what, seconds, 0, basis);
 }
 
+void dv_run_progress_announce(const char *what, double seconds, const char *basis) {
+  if (P.warn && P.depth == 0 && seconds > DV_PROGRESS_WARN_S) announce(what, seconds, 0, basis);
+}
+
 void dv_run_progress_say(const char *fmt, ...) {
   if (!P.warn || P.depth > 0) return;
   char text[1024];

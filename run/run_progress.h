@@ -82,6 +82,10 @@ void dv_run_progress_tasks_end(void);
  * longer than DV_PROGRESS_WARN_S */
 void dv_run_progress_plan_total(const char *what, double seconds, const char *basis);
 
+/* more work after what was planned (attribution after a failed comparison):
+ * announced when longer than DV_PROGRESS_WARN_S, whatever was announced before */
+void dv_run_progress_announce(const char *what, double seconds, const char *basis);
+
 /* one line on stderr, "diskval COMMAND: text", where the warning is on and
  * not in a pool's task (best's probes as each ends) */
 void dv_run_progress_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));

@@ -13,7 +13,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_clock.h"
 #include "dv_engine.h"
+#include "run_progress.h"
 #include "search_attribute.h"
 #include "search_sweep.h"
 
@@ -57,6 +59,7 @@ typedef struct knob {
   char change[64];
   char over[3][128];
   size_t n;
+  double cost; /* its run's cost as a share of the scene's run (steps) */
 } knob;
 
 /* the knobs engine declares, changed from sc's values */
@@ -69,7 +72,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   const int now = (int)dv_scenario_get(sc, name, se->choice_key);
   for (size_t v = 0; ck && dv_setting_choice(ck, v) && n < DV_MAX_KNOBS - 4; v++) {
     if ((int)v == now) continue;
-    kn[n] = (knob){se->choice_key, "", {""}, 1};
+    kn[n] = (knob){se->choice_key, "", {""}, 1, 1.0};
     snprintf(kn[n].change, sizeof kn[n].change, "%s -> %s", dv_setting_choice(ck, (size_t)now),
              dv_setting_choice(ck, v));
     snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, se->choice_key,
@@ -79,7 +82,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   const double dt = dv_scenario_get(sc, name, se->step_key);
   const double soft = dv_scenario_get(sc, name, k->softness_key);
   const double friction = dv_scenario_get(sc, name, k->friction_key);
-  kn[n] = (knob){se->step_key, "", {""}, 2};
+  kn[n] = (knob){se->step_key, "", {""}, 2, 4.0};
   snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g s", dt, dt / 4);
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, se->step_key, dt / 4);
   snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, k->softness_key,
@@ -88,19 +91,19 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   /* a stiffer contact, at a step that resolves it where the library ties them */
   const double stiff = fmax(soft, k->softness_min_steps * dt) * k->stiffer;
   const double step = k->softness_min_steps > 0.0 ? fmin(dt, stiff / k->softness_min_steps) : dt;
-  kn[n] = (knob){"contact softness", "", {""}, 2};
+  kn[n] = (knob){"contact softness", "", {""}, 2, dt / step};
   snprintf(kn[n].change, sizeof kn[n].change, "%s %.3g -> %.3g", k->softness_key,
            fmax(soft, k->softness_min_steps * dt), stiff);
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->softness_key, stiff);
   snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, se->step_key, step);
   n++;
-  kn[n] = (knob){"friction", "", {""}, 1};
+  kn[n] = (knob){"friction", "", {""}, 1, 1.0};
   snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g", friction, 10 * friction);
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->friction_key,
            10 * friction);
   n++;
   if (dv_engine_stand_in(engine, sc)) {
-    kn[n] = (knob){"geometry", "", {""}, 1};
+    kn[n] = (knob){"geometry", "", {""}, 1, 1.0};
     snprintf(kn[n].change, sizeof kn[n].change, "stand-in -> %s", k->thin_choice);
     snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, k->geom_key,
              k->thin_choice);
@@ -114,18 +117,25 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine || !engine->contact || !engine->search)
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute", engine_name);
-  dv_knob_probe base = {0};
   dv_sweep_point p;
+  const double began = dv_clock_now();
   if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
+  const double base_wall = dv_clock_now() - began;
   memcpy(out->base, p.metric, sizeof out->base);
   memcpy(out->limit, p.limit, sizeof out->limit);
   out->base_theta_thin = p.theta_thin;
   out->judged = 0;
   for (int m = 0; m < DV_NMETRICS; m++)
     if (p.metric[m] > p.limit[m]) out->judged |= 1u << m;
-  (void)base;
   knob kn[DV_MAX_KNOBS];
   out->nknobs = declare(sc, engine, kn);
+  double share = 0.0; /* the knobs' runs, each a comparison like the base's */
+  for (size_t i = 0; i < out->nknobs; i++) share += fmax(kn[i].cost, 1.0);
+  char what[96], basis[96];
+  snprintf(what, sizeof what, "%.40s: %s: the causes over %zu knobs", sc->name, engine->name,
+           out->nknobs);
+  snprintf(basis, sizeof basis, "%.3g x the %.3g s its run and comparison took", share, base_wall);
+  dv_run_progress_announce(what, share * base_wall, basis);
   out->cause = -1;
   for (size_t i = 0; i < out->nknobs; i++) {
     dv_knob_probe *k = &out->knobs[i];

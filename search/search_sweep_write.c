@@ -200,13 +200,19 @@ static int write_plots(const char *dir, const dv_sweep *s, curves *cs, const cur
                        dv_error *err) {
   dv_plot_curve pc[DV_PLOT_MAX_CURVES];
   char path[1200], title[200], shown[64] = "";
+  char ref_label[DV_PLOT_MAX_CURVES][128]; /* the reference's errors are against itself, tighter */
   const size_t nc = cs->n < DV_PLOT_MAX_CURVES ? cs->n : DV_PLOT_MAX_CURVES;
   const size_t nr = rc->n < DV_PLOT_MAX_CURVES - nc ? rc->n : DV_PLOT_MAX_CURVES - nc;
   if (nc < cs->n) /* a plot holds so many curves; the tables have them all */
     snprintf(shown, sizeof shown, " (the first %zu of %zu curves)", nc, cs->n);
   for (size_t c = 0; c < nc + nr; c++) {
     const curve *cv = c < nc ? &cs->c[c] : &rc->c[c - nc];
-    pc[c] = (dv_plot_curve){cv->label, cv->n, cv->x, cv->y, cv->marked, DV_CURVE_LINE_POINTS,
+    const char *label = cv->label;
+    if (c >= nc) {
+      snprintf(ref_label[c], sizeof ref_label[c], "%.90s (vs its own tighter run)", cv->label);
+      label = ref_label[c];
+    }
+    pc[c] = (dv_plot_curve){label, cv->n, cv->x, cv->y, cv->marked, DV_CURVE_LINE_POINTS,
                             (int)c + 1};
   }
   snprintf(title, sizeof title, "%s: theta error against cost%s", s->scenario, shown);

@@ -45,6 +45,8 @@ static int make_traj(dv_traj *tr, size_t n, double offset) {
 }
 
 /* the whole file at path, or NULL */
+static char *svg_text(const char *svg);
+
 static char *slurp(const char *path, long *size) {
   FILE *fp = fopen(path, "rb");
   if (!fp) return NULL;
@@ -229,6 +231,23 @@ static void test_xy(int keep) {
   CHECK(dv_report_plot_xy(path, "nothing", "x", "y", NULL, 0, DV_PLOT_LOGY, &err) == DV_OK,
         "none: %s", err.msg);
   check_svg(path, 0);
+  /* a curve whose every error is 0 (an exact steady motion) is named as such, not "no data" */
+  static const double zero[2] = {0.0, 0.0}, hs[2] = {1e-4, 2e-4}, es[2] = {1e-6, 2e-6};
+  const dv_plot_curve exact[] = {{"rk4", 2, hs, es, NULL, DV_CURVE_LINE_POINTS, 1},
+                                 {"exact", 2, hs, zero, NULL, DV_CURVE_LINE_POINTS, 2}};
+  snprintf(path, sizeof path, "%s/exact.svg", dir);
+  CHECK(dv_report_plot_xy(path, "errors", "h", "e", exact, 2, DV_PLOT_LOGX | DV_PLOT_LOGY, &err) ==
+            DV_OK,
+        "exact: %s", err.msg);
+  {
+    long size;
+    char *svg = slurp(path, &size), *text = svg ? svg_text(svg) : NULL;
+    CHECK(text && strstr(text, "zero at every point: exact") && !strstr(text, "no data"),
+          "an all-zero curve is not named as zero: %s", text ? text : "(unreadable)");
+    free(text);
+    free(svg);
+  }
+  unlink(path);
   check_xy_dir(dir);
 
   /* bad paths and arguments: an error status and a message, no file left */
