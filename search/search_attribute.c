@@ -5,7 +5,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "dv_clock.h"
 #include "dv_engine.h"
+#include "run_progress.h"
 #include "search_sweep.h"
 
 /* a plateau, where the errors do not fall with the step: an order below
@@ -76,7 +78,14 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   const int follows = k->softness_min_steps > 0.0;
   const dv_prober pr = {scenario, engine, 0};
   dv_attribution_errors e;
+  const double began = dv_clock_now();
   int status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
+  /* the split's runs (the thin disk, three steps, the stiff one), then the knobs' */
+  const double runs = 1.0 + 7.0 + (double)(1 << f) + dv_search_attribute_knobs_cost(scenario, engine);
+  char what[96], basis[96];
+  snprintf(what, sizeof what, "%.40s: %s: its cause (%.0f runs' worth)", scenario->name, name, runs);
+  snprintf(basis, sizeof basis, "its own run took %.3g s", dv_clock_now() - began);
+  if (!status) dv_run_progress_announce(what, runs * (dv_clock_now() - began), basis);
   if (!status) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
   for (int i = 0; !status && i < 3; i++)
     status =

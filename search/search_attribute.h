@@ -91,6 +91,11 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
 
 /* causes over every knob: the scenario's run, then each knob the engine
  * declares changed alone (search_attribute_knobs.c); fills the knob part of out */
+/* what dv_search_attribute_knobs will run, in runs of the scene's own cost */
+struct dv_engine_type;
+double dv_search_attribute_knobs_cost(const struct dv_scenario *sc,
+                                      const struct dv_engine_type *engine);
+
 int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
                               dv_error *err);
 

@@ -13,9 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "dv_clock.h"
 #include "dv_engine.h"
-#include "run_progress.h"
 #include "search_attribute.h"
 #include "search_sweep.h"
 
@@ -112,15 +110,22 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   return n;
 }
 
+double dv_search_attribute_knobs_cost(const dv_scenario *sc, const dv_engine_type *engine) {
+  knob kn[DV_MAX_KNOBS];
+  if (!engine->contact || !engine->search) return 0.0;
+  const size_t n = declare(sc, engine, kn);
+  double cost = 1.0; /* the scene's own run, then each knob's */
+  for (size_t i = 0; i < n; i++) cost += fmax(kn[i].cost, 1.0);
+  return cost;
+}
+
 int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv_attribution *out,
                               dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine || !engine->contact || !engine->search)
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute", engine_name);
   dv_sweep_point p;
-  const double began = dv_clock_now();
   if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
-  const double base_wall = dv_clock_now() - began;
   memcpy(out->base, p.metric, sizeof out->base);
   memcpy(out->limit, p.limit, sizeof out->limit);
   out->base_theta_thin = p.theta_thin;
@@ -129,13 +134,6 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
     if (p.metric[m] > p.limit[m]) out->judged |= 1u << m;
   knob kn[DV_MAX_KNOBS];
   out->nknobs = declare(sc, engine, kn);
-  double share = 0.0; /* the knobs' runs, each a comparison like the base's */
-  for (size_t i = 0; i < out->nknobs; i++) share += fmax(kn[i].cost, 1.0);
-  char what[96], basis[96];
-  snprintf(what, sizeof what, "%.40s: %s: the causes over %zu knobs", sc->name, engine->name,
-           out->nknobs);
-  snprintf(basis, sizeof basis, "%.3g x the %.3g s its run and comparison took", share, base_wall);
-  dv_run_progress_announce(what, share * base_wall, basis);
   out->cause = -1;
   for (size_t i = 0; i < out->nknobs; i++) {
     dv_knob_probe *k = &out->knobs[i];
