@@ -64,9 +64,11 @@ static uint64_t scene_key(const dv_scenario *sc, const dv_engine_type *engine,
   h = mix(h, &g.choice, sizeof g.choice);
   h = mix(h, &g.timestep, sizeof g.timestep);
   h = mix(h, &g.softness, sizeof g.softness);
-  const dv_engine_type *ref = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
-  const dv_settings_section *secs[2] = {engine->settings, ref->settings};
-  for (int s = 0; s < 2; s++) {
+  const dv_settings_section *secs[3] = {
+      engine->settings, dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->settings,
+      dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->settings};
+  h = mix(h, &sc->thickness, sizeof sc->thickness);
+  for (int s = 0; s < 3; s++) {
     const void *block = dv_scenario_settings(sc, secs[s]->name);
     for (size_t i = 0; block && i < secs[s]->nspecs; i++) {
       const double v = dv_setting_value(&secs[s]->specs[i], block);
@@ -144,7 +146,7 @@ static void probe_candidate(const dv_scenario *sc, const dv_engine_type *engine,
 }
 
 /* the reference's samples over the window, and the target over the duration */
-static int probe_reference(const dv_scenario *sc, probe *pr) {
+static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type, probe *pr) {
   dv_scene_scales s;
   dv_engine_scene_scales(sc, &s);
   double t = s.t[DV_SCALE_FALL];
@@ -168,8 +170,7 @@ static int probe_reference(const dv_scenario *sc, probe *pr) {
   *copy = *sc;
   copy->duration = pr->window;
   dv_sample ref[DV_CHOOSE_SAMPLES];
-  pr->n =
-      run_samples(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), copy, pr, pr->theta, pr->xy, ref);
+  pr->n = run_samples(ref_type, copy, pr, pr->theta, pr->xy, ref);
   free(copy);
   /* a reference that ends inside the window (an event), or stops describing
    * the physics (its validity window), ends what is compared there */
@@ -266,12 +267,21 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   probe pr;
   const char *no_probe = NULL;
   int status;
-  /* the shape may be derived after the step (a [disk] thickness): ask for it */
-  if (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0)
+  /* the shape may be derived after the step (a [disk] thickness): ask for it.
+   * The cylinder of [disk] thickness is judged against the matched reference,
+   * and probed against it; a shape given for a thin disk is a stand-in */
+  const dv_engine_contact *ct = engine->contact;
+  const int shape_given = ct && (dv_scenario_is_given(sc, engine->name, ct->geom_key) ||
+                                 dv_scenario_is_given(sc, engine->name, "half_thickness"));
+  const dv_engine_type *ref = dv_engine_of_role(sc->thickness > 0.0 && !shape_given
+                                                    ? DV_ENGINE_MATCHED_REFERENCE
+                                                    : DV_ENGINE_THIN_REFERENCE);
+  if (ref->role == DV_ENGINE_THIN_REFERENCE &&
+      (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0))
     no_probe = "a stand-in shape, whose reference is not the thin disk";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
-  else if ((status = probe_reference(sc, &pr)) == -2)
+  else if ((status = probe_reference(sc, ref, &pr)) == -2)
     no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
   else if (status)
     no_probe = "the reference does not run through the probe";

@@ -12,6 +12,10 @@
 #   given          a setting given and replaced by the engine's check (a step
 #                  longer than output_dt, a time constant under MuJoCo's two
 #                  steps) is named on stderr; one kept is not
+#   thick          (SAUCER is then a thick coin) the coin is probed against the
+#                  matched reference its verdict uses, not left unprobed at rk4
+#                  (the quarter spun upright: rk4 erred 0.135 rad against it;
+#                  the probe's choice, Euler at 6e-6 s, 0.0176 rad)
 #   cause          with integrator=rk4 forced, MuJoCo fails and the cause names
 #                  the integrator, with its numbers
 set -u
@@ -57,6 +61,13 @@ cause)
   check '[ $code -eq 1 ]' "rk4 forced: exit $code, want 1: $(cat "$work/out")"
   check 'grep -q "cause: integrator (rk4 -> [a-z]*: path [0-9.e-]* -> [0-9.e-]* m" "$work/out"' \
     "the cause is not the integrator: $(cat "$work/out")"
+  ;;
+thick)
+  "$diskval" simulate "$saucer" --engine mujoco --set scenario.duration=0.3 \
+    --out "$work/t.csv" >/dev/null 2>&1 || fail=1
+  why=$(jq -r .derived.reason "$work/t.csv.json")
+  check 'grep -q "from a probe of" <<<"$why"' "the thick coin was not probed: $why"
+  check '[ "$(jq -r .settings.geom "$work/t.csv.json")" = cylinder ]' "not the coin's cylinder"
   ;;
 given)
   "$diskval" simulate "$saucer" --engine ode --set engines.ode.timestep=0.01 \
