@@ -77,7 +77,7 @@ static const dv_setting_spec KEYS[] = {
     {"erp", NUM(erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "",
      "world ERP (inert: only contact joints)"},
     {"cfm", NUM(cfm), 0, 0, 1e-10, 0.0, 1.0, NULL, NULL, "",
-     "world CFM (inert: only contact joints)"},
+     "world CFM: the contact's friction rows (soft_cfm sets its normal row)"},
     {"friction_model", PICK(friction_model), 0, 0, 0, 0, 1, FRICTION_MODELS, NULL, "",
      "coefficient: dContactApprox1"},
     {"friction", NUM(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "", "coefficient, or N"},
