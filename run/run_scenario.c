@@ -108,7 +108,7 @@ static void pointwise_to_horizon(const dv_traj *eng, const dv_traj *ref, double 
 static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
   int failed[2] = {0, 0}; /* pointwise, timing-insensitive */
   for (int m = 0; m < DV_NMETRICS; m++)
-    if (!(r->vs_ref.value[m] <= r->tolerance[m]) && !isnan(r->tolerance[m]))
+    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) == DV_LIMIT_OVER)
       failed[!dv_run_metric_pointwise((dv_metric_id)m)] = 1;
   const int whole = r->pointwise_end >= r->vs_ref.t_window - 0.5 * sc->output_dt;
   char part[660];
@@ -201,9 +201,7 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
   const int judged =
       r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
   for (int m = 0; m < DV_NMETRICS && judged; m++)
-    if (isnan(r->tolerance[m])) /* a metric without a rule: not judged, never a pass */
-      continue;
-    else if (!(r->vs_ref.value[m] <= r->tolerance[m])) {
+    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) == DV_LIMIT_OVER) {
       add_failure(r, "%s: %s: %s = %.6g > %.6g (%s)", sc->name, name, dv_metric_names[m],
                   r->vs_ref.value[m], r->tolerance[m], r->limit_why[m]);
       if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;

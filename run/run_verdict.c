@@ -1,6 +1,8 @@
 /* run_verdict: the one name table of verdicts. */
 #include "run_verdict.h"
 
+#include <math.h>
+
 const char *dv_run_verdict_name(dv_verdict verdict) {
   static const char *const names[DV_NVERDICTS] = {
       [DV_VERDICT_AGREES] = "agrees",         [DV_VERDICT_EXCEEDS] = "exceeds tolerance",
@@ -30,4 +32,9 @@ int dv_run_verdict_failed(dv_verdict verdict) {
   return verdict == DV_VERDICT_DIVERGED || verdict == DV_VERDICT_LOST_CONTACT ||
          verdict == DV_VERDICT_ERROR || verdict == DV_VERDICT_INVALID ||
          verdict == DV_VERDICT_MISSING;
+}
+
+dv_limit_check dv_run_limit_check(double value, double limit) {
+  if (isnan(limit)) return DV_LIMIT_NONE;
+  return value <= limit ? DV_LIMIT_WITHIN : DV_LIMIT_OVER;
 }

@@ -29,4 +29,10 @@ dv_verdict dv_run_verdict_of_outcome(dv_outcome outcome);
 /* a verdict that says the run itself failed (diverged, lost contact, error, invalid, missing) */
 int dv_run_verdict_failed(dv_verdict verdict);
 
+/* a metric against its limit: within (value <= limit), over (above it, or a
+ * value that is NaN: what could not be measured never passes), or none (the
+ * limit is NaN: a metric without a rule is not judged) */
+typedef enum dv_limit_check { DV_LIMIT_WITHIN = 0, DV_LIMIT_OVER, DV_LIMIT_NONE } dv_limit_check;
+dv_limit_check dv_run_limit_check(double value, double limit);
+
 #endif

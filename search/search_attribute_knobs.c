@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "run_verdict.h"
 #include "search_attribute.h"
 #include "search_sweep.h"
 
@@ -131,7 +132,7 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
   out->base_theta_thin = p.theta_thin;
   out->judged = 0;
   for (int m = 0; m < DV_NMETRICS; m++)
-    if (p.metric[m] > p.limit[m]) out->judged |= 1u << m;
+    if (dv_run_limit_check(p.metric[m], p.limit[m]) == DV_LIMIT_OVER) out->judged |= 1u << m;
   knob kn[DV_MAX_KNOBS];
   out->nknobs = declare(sc, engine, kn);
   out->cause = -1;
