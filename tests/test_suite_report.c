@@ -249,7 +249,16 @@ static void check_junit(const char *xml, const char *schema, const char *path, i
                  "name=\"reference\" value=\"matched, half-thickness 0.005 m, cvode-bdf "
                  "rtol 1e-12\""),
       "steady_circle/mujoco: metric, limit, margin, source or reference wrong");
+  CHECK(mj && strstr(mj, "<property name=\"outcome\" value=\"agrees\""),
+        "steady_circle/mujoco: the outcome property");
   free(mj);
+  char *fm = junit_case(xml, "falling", "mujoco"), *fo = junit_case(xml, "falling", "ode");
+  CHECK(fm && strstr(fm, "<property name=\"outcome\" value=\"exceeds tolerance\""),
+        "falling/mujoco: the outcome property");
+  CHECK(fo && strstr(fo, "<property name=\"outcome\" value=\"ended by event\""),
+        "falling/ode: the outcome property");
+  free(fm);
+  free(fo);
   char *od = junit_case(xml, "steady_circle", "ode");
   CHECK(od && strstr(od, "name=\"reference\" value=\"reduced, thin disk, cvode-bdf rtol 1e-12\"") &&
             strstr(od, "name=\"path_max_err.limit\" value=\"0.01\""),
@@ -382,6 +391,8 @@ static void check_full(const char *fixtures, const char *out) {
     CHECK(strstr(html, "rolling_pass/report.md") && strstr(html, "rolling_pass/ode.csv"), "links");
     CHECK(count(html, "class=\"err\">ERROR") == NERRORED, "error rows");
     CHECK(strstr(html, "<td>integrator implicit, timestep 8e-06 s</td>"), "the settings that ran");
+    /* the largest margin of steady_circle's mujoco: path 0.031 over theta 0.0123 (hausdorff null) */
+    CHECK(strstr(html, "<td class=\"n\">0.031 (path_max_err)</td>"), "not the largest margin");
     xml_ok(html, "index.html");
     xmllint(path, NULL);
   }
