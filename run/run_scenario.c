@@ -131,13 +131,15 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
 }
 
 /* a window too short to judge: why into why, 0 when it is long enough */
-static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0, char *why,
-                            size_t size) {
+static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0,
+                            double lay_down, char *why, size_t size) {
   const double span = r->vs_ref.t_window - t0;
+  /* a reference that lies down sooner has shown the whole motion: the fall itself */
+  const double need = fmin(c->min_window, DV_MIN_WINDOW_FRACTION * (lay_down - t0));
   if (r->vs_ref.n_window < DV_MIN_WINDOW_SAMPLES)
     snprintf(why, size, "%zu samples, at least %d needed", r->vs_ref.n_window,
              DV_MIN_WINDOW_SAMPLES);
-  else if (span < c->min_window)
+  else if (span < need)
     snprintf(why, size, "%g s, shorter than the scene's shortest time scale %g s", span,
              c->min_window);
   else
@@ -193,7 +195,8 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 100 * r->window_fraction, t_run - t0, 100 * DV_MIN_WINDOW_FRACTION,
                 validity ? "the contact force rolling needs leaves the friction cone there"
                          : "the engine or the reference ended there");
-  } else if (r->verdict == DV_VERDICT_AGREES && window_too_short(c, r, t0, why, sizeof why)) {
+  } else if (r->verdict == DV_VERDICT_AGREES &&
+             window_too_short(c, r, t0, ref_st->lay_down ? t_run : INFINITY, why, sizeof why)) {
     r->verdict = DV_VERDICT_NOT_JUDGED;
     add_failure(r, "%s: %s: not judged: the compared window, to t = %g s, is too short: %s",
                 sc->name, name, r->vs_ref.t_window, why);

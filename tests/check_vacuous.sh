@@ -5,6 +5,8 @@
 #     reduced, matched): compared with itself, errors exactly 0;
 #   - duration = output_dt = 1e-300 (2 samples), and 0.05 s of a scene whose
 #     fall time is 0.1 s (51 samples): windows too short to judge;
+#   - a fall cut before it lies down is too short; the whole fall, shorter
+#     than the scene's time scale, is judged (the reference showed all of it);
 #   - suite --engines reduced: JUnit <failure>, summary.json fails;
 #   - suite --verify where every case is skipped;
 #   - the control: c_zero compares matched (Newton-Euler) with reduced, two
@@ -42,6 +44,17 @@ compare "$circle" --set scenario.duration=0.05 --set scenario.output_dt=0.001
 check '[ $code -eq 1 ]' "duration 0.05 s: exit $code, want 1: $(cat stdout stderr)"
 check 'grep -q "too short: 0.05 s, shorter than the scene.s shortest time scale" stdout' \
   "duration 0.05 s: $(cat stdout)"
+
+# a coin that falls flat in 0.031 s, under the scene's shortest scale (0.035 s):
+# the reference lying down has shown the whole motion, which is judged (both
+# engines lie down within 3e-5 s of it); cut at 0.02 s, before it lies down, not
+coin=$(dirname "$0")/data/coin_falls_flat.ini
+compare "$coin"
+check '[ $code -eq 0 ] && [ "$(grep -c " agrees .* pass$" stdout)" -eq 2 ]' \
+  "a fall shorter than the scale, whole: exit $code, want 0: $(cat stdout)"
+compare "$coin" --set scenario.duration=0.02 --set scenario.output_dt=0.0005
+check '[ $code -eq 1 ] && grep -q "too short: 0.02 s, shorter than the scene.s shortest time scale" stdout' \
+  "the fall cut before it lies down: exit $code: $(cat stdout)"
 
 "$dv" suite "$circle" --engines reduced --out sout --jobs 1 >stdout 2>stderr; code=$?
 check '[ $code -eq 1 ]' "suite --engines reduced: exit $code, want 1: $(cat stdout stderr)"
