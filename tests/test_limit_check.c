@@ -2,12 +2,36 @@
  * verdict classes. At the limit is within; a hair above it, an infinite or a
  * NaN value is over (what could not be measured never passes); a NaN limit is
  * no rule (not judged). A verdict that says the run failed is exactly one of
- * diverged, lost contact, error, invalid, missing. */
+ * diverged, lost contact, error, invalid, missing. The validity window ends
+ * where the contact force's tangential magnitude leaves the friction cone. */
 #include <math.h>
 #include <string.h>
 
+#include "dv_engine.h"
+#include "dv_reference.h"
 #include "dv_test.h"
 #include "run_verdict.h"
+
+/* the validity window ends where the contact force's tangential magnitude
+ * leaves the cone mu Fz, though each component alone stays inside it */
+static void check_friction_cone(void) {
+  dv_scenario sc;
+  dv_engine_init_scenario(&sc);
+  const double mu = dv_matched_settings_of(&sc)->friction;
+  dv_sample s[3];
+  memset(s, 0, sizeof s);
+  const double each[3] = {0.5, 0.7, 0.72}; /* of mu Fz: magnitudes 0.71, 0.99, 1.018 */
+  for (int i = 0; i < 3; i++) {
+    s[i].t = 0.1 * (i + 1);
+    s[i].force[0] = s[i].force[1] = each[i] * mu;
+    s[i].force[2] = 1.0;
+  }
+  CHECK_NEAR(dv_reference_valid_until(&sc, s, 3), 0.2, 1e-15, "the cone's magnitude");
+  s[2].force[0] = s[2].force[1] = 0.0, s[2].force[2] = -1e-9; /* the ground pulls */
+  CHECK_NEAR(dv_reference_valid_until(&sc, s, 3), 0.2, 1e-15, "a pulling ground");
+  s[2].force[2] = 1.0;
+  CHECK(isinf(dv_reference_valid_until(&sc, s, 3)), "inside the cone throughout");
+}
 
 int main(void) {
   static const struct {
@@ -62,5 +86,6 @@ int main(void) {
   for (size_t i = 0; i < sizeof ends / sizeof ends[0]; i++)
     CHECK(dv_run_verdict_of_outcome(ends[i].outcome) == ends[i].verdict, "outcome %d -> %s",
           ends[i].outcome, dv_run_verdict_name(dv_run_verdict_of_outcome(ends[i].outcome)));
+  check_friction_cone();
   return TEST_RESULT();
 }
