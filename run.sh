@@ -11,7 +11,8 @@ PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-de
           libode-dev libmujoco-dev libplplot-dev libopenmpi-dev openmpi-bin libdouble-conversion-dev
           libdragonbox-dev)
 # the tests also check the report's XML and render its page in a real browser, read JSON (jq)
-TEST_PACKAGES=(libxml2-utils chromium valgrind clang libclang-rt-14-dev time jq)
+# and validate it against its schemas (python3-jsonschema)
+TEST_PACKAGES=(libxml2-utils chromium valgrind clang libclang-rt-14-dev time jq python3-jsonschema)
 BUILD_DIR=${BUILD_DIR:-build}
 CMAKE_FLAGS=()
 if [ "${2:-}" = --sanitize ]; then

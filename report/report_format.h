@@ -98,6 +98,8 @@
  * "theta_max_err", "path_max_err", "wall_per_sim_s", "failures", "limits",
  * "reference"}}}]}), and the JUnit XML (a test suite per scenario, a test
  * case per engine with its numbers as properties: report_suite.h).
+ * Both, and the run JSON and verify.json, as JSON Schemas: tests/fixtures/schemas/
+ * (a field changed here is changed there: the json_schemas test holds them equal).
  */
 #ifndef DV_REPORT_H
 #define DV_REPORT_H

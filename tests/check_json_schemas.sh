@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# check_json_schemas.sh DISKVAL SOURCE_DIR: the JSON files diskval writes,
+# validated against their JSON Schemas (draft 2020-12) in
+# tests/fixtures/schemas, so that a field a writer renames, drops or retypes
+# fails here:
+#   report.json   compare on a thin scene, a thick one and a coin that lies
+#                 down (its event judged), a suite's scenarios, and the error
+#                 report of a scenario that timed out
+#   summary.json  a suite of two scenes, and a suite whose scenario timed out
+#   run JSON      simulate with each engine: reduced, matched, mujoco, ode
+#   verify.json   suite --verify: a case that ran and one skipped
+# and the schemas are not too loose: copies of a report.json with one field
+# broken (a limit's margin renamed, an engine's pass dropped, a metric written
+# as a string, ...) must each be rejected.
+# Exit status: 0 all as expected, 1 a difference (every schema error printed
+# with its JSON path), 77 skipped: python3 has no jsonschema.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+diskval=$1 src=$2
+schemas=$src/tests/fixtures/schemas data=$src/tests/data
+if ! python3 -c 'import jsonschema' 2>/dev/null; then
+  echo "python3 jsonschema is not installed (python3-jsonschema): skipped"
+  exit 77
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# validate SCHEMA valid|invalid FILE...: every file valid against
+# $schemas/SCHEMA (each error printed with its JSON path), or every file rejected
+validate() {
+  python3 - "$schemas" "$@" <<'EOF'
+import json, pathlib, sys
+import jsonschema
+
+schema_dir, name, expect, files = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4:]
+# the schemas refer to each other by file name: each is known by its file's URI
+store = {p.resolve().as_uri(): json.loads(p.read_text()) for p in schema_dir.glob("*.schema.json")}
+for schema in store.values():
+    jsonschema.Draft202012Validator.check_schema(schema)
+root = {"$ref": (schema_dir / name).resolve().as_uri()}
+try:
+    from referencing import Registry, Resource
+    refs = {"registry": Registry().with_resources(
+        (uri, Resource.from_contents(s)) for uri, s in store.items())}
+except ImportError:  # jsonschema before 4.18 (Debian bookworm's 4.10)
+    refs = {"resolver": jsonschema.RefResolver("", root, store=store)}
+validator = jsonschema.Draft202012Validator(root, format_checker=jsonschema.FormatChecker(), **refs)
+
+def explain(f, e, indent=""):
+    """error e with its JSON path, then why each of its alternatives (oneOf) failed"""
+    text = e.message if len(e.message) < 160 else f"fails {e.validator}: {json.dumps(e.validator_value)[:100]}"
+    print(f"{indent}{f}: {e.json_path}: {text}")
+    for sub in e.context:
+        explain(f, sub, indent + "  ")
+
+failed = False
+for f in files:
+    errors = list(validator.iter_errors(json.loads(pathlib.Path(f).read_text())))
+    if expect == "valid":
+        for e in errors:
+            explain(f, e)
+    elif not errors:
+        print(f"{f}: accepted by {name}, should be rejected")
+    failed |= bool(errors) != (expect == "invalid")
+sys.exit(failed)
+EOF
+}
+
+# diskval ARGS... --quiet; exit 0 or 1 (a verdict), not 2 (bad input, an error)
+run() {
+  "$diskval" "$@" --quiet >"$work/log" 2>&1
+  local code=$?
+  check '[ $code -lt 2 ]' "diskval $* (exit $code): $(cat "$work/log")"
+}
+
+run compare "$data/short_circle.ini" --out "$work/thin"
+run compare "$data/quarter_circle.ini" --set scenario.duration=0.3 --out "$work/thick"
+run compare "$data/coin_falls_flat.ini" --out "$work/flat"
+mkdir "$work/two" "$work/late" "$work/verify_in"
+cp "$data/short_circle.ini" "$src/scenarios/falling.ini" "$work/two/"
+run suite "$work/two" --jobs 1 --out "$work/suite"
+cp "$data/short_circle.ini" "$work/late/"
+"$diskval" suite "$work/late" --jobs 1 --timeout 0.001 --quiet --out "$work/late_out" >/dev/null 2>&1
+check 'grep -q "\"error\":.*timed out" "$work/late_out/short_circle/report.json"' \
+  "a scenario timed out without an error report"
+for engine in reduced matched mujoco ode; do
+  run simulate "$data/short_circle.ini" --engine "$engine" --set scenario.duration=0.5 \
+    --out "$work/run_$engine.csv"
+done
+# two half-second circles: one verified in both engines, one naming mujoco (ode skipped)
+sed 's/^duration = .*/duration = 0.5/' "$data/short_circle.ini" >"$work/verify_in/both.ini"
+sed -e 's/^name = .*/name = mujoco_only\nengines = mujoco/' "$work/verify_in/both.ini" \
+  >"$work/verify_in/mujoco_only.ini"
+run suite "$work/verify_in" --verify --engines mujoco,ode --jobs 1 --out "$work/verify"
+check 'grep -q "\"verdict\":.*\"skipped\"" "$work/verify/verify.json"' "verify.json has no skipped case"
+check 'grep -q "\"agrees\":" "$work/flat/coin_falls_flat/report.json"' "the coin's event was not judged"
+
+check 'validate report.schema.json valid "$work"/{thin,thick,flat,suite,late_out}/*/report.json' \
+  "report.json does not match report.schema.json"
+check 'validate summary.schema.json valid "$work"/{suite,late_out}/summary.json' \
+  "summary.json does not match summary.schema.json"
+check 'validate run.schema.json valid "$work"/run_*.csv.json' "a run JSON does not match run.schema.json"
+check 'validate verify.schema.json valid "$work/verify/verify.json"' \
+  "verify.json does not match verify.schema.json"
+
+# copies of a valid report.json, each broken in one way the schema must catch
+[ $fail -eq 0 ] || exit 1 # no valid report to break
+mkdir "$work/broken"
+python3 - "$work/thin/short_circle/report.json" "$work/broken" <<'EOF'
+import json, pathlib, sys
+
+def margin_renamed(r):
+    limit = r["engines"]["mujoco"]["limits"]["theta_max_err"]
+    limit["margin_ratio"] = limit.pop("margin")
+def pass_dropped(r): del r["engines"]["ode"]["pass"]
+def metric_as_string(r): r["engines"]["mujoco"]["theta_max_err"] = "0.1"
+def outcome_unknown(r): r["engines"]["mujoco"]["outcome"] = "agreed"
+def ran_with_dropped(r): del r["engines"]["mujoco"]["ran_with"]
+def setting_renamed(r):
+    settings = r["engines"]["ode"]["settings"]
+    settings["time_step"] = settings.pop("timestep")
+def limit_value_dropped(r): del r["engines"]["ode"]["limits"]["path_max_err"]["value"]
+
+for broken in (margin_renamed, pass_dropped, metric_as_string, outcome_unknown, ran_with_dropped,
+               setting_renamed, limit_value_dropped):
+    report = json.loads(pathlib.Path(sys.argv[1]).read_text())
+    broken(report)
+    (pathlib.Path(sys.argv[2]) / f"{broken.__name__}.json").write_text(json.dumps(report))
+EOF
+check '[ "$(ls "$work/broken" | wc -l)" -eq 7 ]' "the broken copies were not all written"
+check 'validate report.schema.json invalid "$work"/broken/*.json' \
+  "report.schema.json accepts a broken report.json"
+exit $fail
