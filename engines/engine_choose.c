@@ -68,6 +68,11 @@ static uint64_t scene_key(const dv_scenario *sc, const dv_engine_type *engine,
       engine->settings, dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->settings,
       dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->settings};
   h = mix(h, &sc->thickness, sizeof sc->thickness);
+  /* a shape given picks the probe's reference, even at its default value */
+  const int shape_given[2] = {
+      engine->contact && dv_scenario_is_given(sc, engine->name, engine->contact->geom_key),
+      dv_scenario_is_given(sc, engine->name, "half_thickness")};
+  h = mix(h, shape_given, sizeof shape_given);
   for (int s = 0; s < 3; s++) {
     const void *block = dv_scenario_settings(sc, secs[s]->name);
     for (size_t i = 0; block && i < secs[s]->nspecs; i++) {

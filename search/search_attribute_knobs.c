@@ -45,7 +45,10 @@ static void judge(const dv_attribution *a, dv_knob_probe *k) {
   }
   for (int m = 0; m < DV_NMETRICS; m++)
     if (a->judged >> m & 1u) {
-      const double excess = (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m]);
+      /* an infinite base (a nutation the engine lost) is removed only within the limit */
+      const double excess = isfinite(a->base[m])
+                                ? (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m])
+                                : k->metric[m] <= a->limit[m] ? 0.0 : INFINITY;
       k->worst = fmax(k->worst, k->metric[m] / a->limit[m]);
       if (!(excess <= RESIDUE)) k->removes = 0;
     }

@@ -95,6 +95,21 @@ int main(int argc, char **argv) {
   CHECK(dv_engine_half_thickness(&dv_engine_ode, &standin) == 0.0, "ode: thin reference");
   CHECK(dv_scenario_get(&standin, "matched", "half_thickness") == 0.001, "matched: given");
 
+  /* the coin's settings are probed against the matched reference; given the
+   * thin disk's keys at their default values, the engine's body is the thin
+   * disk, probed against the thin reference (one process remembers a scene's
+   * choice: the keys given are part of the scene, not only their values) */
+  static dv_scenario probed, given;
+  const char *probed_sets[] = {"scenario.duration=0.2", "disk.thickness=0.004"};
+  const char *given_sets[] = {"scenario.duration=0.2", "disk.thickness=0.004",
+                              "engines.mujoco.geom=thin", "engines.mujoco.half_thickness=0.0005"};
+  if (load(path, probed_sets, 2, &probed) || load(path, given_sets, 4, &given))
+    return TEST_RESULT();
+  CHECK(strstr(dv_scenario_derived(&probed, "mujoco"), "from a probe of"), "the coin: '%s'",
+        dv_scenario_derived(&probed, "mujoco"));
+  CHECK(strcmp(dv_scenario_derived(&probed, "mujoco"), dv_scenario_derived(&given, "mujoco")),
+        "the thin disk given took the coin's choice: '%s'", dv_scenario_derived(&given, "mujoco"));
+
   /* a scenario built in code takes the disk's thickness at run time too */
   dv_scenario code = thin;
   code.thickness = 0.004;
