@@ -187,7 +187,9 @@ ctest_run() { # LOG: the suite as every run takes it
 # the first test that failed in a ctest log (in the order they ended)
 first_failure() {
   local name
-  name=$(sed -n -E 's/^ *[0-9]+\/[0-9]+ +Test +#[0-9]+: ([^ ]+) .*\*\*\*.*/\1/p' "$1" | head -n 1)
+  # a skipped test (***Skipped) is not a failure
+  name=$(sed -n -E 's/^ *[0-9]+\/[0-9]+ +Test +#[0-9]+: ([^ ]+) .*\*\*\*(Failed|Timeout|Exception|Not Run).*/\1/p' "$1" |
+    head -n 1)
   [ -n "$name" ] ||
     name=$(sed -n '/The following tests FAILED/,$p' "$1" |
       sed -n -E 's/^[[:space:]]+[0-9]+ - (.+) \([^)]*\)$/\1/p' | head -n 1)
