@@ -6,7 +6,7 @@
  * - Folded against stepped: over 200 s and 2000 s of a spinning disk, and
  *   100 s of the C = 0 disk, the default (folded) reference is as close to
  *   a 1e-14 run stepped onto every output as the same integrator stepping
- *   to the end, in theta, heading, contact path and energy.
+ *   to the end, in theta, heading, spin angle psi, contact path and energy.
  * - Before the fold, the recorded period is the integrator's own output: the
  *   samples up to the fold (the maximum of theta that closes the period)
  *   equal those of the unfolded run bit for bit (fine output, where both
@@ -47,7 +47,7 @@ static run simulate(const char *path, const char *const *set) {
 }
 
 typedef struct errors {
-  double theta, phi, path, energy;
+  double theta, phi, psi, path, energy;
 } errors;
 
 static errors against(const run *a, const run *ref) {
@@ -57,6 +57,7 @@ static errors against(const run *a, const run *ref) {
     const dv_sample *p = &a->traj.s[i], *q = &ref->traj.s[i];
     e.theta = fmax(e.theta, fabs(p->y[RED_TH] - q->y[RED_TH]));
     e.phi = fmax(e.phi, fabs(p->y[RED_PH] - q->y[RED_PH]));
+    e.psi = fmax(e.psi, fabs(p->y[RED_PS] - q->y[RED_PS]));
     e.path = fmax(e.path, hypot(p->contact[0] - q->contact[0], p->contact[1] - q->contact[1]));
     e.energy = fmax(e.energy, fabs(p->energy - q->energy) / fabs(q->energy));
   }
@@ -87,12 +88,13 @@ static errors check_fold(const char *path, const char *duration, const char *dt,
   CHECK(s.stats.method[0] == '\0', "%s: fold=off says '%s'", path, s.stats.method);
   const errors ef = against(&f, &ref), es = against(&s, &ref);
   printf(
-      "%s over %s s every %s s: folded (%ld steps) theta %.2e phi %.2e path %.2e energy %.2e; "
-      "stepped (%ld steps) theta %.2e phi %.2e path %.2e energy %.2e\n",
-      path, duration, dt, f.stats.steps, ef.theta, ef.phi, ef.path, ef.energy, s.stats.steps,
-      es.theta, es.phi, es.path, es.energy);
+      "%s over %s s every %s s: folded (%ld steps) theta %.2e phi %.2e psi %.2e path %.2e energy "
+      "%.2e; stepped (%ld steps) theta %.2e phi %.2e psi %.2e path %.2e energy %.2e\n",
+      path, duration, dt, f.stats.steps, ef.theta, ef.phi, ef.psi, ef.path, ef.energy,
+      s.stats.steps, es.theta, es.phi, es.psi, es.path, es.energy);
   CHECK(ef.theta <= fmax(slack * es.theta, floor), "theta %.3g vs %.3g", ef.theta, es.theta);
   CHECK(ef.phi <= fmax(slack * es.phi, floor), "phi %.3g vs %.3g", ef.phi, es.phi);
+  CHECK(ef.psi <= fmax(slack * es.psi, floor), "psi %.3g vs %.3g", ef.psi, es.psi);
   CHECK(ef.path <= fmax(slack * es.path, floor), "path %.3g vs %.3g", ef.path, es.path);
   CHECK(ef.energy <= fmax(slack * es.energy, 1e-11), "energy %.3g vs %.3g", ef.energy, es.energy);
   CHECK(f.stats.steps * 10 < s.stats.steps, "folded %ld steps, stepped %ld", f.stats.steps,
