@@ -65,6 +65,8 @@ static void check_round_trip(void) {
       E->stats(e, &st);
       CHECK(st.steps == 0 && s.t == 0.0, "geom %s state %zu: %ld steps before t = 0", GEOMS[geom],
             k, st.steps);
+      /* rounding: measured (DV_TEST_MEASURE=1) state 1.1e-14, energy 2.2e-16 J,
+       * the rim point's speed 1.4e-15 m/s, depth 6.9e-17 m */
       for (int i = 0; i < RED_NSTATE; i++)
         CHECK_NEAR(s.y[i], states[k][i], 1e-12 * (1 + fabs(states[k][i])), "state component");
       /* the thin disk is a cylinder of half-thickness 0 */
@@ -74,8 +76,8 @@ static void check_round_trip(void) {
       dv_pose_from_state(&g, states[k], &pose);
       const double energy = dv_pose_energy(&sc.disk, &pose);
       CHECK_NEAR(s.energy, energy, 1e-12 * fabs(energy), "energy of the pose");
-      CHECK(s.slip < 1e-12 && s.penetration < 1e-15, "geom %s state %zu: slip %g, depth %g",
-            GEOMS[geom], k, s.slip, s.penetration);
+      CHECK_NEAR(s.slip, 0.0, 1e-12, "rim point's speed");
+      CHECK_NEAR(s.penetration, 0.0, 1e-15, "depth");
       E->free(e);
     }
   /* a flat ellipsoid (e = 1e-6 m) is the thin disk to O(e^2 / r^2) */
@@ -87,6 +89,7 @@ static void check_round_trip(void) {
   sc.duration = 0.0;
   run(&sc, states[1], 0.0, &s, &st);
   const double thin = red_energy(&sc.disk, states[1]);
+  /* measured 1.5e-11 J (7e-12 relative) at h = 1e-6 m */
   CHECK_NEAR(s.energy, thin, 1e-9 * thin, "flat ellipsoid energy vs the thin disk's");
 }
 
@@ -126,8 +129,9 @@ static double circle_drift(double dt, double timeconst) {
 static void check_convergence(void) {
   const double coarse = circle_drift(1e-3, 2e-3), fine = circle_drift(2e-4, 4e-4);
   printf("steady circle, 1 s: theta drift %.2e (dt 1e-3) -> %.2e (dt 2e-4)\n", coarse, fine);
+  /* measured 4.1e-4 -> 7.6e-5 (0.18; a first-order step 5x smaller: 0.2) */
   CHECK(fine < 0.5 * coarse, "drift %g does not shrink (%g)", fine, coarse);
-  CHECK(coarse < 2e-3, "drift %g at dt 1e-3", coarse);
+  CHECK(coarse < 1e-3, "drift %g at dt 1e-3", coarse);
 }
 
 static void check_faults(void) {

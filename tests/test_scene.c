@@ -60,7 +60,10 @@ static void check_scales(void) {
   const double wobble = 2.0 * M_PI / sqrt(upright_omega2(&disk, 1.5 * wc));
   printf("upright 1.5x: wobble %.6g s (linear theory %.6g s), spin %.6g s\n", s.t[DV_SCALE_WOBBLE],
          wobble, s.t[DV_SCALE_SPIN]);
-  CHECK_NEAR(s.t[DV_SCALE_WOBBLE], wobble, 1e-5 * wobble, "upright wobble period");
+  /* tolerances measured with DV_TEST_MEASURE=1: the wobble 3.2e-8 relative
+   * (the 0.01 rad/s nudge's amplitude correction), held to 1e-6; the spin and
+   * fall time are the same closed form (0), held to rounding */
+  CHECK_NEAR(s.t[DV_SCALE_WOBBLE], wobble, 1e-6 * wobble, "upright wobble period");
   CHECK_NEAR(s.t[DV_SCALE_SPIN], 2.0 * M_PI / (1.5 * wc), 1e-12, "spin period");
   CHECK(isinf(s.t[DV_SCALE_TURNING]) && isinf(s.t[DV_SCALE_GROWTH]), "no turning, no growth");
   CHECK_NEAR(s.t[DV_SCALE_FALL], sqrt(0.1 / 9.81), 1e-15, "fall time");
@@ -73,6 +76,7 @@ static void check_scales(void) {
   const double growth = 1.0 / sqrt(-upright_omega2(&disk, 0.7 * wc));
   printf("upright 0.7x: growth %.6g s (linear theory %.6g s), wobble %.6g s\n",
          s.t[DV_SCALE_GROWTH], growth, s.t[DV_SCALE_WOBBLE]);
+  /* measured 1.25e-5 relative (the growth is fitted on the nudged reference) */
   CHECK_NEAR(s.t[DV_SCALE_GROWTH], growth, 1e-4 * growth, "upright growth time");
   CHECK(isfinite(s.t[DV_SCALE_WOBBLE]), "the side wells wobble");
   /* a steady circle: the eigenvalue's imaginary part, and the curvature of U
@@ -86,6 +90,7 @@ static void check_scales(void) {
   for (int i = 0; i < RED_NREDUCED; i++) im = fmax(im, fabs(eig[i][1]));
   sc = scene(circle, 5.0);
   dv_engine_scene_scales(&sc, &s);
+  /* the scales take these closed forms (measured 0): rounding only */
   CHECK_NEAR(s.t[DV_SCALE_WOBBLE], 2.0 * M_PI / im, 1e-12, "circle wobble: the eigenvalue");
   CHECK_NEAR(s.t[DV_SCALE_TURNING], 2.0 * M_PI / vphi, 1e-12, "turning period");
   CHECK_NEAR(s.t[DV_SCALE_SPIN], 2.0 * M_PI / fabs(vpsi), 1e-12, "spin period");
@@ -96,7 +101,8 @@ static void check_scales(void) {
   dv_engine_scene_scales(&sc, &s);
   printf("circle: wobble %.6g s (eigenvalue), %.6g s (curvature of U)\n", 2.0 * M_PI / im,
          s.t[DV_SCALE_WOBBLE]);
-  CHECK_NEAR(s.t[DV_SCALE_WOBBLE], 2.0 * M_PI / im, 1e-4 * 2.0 * M_PI / im,
+  /* measured 2.9e-8 relative: the 1e-4 rad/s nudge's amplitude correction */
+  CHECK_NEAR(s.t[DV_SCALE_WOBBLE], 2.0 * M_PI / im, 1e-6 * 2.0 * M_PI / im,
              "circle wobble: the curvature of U");
   /* a fall: no spin, no wobble; the fall time is the shortest */
   const double fall[RED_NSTATE] = {M_PI / 2 - 0.1, 0, 0, 0, 0, 0, 0, 0};

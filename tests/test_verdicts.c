@@ -160,8 +160,9 @@ int main(void) {
   }
   printf("invariant drift on a steady circle: %.3g rolling, %.3g with friction 0.05\n", drift[0],
          drift[1]);
+  /* measured 2.5e-4 rolling and 0.98 slipping (3900x): a slip is 100x at least */
   CHECK(drift[0] < DV_LIMIT_INVARIANTS, "rolling: f1, f2 drift %g", drift[0]);
-  CHECK(drift[1] > 10 * drift[0] && drift[1] > DV_LIMIT_INVARIANTS,
+  CHECK(drift[1] > 100 * drift[0] && drift[1] > DV_LIMIT_INVARIANTS,
         "slipping: f1, f2 drift %g, rolling %g", drift[1], drift[0]);
 
   /* no window: rolling needs more friction than the reference allows from t = 0 */
