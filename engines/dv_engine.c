@@ -9,7 +9,8 @@
 #include "dv_pose.h"
 
 const dv_engine_type *const dv_engines[] = {&dv_engine_reduced, &dv_engine_matched,
-                                            &dv_engine_mujoco, &dv_engine_ode, NULL};
+                                            &dv_engine_mujoco, &dv_engine_ode,
+                                            &dv_engine_bullet, NULL};
 
 const dv_engine_type *dv_engine_find(const char *name) {
   for (const dv_engine_type *const *e = dv_engines; *e; e++)

@@ -128,6 +128,7 @@ extern const dv_engine_type dv_engine_reduced; /* thin disk, reduced equations *
 extern const dv_engine_type dv_engine_matched; /* thick disk, Newton-Euler rolling */
 extern const dv_engine_type dv_engine_ode;     /* ODE 0.16 contact simulation */
 extern const dv_engine_type dv_engine_mujoco;  /* MuJoCo 2.2 contact simulation */
+extern const dv_engine_type dv_engine_bullet;  /* Bullet 3.24 contact simulation (engines/bullet/) */
 
 /* NULL-terminated list of every engine */
 extern const dv_engine_type *const dv_engines[];
