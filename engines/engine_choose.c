@@ -278,9 +278,12 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   const dv_engine_contact *ct = engine->contact;
   const int shape_given = ct && (dv_scenario_is_given(sc, engine->name, ct->geom_key) ||
                                  dv_scenario_is_given(sc, engine->name, "half_thickness"));
-  const dv_engine_type *ref = dv_engine_of_role(sc->thickness > 0.0 && !shape_given
-                                                    ? DV_ENGINE_MATCHED_REFERENCE
-                                                    : DV_ENGINE_THIN_REFERENCE);
+  /* an engine that models the thin disk whatever the scene (Bullet) is judged,
+   * and so probed, against the thin reference */
+  const dv_engine_type *ref = dv_engine_of_role(
+      sc->thickness > 0.0 && !shape_given && dv_engine_half_thickness(engine, sc) > 0.0
+          ? DV_ENGINE_MATCHED_REFERENCE
+          : DV_ENGINE_THIN_REFERENCE);
   if (ref->role == DV_ENGINE_THIN_REFERENCE &&
       (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0))
     no_probe = "a stand-in shape, whose reference is not the thin disk";
