@@ -29,7 +29,8 @@ static dv_scenario base(const char *name, double duration) {
 }
 
 static dv_geometry engine_geometry(const dv_engine_type *e, const dv_scenario *sc) {
-  if (!strcmp(e->name, "ode"))
+  /* ODE's thin disk or cylinder, Bullet's thin disk */
+  if (strcmp(e->name, "mujoco"))
     return (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, dv_engine_half_thickness(e, sc)};
   /* MuJoCo's geoms: thin (a cylinder of half-thickness 0), cylinder, ellipsoid */
   const double geom = dv_scenario_get(sc, "mujoco", "geom");
@@ -90,6 +91,12 @@ static void differences(const traj *a, const traj *b, double *th, double *path) 
 #define SMALL_C_MUJOCO_P 2.2e-4
 #define SMALL_C_ODE_TH 6e-5
 #define SMALL_C_ODE_P 9.4e-5
+/* Bullet's sequential impulse solver (10 iterations) does not converge on a
+ * friction row of effective mass C / r^2: the probe's btRigidBody completes
+ * but errs 0.19 rad / 0.20 m (measured; btMultiBody diverges); a regression
+ * bound, not accuracy (README, "Engine settings") */
+#define SMALL_C_BULLET_TH 0.6
+#define SMALL_C_BULLET_P 0.6
 
 typedef struct limit {
   const char *engine, *scenario;
@@ -101,11 +108,15 @@ typedef struct limit {
  *   mujoco: upright 2.1e-7 / 1.3e-6, circle 1.8e-4 / 5.6e-3, fall 3.3e-5 / 4.3e-6
  *   ode:    upright 7.9e-6 / 2.0e-5, circle 2.4e-3 / 1.8e-2, fall 1.8e-5 / 1.6e-7 (thin disk;
  *           its 2 mm cylinder: upright 1.0e-3 / 9.6e-3 against the thin disk)
+ *   bullet: upright 1.3e-7 / 6.8e-7, circle 1.9e-4 / 1.5e-3, fall 9.1e-5 / 6.4e-7 (btMultiBody,
+ *           the thin disk, at the model's step)
  * limits: about 3x the measurement. */
 static const limit LIMITS[] = {
     {"mujoco", "upright", 2e-6, 4e-6}, {"mujoco", "circle", 5e-4, 1.6e-2},
     {"mujoco", "fall", 1.5e-4, 2e-5},  {"ode", "upright", 2.5e-5, 6e-5},
     {"ode", "circle", 7e-3, 5e-2},     {"ode", "fall", 6e-5, 5e-7},
+    {"bullet", "upright", 4e-7, 2e-6}, {"bullet", "circle", 6e-4, 4.5e-3},
+    {"bullet", "fall", 3e-4, 2e-6},
 };
 
 static void check_accuracy(const dv_engine_type *e) {
@@ -167,16 +178,17 @@ static void check_small_c(const dv_engine_type *e) {
   CHECK(a.status == DV_OK && a.stats.outcome == DV_OUTCOME_COMPLETED && a.n >= b.n && b.n > 20,
         "%s: C = 1e-6 m r^2: %s %s, %ld vs %ld samples", e->name, dv_outcome_name(a.stats.outcome),
         a.stats.detail, a.n, b.n);
-  const double lim_th = !strcmp(e->name, "mujoco") ? SMALL_C_MUJOCO_TH : SMALL_C_ODE_TH;
-  const double lim_p = !strcmp(e->name, "mujoco") ? SMALL_C_MUJOCO_P : SMALL_C_ODE_P;
+  const int mj = !strcmp(e->name, "mujoco"), bt = !strcmp(e->name, "bullet");
+  const double lim_th = mj ? SMALL_C_MUJOCO_TH : bt ? SMALL_C_BULLET_TH : SMALL_C_ODE_TH;
+  const double lim_p = mj ? SMALL_C_MUJOCO_P : bt ? SMALL_C_BULLET_P : SMALL_C_ODE_P;
   CHECK(th <= lim_th && path <= lim_p, "%s: C = 1e-6 m r^2: theta %.3g (limit %.3g), contact %.3g "
         "(limit %.3g)", e->name, th, lim_th, path, lim_p);
 }
 
 int main(void) {
   gsl_set_error_handler_off();
-  const dv_engine_type *contact[] = {&dv_engine_mujoco, &dv_engine_ode};
-  for (size_t i = 0; i < 2; i++) {
+  const dv_engine_type *contact[] = {&dv_engine_mujoco, &dv_engine_ode, &dv_engine_bullet};
+  for (size_t i = 0; i < sizeof contact / sizeof contact[0]; i++) {
     check_round_trip(contact[i]);
     check_accuracy(contact[i]);
     check_small_c(contact[i]);

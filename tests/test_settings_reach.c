@@ -33,6 +33,7 @@ typedef struct reach {
 static const char *const BASE[] = {
     "scenario.duration=0.2",         "engines.mujoco.timestep=1e-4",
     "engines.mujoco.integrator=rk4", "engines.ode.timestep=1e-4",
+    "engines.bullet.timestep=1e-4",  "engines.bullet.body=multibody",
 };
 #define NBASE (sizeof BASE / sizeof BASE[0])
 
@@ -75,6 +76,15 @@ static const reach TABLE[] = {
     {"ode", "soft_cfm", "1e-3", NULL, DIFFERS, NULL},
     {"ode", "geom", "cylinder", NULL, DIFFERS, NULL},
     {"ode", "half_thickness", "0.01", "engines.ode.geom=cylinder", DIFFERS, NULL},
+    {"bullet", "timestep", "5e-5", NULL, DIFFERS, NULL},
+    {"bullet", "body", "rigidbody", NULL, DIFFERS, NULL},
+    {"bullet", "solver_iterations", "1", NULL, DIFFERS, NULL},
+    {"bullet", "friction", "0.05", NULL, MORE_SLIP, NULL},
+    {"bullet", "cfm", "1e-3", NULL, DIFFERS, NULL},
+    {"bullet", "gyroscopic", "off", NULL, DIFFERS, NULL},
+    {"bullet", "geom", "thin", NULL, SAME,
+     "the thin disk is Bullet's only shape (a thickness brings its collision margin): "
+     "given, it is the default"},
 };
 #define NTABLE (sizeof TABLE / sizeof TABLE[0])
 
