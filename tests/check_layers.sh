@@ -45,8 +45,11 @@ for layer in "${!allowed[@]}"; do
   done
 done
 
-engines=$(sed -n 's/^const dv_engine_type \(dv_engine_[a-z_]*\) = .*/\1/p' engines/*.c)
-names=$(grep -ho '^    .name = "[a-z_]*"' engines/engine_*.c | sed 's/.*"\(.*\)"/\1/')
+# engines in C, and those in C++ in a folder of their own (engines/NAME/*.cc)
+engines=$(sed -n 's/^\(extern "C" \)\{0,1\}const dv_engine_type \(dv_engine_[a-z_]*\) = .*/\2/p' \
+  engines/*.c engines/*/*.cc)
+names=$( (grep -ho '^    .name = "[a-z_]*"' engines/engine_*.c | sed 's/.*"\(.*\)"/\1/'
+  sed -n '/^extern "C" const dv_engine_type/{n;s/^ *"\([a-z_]*\)",.*/\1/p}' engines/*/*.cc))
 for layer in "${!allowed[@]}"; do
   [ "$layer" = engines ] && continue
   for f in "$layer"/*.[ch]; do
@@ -60,6 +63,15 @@ for layer in "${!allowed[@]}"; do
         grep . && bad=1
     done
   done
+done
+# C++ only inside an engine's own folder (engines/NAME/) and common/dv_format.cc: no
+# other C or header file includes a C++ header
+for f in $(find common reduced scenario engines io exec run report search cli api include \
+  -maxdepth 1 -name '*.[ch]'); do
+  grep -n '^#include <\(bt[A-Za-z]*\|Bullet[A-Za-z/]*\|LinearMath/[A-Za-z]*\)\.h>\|^#include <c[a-z]*>$\|^#include <[a-z_]*>$' "$f" |
+    grep -v '\.h>' | sed "s|^|$f:|; s|\$|  (a C++ header outside an engine's folder)|" | grep . && bad=1
+  grep -n '^#include <\(bt[A-Za-z]*\|Bullet[A-Za-z/]*\|LinearMath/[A-Za-z]*\)\.h>' "$f" |
+    sed "s|^|$f:|; s|\$|  (Bullet outside engines/bullet/)|" | grep . && bad=1
 done
 [ $bad -eq 0 ] && echo "layers: every include goes downwards; no engine named outside engines/"
 exit $bad
