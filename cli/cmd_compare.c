@@ -15,7 +15,7 @@ static const char HELP[] =
     "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S]\n"
     "                       [--set section.key=value]...\n"
     "\n"
-    "Run SCENARIO in the engines (default: mujoco,ode) and in the references, compare\n"
+    "Run SCENARIO in the engines (default: every contact engine) and in the references, compare\n"
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
     "DIR/<scenario>/ (default DIR: report): every trajectory as CSV, the plots,\n"
     "report.json and report.md. Prints one line per engine.\n"
