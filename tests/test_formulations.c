@@ -1,7 +1,9 @@
 /* test_formulations: the reduced equations, the momentum form (3.67) and
  * Pars's Lagrange-multiplier equations give the same motion, and so do the
  * GSL, CVODE and ARKODE integrators. theta and the contact point must agree
- * to 1e-8 over 10 s from several non-symmetric initial conditions. */
+ * to 1e-8 over 10 s from several non-symmetric initial conditions. Both
+ * contact points come from red_contact_point; test_pose holds it to the lowest
+ * point of DESIGN's pose built from elementary rotations. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 

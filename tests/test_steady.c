@@ -62,11 +62,14 @@ static void check_upright(const red_disk *dk, const char *label) {
   int stable, fell;
   dv_error err;
   const double crit = red_upright_critical_spin(dk);
-  for (int above = 0; above < 2; above++) {
-    const double ratio = above ? 1.1 : 0.9;
-    double y[RED_NSTATE] = {M_PI / 2, 0, 0, ratio * crit, 0, 0, 0, 0};
+  /* the eigenvalues change stability at the closed form, to 1e-4 of it (a
+   * critical spin 10% off passed 0.9x and 1.1x) */
+  const double ratios[] = {0.9, 1.0 - 1e-4, 1.0 + 1e-4, 1.1};
+  for (int k = 0; k < 4; k++) {
+    const int above = ratios[k] > 1.0;
+    double y[RED_NSTATE] = {M_PI / 2, 0, 0, ratios[k] * crit, 0, 0, 0, 0};
     CHECK(red_linear_stability(dk, y, eig, &stable, &err) == DV_OK, "%s", err.msg);
-    CHECK(stable == above, "%s: %.1fx critical: linear stability %d", label, ratio, stable);
+    CHECK(stable == above, "%s: %.4fx critical: linear stability %d", label, ratios[k], stable);
   }
   /* the perturbation theta_dot = 1e-4 rad/s: measured excursions 1e-5 rad at
    * 1.1x and > 0.3 rad at 0.9x */
@@ -94,6 +97,9 @@ int main(void) {
     check_circle(&dk, M_PI - 1.0, 0.5);
     check_circle(&dk, 1.4, 2.0);
   }
+  /* the uniform disk's textbook bound: upright is stable above sqrt(g / (3 r)) */
+  CHECK_NEAR(red_upright_critical_spin(&(red_disk){0.1, 1.0, 0.0025, 0.005, 9.81}),
+             sqrt(9.81 / 0.3), 1e-12, "uniform disk's critical spin");
   check_upright(&(red_disk){0.1, 1.0, 0.0025, 0.005, 9.81}, "uniform");
   check_upright(&(red_disk){0.1, 1.0, 0.0028, 0.002, 9.81}, "C = 0.2 m r^2");
   /* impossible circles are refused */
