@@ -44,11 +44,11 @@ static turn locate(const dv_sample *a, const dv_sample *b, int kind) {
 
 /* the turning points of tr up to t_end into out (tr->n of room), swings
  * below DV_TURNING_MIN_SWING (from the start or the turn before) removed;
- * their count. The first interval is the start's: a rate of +-1e-17 there
- * is not a turn */
+ * their count. A start's rate of +-1e-17 (a start at a turn) is no turn, being
+ * no swing from the start; a real turn in the first interval is one */
 static size_t turning_points(const dv_traj *tr, double t_end, turn *out) {
   size_t n = 0;
-  for (size_t i = 2; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++) {
+  for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++) {
     const double d0 = tr->s[i - 1].y[RED_VTH], d1 = tr->s[i].y[RED_VTH];
     const int kind = d0 > 0 && d1 <= 0 ? 1 : d0 < 0 && d1 >= 0 ? -1 : 0;
     if (!kind) continue;

@@ -43,6 +43,16 @@ check '[ -z "$(find "$full" -name ".diskval-tmp.*")" ]' "full disk: temporary fi
 "$diskval" simulate "$scenarios/upright_stable.ini" --engine reduced --out "$full/x.csv" 2>/dev/null
 code=$?
 check '[ $code -eq 2 ] && [ ! -e "$full/x.csv" ]' "full disk simulate: exit $code or a file left"
+# a file small enough to sit in the stdio buffer fails only when flushed or closed
+# on a disk already full: still no file, whole or half
+cat /dev/zero >"$full/fill" 2>/dev/null
+"$diskval" simulate "$scenarios/falling.ini" --engine reduced --set scenario.duration=0.01 \
+  --out "$full/small.csv" 2>"$work/err"
+code=$?
+check '[ $code -eq 2 ] && [ ! -e "$full/small.csv" ] && [ ! -e "$full/small.csv.json" ] &&
+  grep -q "No space" "$work/err"' \
+  "full disk, a small file: exit $code, $(ls "$full" | tr '\n' ' '), $(cat "$work/err")"
+rm -f "$full/fill"
 
 # SIGINT in the middle of the default suite; a live process's temporary
 # there (this shell's pid) is not the suite's to remove

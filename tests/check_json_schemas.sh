@@ -103,6 +103,29 @@ check 'validate run.schema.json valid "$work"/run_*.csv.json' "a run JSON does n
 check 'validate verify.schema.json valid "$work/verify/verify.json"' \
   "verify.json does not match verify.schema.json"
 
+# what a schema cannot say: each limit's margin is its value over its limit, and
+# value and limit are the engine's metric and tolerance as written beside them
+consistent() {
+  python3 - "$@" <<'EOF'
+import json, math, sys
+bad = 0
+for f in sys.argv[1:]:
+    for name, e in json.load(open(f)).get("engines", {}).items():
+        for m, l in (e.get("limits") or {}).items():
+            v, lim, mar = l["value"], l["limit"], l["margin"]
+            want = v / lim if v is not None and lim else None
+            if (want is None) != (mar is None) or (want is not None and math.isfinite(want)
+                                                    and abs(mar - want) > 1e-12 * abs(want)):
+                print(f"{f}: {name}: {m}: margin {mar}, value / limit {want}"); bad = 1
+            if e.get(m) != v or e.get("tolerances", {}).get(m) != lim:
+                print(f"{f}: {name}: {m}: value {v} / limit {lim}, the engine's {e.get(m)} / "
+                      f"{e.get('tolerances', {}).get(m)}"); bad = 1
+sys.exit(bad)
+EOF
+}
+check 'consistent "$work"/{thin,thick,flat,suite}/*/report.json' \
+  "a limit in report.json is not the engine's metric over its tolerance"
+
 # copies of a valid report.json, each broken in one way the schema must catch
 [ $fail -eq 0 ] || exit 1 # no valid report to break
 mkdir "$work/broken"

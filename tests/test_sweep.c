@@ -127,9 +127,10 @@ static void check_real_floor(void) {
 }
 
 static void check_pareto(void) {
-  /* (error, cost): A (1, 1) B (0.5, 2) C (2, 2) D (0.5, 3) E (0.1, 10, failed) */
+  /* (error, cost): A (1, 1) B (0.5, 2) C (0.8, 2) D (0.5, 3) E (0.1, 10, failed):
+   * C is dominated by B at the same cost only, D by B at the same error only */
   dv_sweep_point p[5];
-  const double e[5] = {1, 0.5, 2, 0.5, 0.1}, c[5] = {1, 2, 2, 3, 10};
+  const double e[5] = {1, 0.5, 0.8, 0.5, 0.1}, c[5] = {1, 2, 2, 3, 10};
   const int want[5] = {1, 1, 0, 0, 0};
   memset(p, 0, sizeof p);
   for (int i = 0; i < 5; i++) {

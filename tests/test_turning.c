@@ -31,6 +31,21 @@ static void nutation(dv_traj *tr, double T, double a, double decay, double w, do
   }
 }
 
+/* a decaying nutation sampled every 0.1 s whose first maximum is at t_max:
+ * theta = 0.9 + (0.5 - 0.01 t) cos(2 pi (t - t_max) / T0) */
+static void coarse(dv_traj *tr, double t_max) {
+  const double k = 2 * M_PI / T0;
+  for (int i = 0; i <= 40; i++) {
+    dv_sample s;
+    memset(&s, 0, sizeof s);
+    s.t = 0.1 * i;
+    const double amp = 0.5 - 0.01 * s.t;
+    s.y[RED_TH] = 0.9 + amp * cos(k * (s.t - t_max));
+    s.y[RED_VTH] = -0.01 * cos(k * (s.t - t_max)) - amp * k * sin(k * (s.t - t_max));
+    dv_run_traj_push(tr, &s);
+  }
+}
+
 int main(void) {
   dv_traj ref = {0}, slow = {0}, decaying = {0}, steady = {0}, noisy = {0};
   double v[3];
@@ -94,7 +109,17 @@ int main(void) {
    * (measured 1.2e-5 rad off it: a minimum moves as its swing shrinks) */
   CHECK_NEAR(v[0], 0.05 * 0.04, 5e-5, "both minima inside");
 
-  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy, &rising, &rising_fast};
-  for (size_t i = 0; i < 7; i++) dv_run_traj_free(all[i]);
+  /* a turn inside the first sample interval is a turn (a swing of 8e-3 rad from
+   * the start at 0.1 s samples): maxima 0.1 s apart are paired in order, each
+   * off by the decay over 0.1 s (1e-3 rad), not by a period's (1.7e-2 rad).
+   * Measured 2e-8 rad off that (a missed first maximum: 2.7e-2 rad off) */
+  dv_traj early = {0}, later = {0};
+  coarse(&early, 0.05);
+  coarse(&later, 0.15);
+  dv_run_turning_compare(&early, &later, INFINITY, v);
+  CHECK_NEAR(v[0], 0.01 * 0.1, 1e-5, "a maximum inside the first interval");
+
+  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy, &rising, &rising_fast, &early, &later};
+  for (size_t i = 0; i < 9; i++) dv_run_traj_free(all[i]);
   return TEST_RESULT();
 }
