@@ -20,12 +20,24 @@ sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
 dragonbox=${DV_DRAGONBOX_INCLUDE:-$(ls -d /usr/include/dragonbox-* 2>/dev/null | tail -1)}
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -I"$src/common" -I"$dragonbox" \
   -c "$src/common/dv_format.cc" -o "$work/dv_format.o" || exit 1
+# engines written in C++, each in its folder (engines/NAME/*.cc)
+cxx_engines=()
+for cc in "$src"/engines/*/*.cc; do
+  [ -e "$cc" ] || continue
+  o="$work/$(basename "$cc" .cc).o"
+  # shellcheck disable=SC2046
+  clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize=vptr \
+    -I"$src/common" -I"$src/reduced" -I"$src/scenario" -I"$src/engines" \
+    $(pkg-config --cflags bullet-float64) \
+    -c "$cc" -o "$o" || exit 1
+  cxx_engines+=("$o")
+done
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "$src"/engines/*.c \
-  "$src/common/dv_error.c" "$work/dv_format.o" "$src"/reduced/*.c \
-  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode) -lmujoco $sundials \
+  "$src/common/dv_error.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c \
+  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode bullet-float64) -lmujoco $sundials \
   -ldouble-conversion -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
 cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
