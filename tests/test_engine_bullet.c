@@ -19,6 +19,7 @@
 #include "dv_engine.h"
 #include "dv_pose.h"
 #include "dv_test.h"
+#include "dv_test_traj.h"
 
 static const dv_engine_type *const E = &dv_engine_bullet;
 static const char *const BODIES[] = {"multibody", "rigidbody"};
@@ -36,22 +37,15 @@ static dv_scenario base(void) {
   return sc;
 }
 
-/* run sc from y to t_end; the last status, sample and stats; every theta in
- * theta (may be NULL, room for t_end / output_dt + 1) */
-static int run(const dv_scenario *sc, const double y[RED_NSTATE], double t_end, dv_sample *last,
-               dv_engine_stats *st, double *theta) {
-  dv_error err = {{0}};
-  void *e = E->alloc(sc, &err);
-  if (!e) return DV_ESYSTEM;
-  int status = E->reset(e, y, &err);
-  for (long k = 0; status == DV_OK && k * sc->output_dt <= t_end + 1e-12; k++) {
-    status = E->advance(e, k * sc->output_dt, last, &err);
-    if (theta && status >= 0) theta[k] = last->y[RED_TH];
-  }
-  E->stats(e, st);
-  if (status < 0) CHECK(err.msg[0], "a failed run without a message");
-  E->free(e);
-  return status;
+static traj tr;
+
+/* run sc from y to t_end into tr (dv_test_traj.h); its status */
+static int run(dv_scenario sc, const double y[RED_NSTATE], double t_end) {
+  memcpy(sc.initial, y, sizeof sc.initial);
+  sc.duration = t_end;
+  dv_test_run(E, &sc, &tr);
+  if (tr.status < 0) CHECK(tr.msg[0], "a failed run without a message");
+  return tr.status;
 }
 
 static void check_round_trip(void) {
@@ -95,12 +89,12 @@ static void check_grid(void) {
     dv_scenario sc = base();
     dv_scenario_set(&sc, "bullet", "body", BODIES[body], NULL);
     dv_scenario_set_number(&sc, "bullet", "timestep", 1e-3, NULL);
-    dv_sample s;
-    dv_engine_stats st;
-    CHECK(run(&sc, CIRCLE, 0.05, &s, &st, NULL) == DV_OK, "%s", st.detail);
-    CHECK(st.steps == 50 && s.t == 0.05, "%ld steps to t = %g, want 50", st.steps, s.t);
-    CHECK(st.contacts_max == 1 && s.contacts == 1, "%s: %d contacts", BODIES[body],
-          st.contacts_max);
+    CHECK(run(sc, CIRCLE, 0.05) == DV_OK, "%s", tr.stats.detail);
+    const dv_sample *s = &tr.s[tr.n - 1];
+    CHECK(tr.stats.steps == 50 && s->t == 0.05, "%ld steps to t = %g, want 50", tr.stats.steps,
+          s->t);
+    CHECK(tr.stats.contacts_max == 1 && s->contacts == 1, "%s: %d contacts", BODIES[body],
+          tr.stats.contacts_max);
   }
 }
 
@@ -109,20 +103,19 @@ static void check_fall(void) {
   dv_scenario sc = base();
   dv_scenario_set_number(&sc, "bullet", "timestep", 1e-4, NULL);
   const double y[RED_NSTATE] = {M_PI / 2 - 0.1, 0, 0, 0, 0, 0, 0, 0};
-  double theta[301];
-  dv_sample s;
-  dv_engine_stats st;
-  const int status = run(&sc, y, 3.0, &s, &st, theta);
-  CHECK(status == DV_EVENT && st.outcome == DV_OUTCOME_EVENT && st.lay_down == -1,
-        "fall: status %d, %s: %s", status, dv_outcome_name(st.outcome), st.detail);
-  CHECK(strstr(st.detail, "lower limit 0.01 rad"), "fall: %s", st.detail);
+  const int status = run(sc, y, 3.0);
+  const dv_engine_stats *st = &tr.stats;
+  const dv_sample *s = &tr.s[tr.n - 1];
+  CHECK(status == DV_EVENT && st->outcome == DV_OUTCOME_EVENT && st->lay_down == -1,
+        "fall: status %d, %s: %s", status, dv_outcome_name(st->outcome), st->detail);
+  CHECK(strstr(st->detail, "lower limit 0.01 rad"), "fall: %s", st->detail);
   /* the reference lies down at 0.394478 s (diskval simulate scenarios/falling.ini
    * --engine reduced --set engines.reduced.theta_limit=0.01); measured here
    * 0.3955 s, 1.0e-3 s (10 steps) later */
-  CHECK(fabs(s.t - 0.394478) < 3e-3 && s.y[RED_TH] < 0.01, "fall: theta %g at t = %g",
-        s.y[RED_TH], s.t);
-  int falls = 1;
-  for (int k = 1; k < 300 && k * sc.output_dt < s.t - 1e-9; k++) falls &= theta[k] < theta[k - 1];
+  CHECK(fabs(s->t - 0.394478) < 3e-3 && s->y[RED_TH] < 0.01, "fall: theta %g at t = %g",
+        s->y[RED_TH], s->t);
+  int falls = tr.n > 1;
+  for (long k = 1; k < tr.n; k++) falls &= tr.s[k].y[RED_TH] < tr.s[k - 1].y[RED_TH];
   CHECK(falls, "theta rose during the fall");
 }
 
@@ -194,19 +187,19 @@ static void check_faults(void) {
   dv_scenario_set_number(&sc, "bullet", "timestep", 0.05, NULL);
   sc.output_dt = 0.05;
   const double spin[RED_NSTATE] = {1.0, 5.0, 300.0, -3000.0, 0, 0, 0, 0};
-  int status = run(&sc, spin, 10.0, &s, &st, NULL);
-  CHECK(status == DV_ENUMERIC &&
-            (st.outcome == DV_OUTCOME_DIVERGED || st.outcome == DV_OUTCOME_LOST_CONTACT),
-        "blow-up: status %d, %s: %s", status, dv_outcome_name(st.outcome), st.detail);
-  fprintf(stderr, "absurd run: %s (%s)\n", dv_outcome_name(st.outcome), st.detail);
+  int status = run(sc, spin, 10.0);
+  CHECK(status == DV_ENUMERIC && (tr.stats.outcome == DV_OUTCOME_DIVERGED ||
+                                  tr.stats.outcome == DV_OUTCOME_LOST_CONTACT),
+        "blow-up: status %d, %s: %s", status, dv_outcome_name(tr.stats.outcome), tr.stats.detail);
+  fprintf(stderr, "absurd run: %s (%s)\n", dv_outcome_name(tr.stats.outcome), tr.stats.detail);
   /* tipping over at 20 rad/s needs r theta_dot^2 = 40 m/s^2 > g of pull:
    * the disk leaves the ground */
   sc = base();
   dv_scenario_set_number(&sc, "bullet", "timestep", 1e-4, NULL);
   const double jump[RED_NSTATE] = {M_PI / 2, 20.0, 0, 0, 0, 0, 0, 0};
-  status = run(&sc, jump, 1.0, &s, &st, NULL);
-  CHECK(status < 0 && st.outcome == DV_OUTCOME_LOST_CONTACT, "jump: %s: %s",
-        dv_outcome_name(st.outcome), st.detail);
+  status = run(sc, jump, 1.0);
+  CHECK(status < 0 && tr.stats.outcome == DV_OUTCOME_LOST_CONTACT, "jump: %s: %s",
+        dv_outcome_name(tr.stats.outcome), tr.stats.detail);
   /* C = 0: refused with a message */
   sc = base();
   sc.disk.C = 0.0;
