@@ -11,6 +11,10 @@
  *    its energy (two friction directions).
  * 4. Faults end the run, not the process: NaN state, blow-up, lost contact,
  *    C = 0 refused.
+ * 5. The cylinder stand-in (geom cylinder, margin 0): a disk tilted inside its
+ *    rocking angle atan(h/r) falls as the thin disk but the cylinder rocks
+ *    back; on the steady circle the cylinder follows the matched reference,
+ *    and differs from the thin reference by the thickness's own error.
  */
 #include <math.h>
 #include <stdio.h>
@@ -18,6 +22,7 @@
 
 #include "dv_engine.h"
 #include "dv_pose.h"
+#include "dv_reference.h"
 #include "dv_test.h"
 #include "dv_test_traj.h"
 
@@ -210,6 +215,79 @@ static void check_faults(void) {
   E->free(NULL);
 }
 
+/* the smallest theta of a run over its first n samples */
+static double lowest_theta(const traj *t, long n) {
+  double low = INFINITY;
+  for (long i = 0; i < n && i < t->n; i++) low = fmin(low, t->s[i].y[RED_TH]);
+  return low;
+}
+
+/* a disk (r 0.06 m) 0.02 rad off upright, spun at 0.3 of the critical spin: the
+ * thin disk falls, a 2 mm cylinder (atan(h/r) 0.033 rad) rocks back. Measured
+ * (DV_TEST_MEASURE=1): lowest theta over the reference's validity window,
+ * reduced 0.3892, Bullet's thin disk 1.0e-5 rad from it; the cylinder's over
+ * 2 s 1.5508 */
+static void check_small_tilt(void) {
+  static traj ref, thin, cyl;
+  dv_scenario sc = base();
+  sc.disk = red_disk_uniform(0.06, 1.0, 9.81);
+  sc.duration = 2.0;
+  const double y[RED_NSTATE] = {M_PI / 2 - 0.02, 0, 0, 0.3 * sqrt(4.0 * 9.81 / (5.0 * 0.06)),
+                                0, 0, 0, 0};
+  memcpy(sc.initial, y, sizeof sc.initial);
+  dv_test_run(&dv_engine_reduced, &sc, &ref);
+  dv_test_run(E, &sc, &thin);
+  dv_scenario_set(&sc, "bullet", "geom", "cylinder", NULL);
+  dv_scenario_set_number(&sc, "bullet", "half_thickness", 0.002, NULL);
+  CHECK(0.02 < atan(0.002 / 0.06), "the tilt is inside the rocking angle");
+  dv_test_run(E, &sc, &cyl);
+  const double until = dv_reference_valid_until(&sc, ref.s, (size_t)ref.n);
+  long n = 0;
+  while (n < ref.n && ref.s[n].t <= until) n++;
+  CHECK(n > 1 && thin.n >= n, "windows: reference %ld samples to %g s, thin %ld", n, until,
+        thin.n);
+  const double lo_ref = lowest_theta(&ref, n), lo_thin = lowest_theta(&thin, n);
+  const double lo_cyl = lowest_theta(&cyl, cyl.n);
+  CHECK(lo_ref < M_PI / 2 - 0.5, "the reference does not fall: %g", lo_ref);
+  printf("small tilt: lowest theta reduced %.4f, thin %.4f, cylinder %.4f\n", lo_ref, lo_thin,
+         lo_cyl);
+  CHECK_NEAR(lo_thin, lo_ref, 1e-3, "lowest theta, thin disk against the reference");
+  CHECK(cyl.status == DV_OK && lo_cyl > M_PI / 2 - 0.1, "the cylinder falls: %g (%s)", lo_cyl,
+        cyl.stats.detail);
+}
+
+/* the largest theta difference of two runs over their common samples */
+static double theta_apart(const traj *a, const traj *b) {
+  double e = 0.0;
+  for (long i = 0; i < a->n && i < b->n; i++)
+    e = fmax(e, fabs(a->s[i].y[RED_TH] - b->s[i].y[RED_TH]));
+  return a->n == b->n ? e : INFINITY;
+}
+
+/* the 2 mm cylinder on the steady circle (1 s; the thick circle's own start):
+ * against the matched reference of its thickness theta 1.26e-4 rad, against the
+ * thin reference 8.26e-3 rad, the matched reference's own distance from the thin
+ * 8.28e-3 (measured with DV_TEST_MEASURE=1) */
+static void check_cylinder_circle(void) {
+  static traj matched, thin, cyl;
+  dv_scenario sc = base();
+  memcpy(sc.initial, CIRCLE, sizeof sc.initial);
+  dv_scenario_set(&sc, "bullet", "geom", "cylinder", NULL);
+  dv_scenario_set_number(&sc, "bullet", "half_thickness", 0.002, NULL);
+  dv_scenario_set_number(&sc, "matched", "half_thickness", 0.002, NULL);
+  dv_test_run(&dv_engine_matched, &sc, &matched);
+  dv_test_run(&dv_engine_reduced, &sc, &thin);
+  dv_test_run(E, &sc, &cyl);
+  CHECK(cyl.status == DV_OK, "cylinder circle: %s", cyl.msg);
+  const double own = theta_apart(&cyl, &matched), thick = theta_apart(&matched, &thin);
+  printf("cylinder circle: against matched %.3g, thin %.3g; matched against thin %.3g rad\n", own,
+         theta_apart(&cyl, &thin), thick);
+  CHECK_NEAR(own, 0.0, 5e-4, "cylinder against the matched reference");
+  CHECK(thick > 10.0 * own, "the thickness's error %g is not far above the engine's %g", thick,
+        own);
+  CHECK_NEAR(theta_apart(&cyl, &thin), thick, 2.0 * own, "cylinder against the thin reference");
+}
+
 int main(void) {
   CHECK(!strncmp(E->version(), "Bullet 3.", 9) && strstr(E->version(), " double precision"),
         "version %s", E->version());
@@ -218,5 +296,7 @@ int main(void) {
   check_fall();
   check_convergence();
   check_faults();
+  check_small_tilt();
+  check_cylinder_circle();
   return TEST_RESULT();
 }

@@ -10,7 +10,7 @@
  * disk; atan(h/r) is the tilt from upright inside which it rocks back, and
  * the elevation of its contact vector lying flat, not a floor on theta.
  * Checked on a US quarter (h/r 0.072) and a hockey puck (h/r 1/3, atan 0.32
- * rad): ODE's and MuJoCo's cylinders and the matched reference each end at
+ * rad): ODE's, MuJoCo's and Bullet's cylinders and the matched reference each end at
  * the lower limit, below atan(h/r), at the same time within their steps, and
  * every engine's outcome names the limit and the time in the same words.
  * Usage: test_lying_down SCENARIO (tests/data/coin_falls_flat.ini). */
@@ -22,18 +22,18 @@
 #include "dv_test.h"
 #include "dv_test_traj.h"
 
-static traj runs[4];
+static traj runs[5];
 
 /* one body falling flat: every engine against the matched reference */
 static void check_body(const char *what, const dv_scenario *sc) {
   const double limit = dv_reference_settings(sc)->theta_limit;
   const double h = 0.5 * sc->thickness, corner = atan(h / sc->disk.r);
   const dv_engine_type *engines[] = {&dv_engine_matched, &dv_engine_ode, &dv_engine_mujoco,
-                                     &dv_engine_reduced};
+                                     &dv_engine_bullet, &dv_engine_reduced};
   double t_matched = NAN;
   CHECK(corner > 5.0 * limit, "%s: atan(h/r) %g is not far above the limit %g", what, corner,
         limit);
-  for (int i = 0; i < 4; i++) {
+  for (int i = 0; i < 5; i++) {
     const dv_engine_type *e = engines[i];
     traj *tr = &runs[i];
     dv_test_run(e, sc, tr);

@@ -8,11 +8,12 @@
  * cylinder of radius r and half-height 0, whose collision margin Bullet
  * itself drops to 0 (setSafeMargin: a tenth of the smallest half-extent), so
  * its support point is the rim's lowest point P = G + r d, and the convex-plane
- * collider gives that one point. A thickness would bring the margin back
- * (0.04 m by default, rounding the rim: a 2 mm disk sank 1.6 cm), so Bullet
- * offers no thick stand-in: in a scene with a [disk] thickness it still
- * models the thin disk and is compared with the thin reference (geom thin,
- * half_thickness 0). The ground is a static plane z = 0; gravity -z;
+ * collider gives that one point. For a [disk] thickness the shape is
+ * btCylinderShapeZ(r, r, h) with its margin set to 0 (geom cylinder, as ODE's
+ * and MuJoCo's): its support point is the exact rim corner (the contact
+ * distance 3.5e-18 m at the exact height), compared with the matched
+ * reference (quarter_circle: theta 4.3e-4 rad; with the default margin 0.04 m
+ * a 2 mm disk sank 1.6 cm). The ground is a static plane z = 0; gravity -z;
  * friction the coefficient of [engines.bullet] friction (the plane's is 1,
  * Bullet multiplies them), in two directions per contact
  * (SOLVER_USE_2_FRICTION_DIRECTIONS: with one, a btRigidBody on the steady
@@ -33,6 +34,10 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <BulletDynamics/Featherstone/btMultiBodyMLCPConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
+#include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
+#include <BulletDynamics/MLCPSolvers/btSolveProjectedGaussSeidel.h>
 
 #include <cmath>
 #include <cstdarg>
@@ -47,6 +52,7 @@ extern "C" {
 #include "dv_reference.h"
 #include "engine_choose.h"
 #include "engine_scene.h"
+#include "engine_shape.h"
 }
 
 #define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
@@ -62,12 +68,16 @@ extern "C" {
  * window, T the shortest time scale, D the duration), btMultiBody /
  * btRigidBody: nonuniform 0.83 / 1.29 (its wobble's phase), euler_disk 0.20,
  * steady_steep 0.16 / 0.45, steady_circle 0.107 / 0.29, fast_spin 0.034,
- * falling 0.011 / 0.011, upright_stable 7.5e-5 / 1.4e-3. Small C is the
- * solver's, not the step's: small_c 3.4 / 2.0, and tiny_c (C = 1e-6 m r^2)
- * diverges in btMultiBody (runaway energy at 0.19 s) and errs 0.14 rad in
- * btRigidBody; 10 sequential impulse iterations do not converge on a contact
- * whose friction row has the tiny effective mass C / r^2 (tiny_c, btMultiBody:
- * 0.11 rad at 100 iterations, 0.015 at 1000). Cost of a step (compare's
+ * falling 0.011 / 0.011, upright_stable 7.5e-5 / 1.4e-3, with the sequential
+ * impulse solver (solver si). The default solver dantzig gives the same theta
+ * errors to three digits on each of these scenes (btMultiBody, 2.5e-5 s) and
+ * at the same cost per step; where C is small the error was the solver's, not
+ * the step's: 10 sequential impulse iterations do not converge on a friction
+ * row of tiny effective mass C / r^2 (small_c 4.1e-3 rad with si, 9.6e-5 with
+ * dantzig; tiny_c, C = 1e-6 m r^2, diverged with si, 9.6e-5 with dantzig).
+ * dantzig slips where the friction demand is near the coefficient: euler_disk
+ * (ratio 4.08) errs 0.049 rad at friction 5 and 6, si 2.4e-4; at the
+ * scene's friction 10, both 2.4e-4. Cost of a step (compare's
  * wall_per_sim_s over the steps, every scenario above): btMultiBody 1.8 us,
  * btRigidBody 2.4 us. */
 #define BULLET_C_MULTI 0.83
@@ -85,14 +95,18 @@ struct bullet_settings {
   double friction;       /* coefficient */
   double cfm;            /* the solver's global constraint force mixing */
   int gyroscopic;        /* 0 implicit_body, 1 explicit, 2 off */
-  int geom;              /* 0 thin: the only shape */
+  int geom;              /* 0 thin, 1 cylinder */
+  double half_thickness; /* m, the cylinder's half-length */
+  int solver;            /* 0 sequential impulse, 1 MLCP Dantzig, 2 MLCP projected Gauss-Seidel */
 };
 
 const char *const BODIES[] = {"multibody", "rigidbody", NULL};
 const char *const GYROSCOPIC[] = {"implicit_body", "explicit", "off", NULL};
-const char *const GEOMS[] = {"thin", NULL};
+const char *const GEOMS[] = {"thin", "cylinder", NULL};
+const char *const SOLVERS[] = {"si", "dantzig", "pgs", NULL};
 enum { BODY_MULTI = 0, BODY_RIGID = 1 };
 enum { GYRO_IMPLICIT_BODY = 0, GYRO_EXPLICIT = 1, GYRO_OFF = 2 };
+enum { SOLVER_SI = 0, SOLVER_DANTZIG = 1, SOLVER_PGS = 2 };
 
 #define AT(field) offsetof(bullet_settings, field)
 
@@ -102,15 +116,19 @@ const dv_setting_spec KEYS[] = {
     {"body", DV_SETTING_CHOICE, AT(body), 0, 0, BODY_MULTI, 0, 1, BODIES, NULL, "",
      "multibody: btMultiBody (Featherstone) floating base; rigidbody: btRigidBody"},
     {"solver_iterations", DV_SETTING_INT, AT(solver_iterations), 0, 0, 10, 1, 100000, NULL, NULL,
-     "", "sequential impulse solver"},
+     "", "iterations of the si and pgs solvers (dantzig solves the LCP exactly)"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "",
      "coefficient, in each of two directions"},
     {"cfm", DV_SETTING_REAL, AT(cfm), 0, 0, 0.0, 0.0, 1.0, NULL, NULL, "",
      "the solver's global constraint force mixing: contact softness"},
     {"gyroscopic", DV_SETTING_CHOICE, AT(gyroscopic), 0, 0, GYRO_IMPLICIT_BODY, 0, 2, GYROSCOPIC,
      NULL, "", "rigidbody: Bullet's gyroscopic flag; multibody: its gyroscopic term, on unless off"},
-    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, 0, 0, 0, GEOMS, NULL, "",
-     "the exact thin disk only: a thickness brings Bullet's collision margin"},
+    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, 0, 0, 1, GEOMS, NULL, "",
+     "thin: the exact disk; cylinder: btCylinderShapeZ of margin 0"},
+    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL,
+     "m", "cylinder half-length (default: [disk] thickness / 2 if > 0)"},
+    {"solver", DV_SETTING_CHOICE, AT(solver), 0, 0, SOLVER_DANTZIG, 0, 2, SOLVERS, NULL, "",
+     "dantzig: the contact's LCP solved exactly (btMLCPSolver); si: sequential impulse; pgs"},
 };
 
 /* the error models (constants above) */
@@ -129,6 +147,8 @@ const dv_engine_knobs KNOBS = {"bullet", "body", MODELS, 2, 0x3, 1};
 
 int bullet_check(dv_scenario *sc, void *block, dv_setting_issue *issue);
 
+const dv_shape_keys SHAPE = {"bullet", "geom", 1, 0, "half_thickness"};
+
 const dv_settings_section SETTINGS = {"bullet", KEYS, sizeof KEYS / sizeof KEYS[0],
                                       sizeof(bullet_settings), bullet_check};
 
@@ -143,13 +163,7 @@ int bullet_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   dv_engine_choose(sc, &dv_engine_bullet, &KNOBS, s->body, &in, &out, why, sizeof why, keys);
   s->body = out.choice;
   s->timestep = out.timestep;
-  if (sc->thickness > 0.0) {
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used,
-             "%sgeom thin: Bullet models the thin disk only (a thickness brings its collision "
-             "margin), compared with the thin reference",
-             used ? "; " : "");
-  }
+  dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "bullet", keys, why);
   return 0;
 }
@@ -167,6 +181,7 @@ struct bullet_engine {
   btCollisionDispatcher *dispatcher;
   btBroadphaseInterface *broadphase;
   btConstraintSolver *solver;
+  btMLCPSolverInterface *mlcp;
   btDiscreteDynamicsWorld *world; /* a btMultiBodyDynamicsWorld for BODY_MULTI */
   btCylinderShapeZ *shape;
   btStaticPlaneShape *plane_shape;
@@ -291,6 +306,7 @@ void destroy(bullet_engine *e) {
   delete e->shape;
   delete e->plane_shape;
   delete e->solver;
+  delete e->mlcp;
   delete e->broadphase;
   delete e->dispatcher;
   delete e->config;
@@ -308,12 +324,18 @@ void build(bullet_engine *e) {
   e->config = new btDefaultCollisionConfiguration();
   e->dispatcher = new btCollisionDispatcher(e->config);
   e->broadphase = new btDbvtBroadphase();
+  if (e->set.solver == SOLVER_DANTZIG) e->mlcp = new btDantzigSolver();
+  if (e->set.solver == SOLVER_PGS) e->mlcp = new btSolveProjectedGaussSeidel();
   if (e->set.body == BODY_MULTI) {
-    btMultiBodyConstraintSolver *solver = new btMultiBodyConstraintSolver();
+    btMultiBodyConstraintSolver *solver =
+        e->mlcp ? new btMultiBodyMLCPConstraintSolver(e->mlcp) : new btMultiBodyConstraintSolver();
     e->solver = solver;
     e->world = new btMultiBodyDynamicsWorld(e->dispatcher, e->broadphase, solver, e->config);
   } else {
-    e->solver = new btSequentialImpulseConstraintSolver();
+    if (e->mlcp)
+      e->solver = new btMLCPSolver(e->mlcp);
+    else
+      e->solver = new btSequentialImpulseConstraintSolver();
     e->world = new btDiscreteDynamicsWorld(e->dispatcher, e->broadphase, e->solver, e->config);
   }
   e->world->setGravity(btVector3(0.0, 0.0, -e->disk.g));
@@ -330,7 +352,7 @@ void build(bullet_engine *e) {
   e->world->addRigidBody(e->ground);
 
   /* the thin disk: Bullet drops the margin to 0 at half-height 0 */
-  e->shape = new btCylinderShapeZ(btVector3(e->disk.r, e->disk.r, 0.0));
+  e->shape = new btCylinderShapeZ(btVector3(e->disk.r, e->disk.r, e->geom.half_thickness));
   e->shape->setMargin(0.0);
   const btVector3 inertia(e->disk.A, e->disk.A, e->disk.C);
   if (e->set.body == BODY_MULTI) {
@@ -377,7 +399,9 @@ void *bullet_alloc(const dv_scenario *sc, dv_error *err) {
   /* a scenario built in code leaves the step to the scene */
   dv_engine_derive_step(sc, &MODELS[e->set.body], &e->set.timestep, NULL, NULL, 0, NULL);
   e->disk = sc->disk;
-  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r, 0.0};
+  dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
+  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,
+                        e->set.geom == 1 ? e->set.half_thickness : 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
   e->cos_limit = std::cos(e->theta_limit);
   try {
@@ -489,10 +513,11 @@ void bullet_stats(const void *p, dv_engine_stats *out) {
   *out = static_cast<const bullet_engine *>(p)->st;
 }
 
-/* Bullet models the thin disk in every scene */
+/* the cylinder's half-length where the scene makes Bullet's body a cylinder, else 0 */
 double bullet_half_thickness(const dv_scenario *sc) {
-  (void)sc;
-  return 0.0;
+  bullet_settings s = *static_cast<const bullet_settings *>(dv_scenario_settings(sc, SETTINGS.name));
+  dv_engine_derive_shape(sc, &SHAPE, &s.geom, &s.half_thickness, NULL, 0, NULL);
+  return s.geom == 1 ? s.half_thickness : 0.0;
 }
 
 } // namespace
