@@ -8,9 +8,11 @@
 #include "dv_format.h"
 #include "dv_pose.h"
 
-const dv_engine_type *const dv_engines[] = {&dv_engine_reduced, &dv_engine_matched,
-                                            &dv_engine_mujoco, &dv_engine_ode,
-                                            &dv_engine_bullet, NULL};
+#define DV_ENGINE(name) &dv_engine_##name,
+const dv_engine_type *const dv_engines[] = {
+#include "dv_engines.def"
+    NULL};
+#undef DV_ENGINE
 
 const dv_engine_type *dv_engine_find(const char *name) {
   for (const dv_engine_type *const *e = dv_engines; *e; e++)

@@ -124,11 +124,10 @@ typedef struct dv_engine_type {
   void (*free)(void *engine); /* NULL-safe */
 } dv_engine_type;
 
-extern const dv_engine_type dv_engine_reduced; /* thin disk, reduced equations */
-extern const dv_engine_type dv_engine_matched; /* thick disk, Newton-Euler rolling */
-extern const dv_engine_type dv_engine_ode;     /* ODE 0.16 contact simulation */
-extern const dv_engine_type dv_engine_mujoco;  /* MuJoCo 2.2 contact simulation */
-extern const dv_engine_type dv_engine_bullet;  /* Bullet 3.24 contact simulation (engines/bullet/) */
+/* every engine's table, dv_engine_NAME (engines/NAME/), as dv_engines.def lists them */
+#define DV_ENGINE(name) extern const dv_engine_type dv_engine_##name;
+#include "dv_engines.def"
+#undef DV_ENGINE
 
 /* NULL-terminated list of every engine */
 extern const dv_engine_type *const dv_engines[];

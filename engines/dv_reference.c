@@ -33,11 +33,11 @@ void dv_reference_stats(const red_integrator *in, int event, const char *detail,
 }
 
 const dv_reduced_settings *dv_reference_settings(const dv_scenario *sc) {
-  return dv_scenario_settings(sc, dv_engine_reduced.name);
+  return dv_scenario_settings(sc, dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
 }
 
 const dv_matched_settings *dv_matched_settings_of(const dv_scenario *sc) {
-  return dv_scenario_settings(sc, dv_engine_matched.name);
+  return dv_scenario_settings(sc, dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name);
 }
 
 double dv_reference_valid_until(const dv_scenario *sc, const dv_sample *s, size_t n) {

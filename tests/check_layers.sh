@@ -2,8 +2,10 @@
 # check_layers.sh SOURCE_DIR: the layers depend one way (README, "Architecture").
 #
 # Every #include "x.h" in a layer's .c and .h files must name a header of
-# that layer or of one below it; no file outside engines/ (and the tests and
-# benchmarks) names a concrete engine, by its type or by its name in quotes.
+# that layer or of one below it, and an engine's own header (engines/NAME/)
+# serves its folder only; no file outside engines/NAME/ (but the registry
+# engines/dv_engines.def, the tests and the benchmarks) names the engine NAME,
+# by its table or by its name in quotes; C++ stays in the engines' folders.
 # Prints each violation as FILE:LINE: what; exit 1 if there is any.
 set -u
 src=${1:?usage: check_layers.sh SOURCE_DIR}
@@ -23,17 +25,19 @@ declare -A allowed=(
   [cli]="cli search report run io exec engines scenario reduced common"
 )
 
-# the layer that holds header h
+# the layer that holds header h (in the layer's folder or one below it)
 layer_of() {
   for l in "${!allowed[@]}"; do
-    [ -f "$l/$1" ] && { echo "$l"; return; }
+    compgen -G "$l/$1" >/dev/null || compgen -G "$l/*/$1" >/dev/null && { echo "$l"; return; }
   done
 }
 
+# a layer's own files, its subfolders' included
+layer_files() { find "$1" \( -name '*.c' -o -name '*.h' -o -name '*.cc' \) | sort; }
+
 bad=0
 for layer in "${!allowed[@]}"; do
-  for f in "$layer"/*.c "$layer"/*.h; do
-    [ -f "$f" ] || continue
+  for f in $(layer_files "$layer"); do
     while IFS=: read -r line header; do
       owner=$(layer_of "$header")
       [ -n "$owner" ] || continue # a library's header
@@ -41,37 +45,45 @@ for layer in "${!allowed[@]}"; do
         *" $owner "*) ;;
         *) echo "$f:$line: includes $owner/$header: $layer may not depend on $owner"; bad=1 ;;
       esac
+      # an engine's own headers serve its folder only
+      home=$(compgen -G "engines/*/$header" | head -1)
+      if [ -n "$home" ] && [ "$(dirname "$home")" != "$(dirname "$f")" ]; then
+        echo "$f:$line: includes $home: an engine's header outside its folder"; bad=1
+      fi
     done < <(grep -n '^#include "' "$f" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
   done
 done
 
-# engines in C, and those in C++ in a folder of their own (engines/NAME/*.cc)
-engines=$(sed -n 's/^\(extern "C" \)\{0,1\}const dv_engine_type \(dv_engine_[a-z_]*\) = .*/\2/p' \
-  engines/*.c engines/*/*.cc)
-names=$( (grep -ho '^    .name = "[a-z_]*"' engines/engine_*.c | sed 's/.*"\(.*\)"/\1/'
-  sed -n '/^extern "C" const dv_engine_type/{n;s/^ *"\([a-z_]*\)",.*/\1/p}' engines/*/*.cc))
+# the registry names every engine: DV_ENGINE(NAME), its table dv_engine_NAME in engines/NAME/
+engines=$(sed -n 's/^DV_ENGINE(\([a-z_0-9]*\)).*/\1/p' engines/dv_engines.def)
+[ -n "$engines" ] || { echo "engines/dv_engines.def: no engine"; bad=1; }
+for e in $engines; do
+  grep -qs "const dv_engine_type dv_engine_$e = " engines/"$e"/*.c engines/"$e"/*.cc ||
+    { echo "engines/$e/: no table dv_engine_$e (dv_engines.def names it)"; bad=1; }
+done
+# no file outside engines/NAME/ (but the registry, tests and benchmarks) names engine NAME,
+# by its table or by its name in quotes; comments may name engines
 for layer in "${!allowed[@]}"; do
-  [ "$layer" = engines ] && continue
-  for f in "$layer"/*.[ch]; do
-    [ -f "$f" ] || continue
-    code=$(sed 's|/\*.*\*/||; s|^ *\*.*||; s|^ */\*.*||' "$f") # comments may name engines
+  for f in $(layer_files "$layer"); do
+    case "$(basename "$f")" in test_*) continue ;; esac
+    code=$(sed 's|/\*.*\*/||; s|//.*||; s|^ *\*.*||; s|^ */\*.*||' "$f")
     for e in $engines; do
-      grep -n "\b$e\b" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine $e)|" | grep . && bad=1
-    done
-    for n in $names; do
-      grep -n "\"$n[\",]\|[ ,]$n\"" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine '$n')|" |
+      case "$f" in engines/"$e"/*) continue ;; esac
+      grep -n "\bdv_engine_$e\b" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine dv_engine_$e)|" |
+        grep . && bad=1
+      grep -n "\"$e[\",]\|[ ,]$e\"" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine '$e')|" |
         grep . && bad=1
     done
   done
 done
-# C++ only inside an engine's own folder (engines/NAME/) and common/dv_format.cc: no
-# other C or header file includes a C++ header
+# C++ only inside an engine's own folder (engines/NAME/) and common/dv_format.cc: no other
+# file is C++ or includes a C++ header (a standard one, or an engine library's)
+cxx='^#include <\(c[a-z]*\|[a-z_]*\|[^>]*\.hpp\|bt[A-Za-z]*\.h\|Bullet[A-Za-z/]*\.h\|LinearMath/[A-Za-z]*\.h\|Simbody\.h\|SimTK[^>]*\|dart/[^>]*\)>'
 for f in $(find common reduced scenario engines io exec run report search cli api include \
-  -maxdepth 1 -name '*.[ch]'); do
-  grep -n '^#include <\(bt[A-Za-z]*\|Bullet[A-Za-z/]*\|LinearMath/[A-Za-z]*\)\.h>\|^#include <c[a-z]*>$\|^#include <[a-z_]*>$' "$f" |
-    grep -v '\.h>' | sed "s|^|$f:|; s|\$|  (a C++ header outside an engine's folder)|" | grep . && bad=1
-  grep -n '^#include <\(bt[A-Za-z]*\|Bullet[A-Za-z/]*\|LinearMath/[A-Za-z]*\)\.h>' "$f" |
-    sed "s|^|$f:|; s|\$|  (Bullet outside engines/bullet/)|" | grep . && bad=1
+  \( -name '*.[ch]' -o -name '*.cc' \) ! -path 'engines/*/*' | sort); do
+  [ "$f" = common/dv_format.cc ] && continue
+  case "$f" in *.cc) echo "$f: C++ outside an engine's folder"; bad=1; continue ;; esac
+  grep -n "$cxx" "$f" | sed "s|^|$f:|; s|\$|  (a C++ header outside an engine's folder)|" | grep . && bad=1
 done
-[ $bad -eq 0 ] && echo "layers: every include goes downwards; no engine named outside engines/"
+[ $bad -eq 0 ] && echo "layers: every include goes downwards; every engine in its own folder, named nowhere else"
 exit $bad

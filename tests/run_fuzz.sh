@@ -32,11 +32,13 @@ for cc in "$src"/engines/*/*.cc; do
     -c "$cc" -o "$o" || exit 1
   cxx_engines+=("$o")
 done
+# the engines layer: its shared files and every engine's folder, without the engines' tests
+mapfile -t engine_c < <(find "$src/engines" -name '*.c' ! -name 'test_*' | sort)
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
-  "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "$src"/engines/*.c \
-  "$src/common/dv_error.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c \
+  "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "${engine_c[@]}" \
+  "$src/common/dv_error.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c "$src"/reduced/*/*.c \
   -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode bullet-float64) -lmujoco $sundials \
   -ldouble-conversion -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"

@@ -25,7 +25,7 @@
  * callback; its asserts are compiled out), so a non-finite state, a runaway
  * energy, a disk sunk deeper than r/20 are diverged and the lowest point more
  * than r/100 above the ground for 0.05 s is lost_contact, as in ODE
- * (engine_ode.c): checked every BT_CHECK_STEPS steps and before every sample,
+ * (engines/ode/engine_ode.c): checked every BT_CHECK_STEPS steps and before every sample,
  * lying down (and a NaN in n.z) every step. A C++ exception (out of memory)
  * is caught at each entry point and ends the run as an error.
  */

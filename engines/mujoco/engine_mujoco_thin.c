@@ -7,7 +7,7 @@
  * (mju_makeFrame) and adds friction, solref, solimp, condim and the gap.
  * The midpoint convention for pos is that of MuJoCo's own plane colliders
  * (mjc_PlaneSphere, mjc_PlaneCylinder). Checked against the closed form
- * P = G + r d (DESIGN section 1) by tests/test_mujoco_thin.
+ * P = G + r d (DESIGN section 1) by test_mujoco_thin.
  */
 #include "engine_mujoco_thin.h"
 

@@ -1,4 +1,4 @@
-/* test_mujoco_thin: MuJoCo's thin-disk collider (engines/engine_mujoco_thin.c).
+/* test_mujoco_thin: MuJoCo's thin-disk collider (engine_mujoco_thin.c).
  *
  * 1. The collider against the closed form P = G + r d (DESIGN section 1) over
  *    a grid of poses and heights: contact point, depth and normal to 1e-12 m,

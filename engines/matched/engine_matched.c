@@ -113,7 +113,7 @@ static double matched_half_thickness(const dv_scenario *sc) {
 }
 
 static int matched_tighten(dv_scenario *sc, dv_error *err) {
-  return dv_engine_reduced.tighten(sc, err);
+  return dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->tighten(sc, err);
 }
 
 const dv_engine_type dv_engine_matched = {

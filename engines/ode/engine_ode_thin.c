@@ -1,5 +1,5 @@
 /* engine_ode_thin: the thin disk as an ODE user geom class; checked against
- * the closed form P = G + r d by tests/test_ode_thin (both argument orders,
+ * the closed form P = G + r d by test_ode_thin (both argument orders,
  * contacts below and none above the plane). */
 #include "engine_ode_thin.h"
 
