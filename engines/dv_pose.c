@@ -1,5 +1,5 @@
 /* dv_pose: the DESIGN section 1 mapping, both ways; checked by
- * tests/test_pose (round trip, rim point at rest, equal energies). */
+ * tests/engines/test_pose (round trip, rim point at rest, equal energies). */
 #include "dv_pose.h"
 #include "red_vec3.h"
 

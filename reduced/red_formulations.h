@@ -1,5 +1,5 @@
 /* red_formulations: two independent formulations of the same motion, used
- * to cross-check the reduced equations (tests/test_formulations).
+ * to cross-check the reduced equations (tests/reduced/test_formulations).
  *
  * Momentum form (thesis 3.58 / 3.67), state (theta, rho_theta, rho_phi,
  * rho_psi, phi, psi, x, y):

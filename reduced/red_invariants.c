@@ -1,5 +1,5 @@
 /* red_invariants: f1, f2 from hypergeometric functions (GSL), checked by
- * tests/test_invariants (conservation along CVODE and GSL trajectories). */
+ * tests/reduced/test_invariants (conservation along CVODE and GSL trajectories). */
 #include "red_invariants.h"
 
 #include <gsl/gsl_errno.h>

@@ -1,5 +1,5 @@
 /* red_potential: effective potential and turning points of theta. Checked by
- * tests/test_potential against the extremes of integrated trajectories. */
+ * tests/reduced/test_limits against the extremes of integrated trajectories. */
 #include "red_potential.h"
 #include "red_gsl_words.h"
 

@@ -15,7 +15,7 @@
  *                                               + m rho x (g ez - omega x rho')
  * with I = A 1 + (C - A) n n^T in the world frame and
  * rho' = r d' - h sign n', d' = -theta' n - cos(theta) phi' t, n' = omega x n.
- * At h = 0 this is the thin disk of red_disk.h (tests/test_rolling).
+ * At h = 0 this is the thin disk of red_disk.h (tests/reduced/test_rolling).
  *
  * Exactly upright (cos theta and theta' zero to 1e-9) a thick disk stands on
  * the line across its rim, not on a corner: the contact force acts at

@@ -1,5 +1,5 @@
 /* red_steady: steady circles, upright critical spin, linear stability.
- * Checked by tests/test_steady (steady circles stay steady, upright above
+ * Checked by tests/reduced/test_steady (steady circles stay steady, upright above
  * and below the critical spin). */
 #include "red_steady.h"
 #include "red_gsl_words.h"

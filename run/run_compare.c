@@ -1,4 +1,4 @@
-/* dv_run_compare: comparison metrics; checked by tests/test_compare against
+/* dv_run_compare: comparison metrics; checked by tests/run/test_compare against
  * synthetic trajectories with known answers. */
 #include "run_compare.h"
 

@@ -5,7 +5,7 @@
  * (its segments; a single point when b has one vertex); the Hausdorff
  * distance is the larger of the two directions. Computed in O(n log n) for
  * paths that lie near each other: each polyline's segments go into a tree of
- * bounding boxes (tests/test_hausdorff checks the cost growth and that it
+ * bounding boxes (tests/run/test_hausdorff checks the cost growth and that it
  * equals the brute-force value).
  */
 #ifndef DV_RUN_HAUSDORFF_H

@@ -5,7 +5,8 @@
 # that layer or of one below it, and an engine's own header (engines/NAME/)
 # serves its folder only; no file outside engines/NAME/ (but the registry
 # engines/dv_engines.def, the tests and the benchmarks) names the engine NAME,
-# by its table or by its name in quotes; C++ stays in the engines' folders.
+# by its table or by its name in quotes; C++ stays in the engines' folders;
+# no folder holds more than 15 C or C++ files.
 # Prints each violation as FILE:LINE: what; exit 1 if there is any.
 set -u
 src=${1:?usage: check_layers.sh SOURCE_DIR}
@@ -84,6 +85,11 @@ for f in $(find common reduced scenario engines io exec run report search cli ap
   [ "$f" = common/dv_format.cc ] && continue
   case "$f" in *.cc) echo "$f: C++ outside an engine's folder"; bad=1; continue ;; esac
   grep -n "$cxx" "$f" | sed "s|^|$f:|; s|\$|  (a C++ header outside an engine's folder)|" | grep . && bad=1
+done
+# small folders: none holds more than 15 C or C++ files (group them as their parts suggest)
+for d in $(find . -path ./build\* -prune -o -path ./.git -prune -o -type d -print); do
+  n=$(find "$d" -maxdepth 1 \( -name '*.c' -o -name '*.cc' \) | wc -l)
+  [ "$n" -gt 15 ] && { echo "$d: $n C/C++ files, more than 15"; bad=1; }
 done
 [ $bad -eq 0 ] && echo "layers: every include goes downwards; every engine in its own folder, named nowhere else"
 exit $bad
