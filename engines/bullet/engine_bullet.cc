@@ -524,7 +524,7 @@ double bullet_half_thickness(const dv_scenario *sc) {
 
 extern "C" const dv_engine_type dv_engine_bullet = {
     "bullet",
-    "Bullet 3.24 contact simulation: the thin disk on a plane (btMultiBody or btRigidBody)",
+    "Bullet 3.24 contact simulation: the thin disk or a cylinder on a plane (btMultiBody or btRigidBody)",
     DV_ENGINE_CONTACT,
     &SETTINGS,
     &SEARCH,
