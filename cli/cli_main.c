@@ -63,7 +63,8 @@ int dv_cli_unknown_engine(const char *command, const char *name) {
 int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_error *err) {
   if (list && list[0]) return dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, err);
   size_t n = 0;
-  for (const dv_engine_type *const *e = dv_engines; *e && n < DV_MAX_ENGINES; e++)
+  _Static_assert(DV_NENGINES <= DV_MAX_ENGINES, "every engine fits in one comparison");
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
     if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
   engines[n] = NULL;
   return DV_OK;
