@@ -40,10 +40,11 @@
  *
  * The integrators: Simbody's explicit Runge-Kutta at a fixed step (rk3:
  * RungeKutta3, third order; rkmerson: RungeKuttaMerson, fourth), or
- * error-controlled at [engines.simbody] accuracy (the step then a maximum),
- * each projecting q and u back onto the constraints to constraint_tolerance
- * after every step. Events are found on the step grid (the first step past
- * the limit), as Bullet's.
+ * error-controlled at [engines.simbody] accuracy (the integrator's own steps,
+ * landing on every sample), each projecting u back onto the constraints
+ * after a step whose constraint error exceeds constraint_tolerance (the only
+ * drift: the chain has no holonomic constraint). Events are found on the
+ * step grid (the first step past the limit), as Bullet's.
  *
  * Faults end the run, never the process: a non-finite state and a runaway
  * energy are diverged; a Simbody exception (an integrator or projection
@@ -68,18 +69,31 @@ extern "C" {
 #include "engine_scene.h"
 }
 
-/* The error model of engine_scene.h per integrator. The model is first order
- * (theta error ~ c (h / T) (D / T)); rk3 is third order and rkmerson fourth,
- * and engine_scene.h's model has no order, so c is the largest err T^2 /
- * (h D) measured at the steps the model then gives (h ~ 1e-3 to 1e-4 s):
- * diskval compare --engines simbody with engines.simbody.timestep=H on the
- * shipped scenarios (thin disk, whole validity window, T the shortest time
- * scale, D the duration); the numbers are in SIMBODY_C_* below. The cost of
- * a step is compare's wall_per_sim_s over the steps per simulated second. */
-#define SIMBODY_C_RK3 2e-3
-#define SIMBODY_C_MERSON 5e-4
-#define SIMBODY_COST_RK3 2.0e-5
-#define SIMBODY_COST_MERSON 3.0e-5
+/* The error model of engine_scene.h per integrator. engine_scene.h's model
+ * is first order (theta error ~ c (h / T) (D / T)) and has no order field;
+ * rk3 is third order and rkmerson fifth as measured (the theta error of
+ * nonuniform at h = 3.3e-3, 2e-3, 1e-3 s: rk3 4.0e-5, 6.1e-6, 7.7e-7 rad,
+ * x7.97 for half the step; rkmerson 4.9e-9, 3.8e-10 rad at 3.3e-3, 2e-3 s,
+ * x12.9 for 0.6 of the step: 1.67^5), so c is measured at the step the
+ * model then gives on every shipped scene, T / 100 (the steps-per-scale
+ * floor: the fall time 0.101 s / 101 = 1e-3 s on the output grid): the
+ * largest err T^2 / (h D) with diskval compare SCENARIO --engines simbody
+ * --set engines.simbody.integrator=I --set engines.simbody.timestep=H on
+ * the shipped thin-disk scenarios (whole validity window, T the shortest
+ * time scale, D the duration compared). rk3 at 1e-3 s: small_c 3.0e-5,
+ * tiny_c 3.1e-5, falling 2.2e-6, nonuniform 1.6e-6, upright_unstable
+ * 1.1e-6, upright_stable 4e-9, the steady circles 1e-14 (theta held to
+ * rounding); rkmerson at 2e-3 s: small_c 9.1e-7, tiny_c 9.2e-7, nonuniform
+ * 3.9e-10. A c this small gives a step far longer than T / 100 from the
+ * first-order formula, so the floor decides the step; the probe then
+ * confirms it. Cost of a step (compare's wall_per_sim_s over the steps per
+ * simulated second, nonuniform and steady_steep, every step checking the
+ * events and the energy): rk3 8e-5 s (3 stages and a projection), rkmerson
+ * 1.7e-4 s (5 stages). */
+#define SIMBODY_C_RK3 3.1e-5
+#define SIMBODY_C_MERSON 9.2e-7
+#define SIMBODY_COST_RK3 8e-5
+#define SIMBODY_COST_MERSON 1.7e-4
 
 namespace {
 
@@ -87,7 +101,7 @@ using namespace SimTK;
 
 /* [engines.simbody] */
 struct simbody_settings {
-  double timestep;   /* s: the fixed step, or the largest where accuracy > 0 */
+  double timestep;   /* s: the fixed step (accuracy 0) */
   int integrator;    /* INTEG_* */
   double accuracy;   /* 0: fixed step; > 0: error-controlled to this accuracy */
   double tolerance;  /* constraint tolerance of the projection */
@@ -103,13 +117,14 @@ enum { INTEG_RK3 = 0, INTEG_MERSON = 1 };
 
 const dv_setting_spec KEYS[] = {
     {"timestep", DV_SETTING_REAL, AT(timestep), 0, 0, NAN, 1e-7, 0.1, NULL, NULL, "s",
-     "fixed step (the largest step where accuracy > 0); default: from the scene's time scales"},
+     "the fixed step (unused where accuracy > 0); default: from the scene's time scales"},
     {"integrator", DV_SETTING_CHOICE, AT(integrator), 0, 0, INTEG_RK3, 0, 1, INTEGRATORS, NULL,
      "", "explicit Runge-Kutta: rk3 (third order) or rkmerson (Merson, fourth order)"},
     {"accuracy", DV_SETTING_REAL, AT(accuracy), 0, 0, 0.0, 0.0, 0.1, NULL, NULL, "",
-     "0: fixed step; > 0: the integrator's error control to this relative accuracy"},
+     "0: the fixed timestep; > 0: the integrator's own steps, error-controlled to this accuracy"},
     {"constraint_tolerance", DV_SETTING_REAL, AT(tolerance), 0, DV_SETTING_OPEN_LO, 1e-10, 0.0,
-     0.1, NULL, NULL, "", "the projection onto the no-slip constraints after each step"},
+     0.1, NULL, NULL, "",
+     "after a step whose no-slip error exceeds it, the integrator projects onto the constraints"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
      "mu of the validity window (the run ends where |F_h| > mu F_z); default: [engines.matched] "
      "friction"},
@@ -335,16 +350,14 @@ void build(simbody_engine *e) {
     e->integ = new RungeKuttaMersonIntegrator(*e->sys);
   else
     e->integ = new RungeKutta3Integrator(*e->sys);
-  if (e->set.accuracy > 0.0) {
+  if (e->set.accuracy > 0.0) { /* its own steps, landing on every sample */
     e->integ->setAccuracy(e->set.accuracy);
-    e->integ->setMaximumStepSize(e->set.timestep);
   } else {
     e->integ->setFixedStepSize(e->set.timestep);
   }
   e->integ->setConstraintTolerance(e->set.tolerance);
   e->integ->setReturnEveryInternalStep(true);
   e->integ->setAllowInterpolation(false);
-  e->integ->setProjectEveryStep(true);
 }
 
 void *simbody_alloc(const dv_scenario *sc, dv_error *err) {
