@@ -39,7 +39,8 @@
  * force[3].
  *
  * The integrators: Simbody's explicit Runge-Kutta at a fixed step (rk3:
- * RungeKutta3, third order; rkmerson: RungeKuttaMerson, fourth), or
+ * RungeKutta3, third order; rkmerson: RungeKuttaMerson, fourth, as
+ * measured in test_engine_simbody), or
  * error-controlled at [engines.simbody] accuracy (the integrator's own steps,
  * landing on every sample), each projecting u back onto the constraints
  * after a step whose constraint error exceeds constraint_tolerance (the only
@@ -71,10 +72,9 @@ extern "C" {
 
 /* The error model of engine_scene.h per integrator. engine_scene.h's model
  * is first order (theta error ~ c (h / T) (D / T)) and has no order field;
- * rk3 is third order and rkmerson fifth as measured (the theta error of
- * nonuniform at h = 3.3e-3, 2e-3, 1e-3 s: rk3 4.0e-5, 6.1e-6, 7.7e-7 rad,
- * x7.97 for half the step; rkmerson 4.9e-9, 3.8e-10 rad at 3.3e-3, 2e-3 s,
- * x12.9 for 0.6 of the step: 1.67^5), so c is measured at the step the
+ * rk3 is third order and rkmerson fourth (test_engine_simbody: halving the
+ * step divides theta's error by 8.0 and 15.9; on nonuniform at h = 2e-3 and
+ * 1e-3 s, rk3 6.1e-6 and 7.7e-7 rad), so c is measured at the step the
  * model then gives on every shipped scene, T / 100 (the steps-per-scale
  * floor: the fall time 0.101 s / 101 = 1e-3 s on the output grid): the
  * largest err T^2 / (h D) with diskval compare SCENARIO --engines simbody
