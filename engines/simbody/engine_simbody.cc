@@ -17,10 +17,14 @@
  * Constraint::SpeedCouplers: P moves along the ground at r psi' t (DESIGN
  * section 1), so
  *   x_P' - r psi' sin(phi) = 0,   y_P' + r psi' cos(phi) = 0,
- * and then the disk's material point at P is at rest (v_G = -omega x (r d)),
- * checked in test_engine_simbody to rounding. Constraint::NoSlip1D does not
- * fit: it holds a point fixed in a body still while the rolling contact point
- * moves over the rim (theta 1 -> 0.83 in 0.1 s on the steady circle).
+ * and then the disk's material point at P is at rest (v_G = -omega x (r d)):
+ * test_engine_simbody measures its speed, 1.4e-10 m/s at the default
+ * constraint_tolerance and 4.8e-16 at 1e-14. Constraint::NoSlip1D does not
+ * fit: two of them (case body H, its point P, directions H's x and y,
+ * between the ground and the disk) hold the velocity but not its rate, as if
+ * the contact point were fixed in the disk, while it moves over the rim: on
+ * the steady circle theta went 1 -> 0.50 rad in 1 s at rk3 1e-3 s and the
+ * energy changed by 0.078 J (the couplers: theta 1 to rounding, 8e-14 J).
  * H and T are Body::Massless: Simbody allows a massless body that is not
  * terminal where the articulated inertia its children give it is
  * nonsingular (here the disk's, through two pins: singular only lying flat,
