@@ -469,8 +469,11 @@ int check_step(simbody_engine *e, dv_error *err) {
 }
 
 int advance(simbody_engine *e, double t, dv_error *err) {
-  /* the step that lands on t: within a hundredth of a step of it is there */
-  const double slack = 1e-2 * e->set.timestep;
+  /* fixed steps: the step that lands on t, within a hundredth of a step of it
+   * (k steps of h add up to k h only to rounding), is there; the integrator's
+   * own steps (accuracy > 0) may end anywhere, and land on t exactly */
+  const double slack =
+      e->set.accuracy > 0.0 ? 1e-13 * (1.0 + std::fabs(t)) : 1e-2 * e->set.timestep;
   while (e->integ->getTime() < t - slack) {
     const Integrator::SuccessfulStepStatus st = e->integ->stepTo(t);
     if (st == Integrator::EndOfSimulation || e->integ->isSimulationOver())
