@@ -79,7 +79,7 @@ for layer in "${!allowed[@]}"; do
 done
 # C++ only inside an engine's own folder (engines/NAME/) and common/dv_format.cc: no other
 # file is C++ or includes a C++ header (a standard one, or an engine library's)
-cxx='^#include <\(c[a-z]*\|[a-z_]*\|[^>]*\.hpp\|bt[A-Za-z]*\.h\|Bullet[A-Za-z/]*\.h\|LinearMath/[A-Za-z]*\.h\|Simbody\.h\|SimTK[^>]*\|dart/[^>]*\)>'
+cxx='^#include <\(c[a-z]*\|[a-z_]*\|[^>]*\.hpp\|bt[A-Za-z]*\.h\|Bullet[A-Za-z/]*\.h\|LinearMath/[A-Za-z]*\.h\|Simbody\.h\|SimTK[^>]*\|simbody/[^>]*\|simmath/[^>]*\|dart/[^>]*\)>'
 for f in $(find common reduced scenario engines io exec run report search cli api include \
   \( -name '*.[ch]' -o -name '*.cc' \) ! -path 'engines/*/*' | sort); do
   [ "$f" = common/dv_format.cc ] && continue

@@ -34,6 +34,7 @@ static const char *const BASE[] = {
     "scenario.duration=0.2",         "engines.mujoco.timestep=1e-4",
     "engines.mujoco.integrator=rk4", "engines.ode.timestep=1e-4",
     "engines.bullet.timestep=1e-4",  "engines.bullet.body=multibody",
+    "engines.simbody.timestep=1e-3", "engines.simbody.integrator=rk3",
 };
 #define NBASE (sizeof BASE / sizeof BASE[0])
 
@@ -85,6 +86,15 @@ static const reach TABLE[] = {
     {"bullet", "geom", "cylinder", NULL, DIFFERS, NULL},
     {"bullet", "half_thickness", "0.01", "engines.bullet.geom=cylinder", DIFFERS, NULL},
     {"bullet", "solver", "si", NULL, DIFFERS, NULL},
+    {"simbody", "timestep", "5e-4", NULL, DIFFERS, NULL},
+    {"simbody", "integrator", "rkmerson", NULL, DIFFERS, NULL},
+    {"simbody", "accuracy", "1e-6", NULL, DIFFERS, NULL},
+    {"simbody", "constraint_tolerance", "1e-14", NULL, DIFFERS, NULL},
+    /* Simbody cannot slip: its friction ends the run where rolling needs more */
+    {"simbody", "friction", "0.05", NULL, FALLING, NULL},
+    {"simbody", "geom", "thin", NULL, SAME,
+     "the thin disk is the only body the constraints hold (their contact point is its rim "
+     "point): given, it is the default"},
 };
 #define NTABLE (sizeof TABLE / sizeof TABLE[0])
 
