@@ -55,7 +55,7 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
                    void *ctx, dv_engine_stats *stats, dv_error *err) {
   dv_sample s;
   memset(stats, 0, sizeof *stats);
-  void *engine = type->alloc(sc, err);
+  void *engine = type->alloc_self ? type->alloc_self(type, sc, err) : type->alloc(sc, err);
   if (!engine) {
     stats->outcome = DV_OUTCOME_ERROR;
     snprintf(stats->detail, sizeof stats->detail, "%.255s", err ? err->msg : "setup failed");

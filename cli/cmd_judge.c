@@ -1,0 +1,129 @@
+/* dv_cli_judge: diskval judge SCENARIO TRAJECTORY...: trajectories from any
+ * other engine judged against the reference as compare judges a linked one. */
+#include <ctype.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "cli_args.h"
+#include "io_lock.h"
+#include "report_judge.h"
+#include "report_suite_dir.h"
+#include "run_progress.h"
+
+static const char HELP[] =
+    "usage: diskval judge SCENARIO TRAJECTORY... [--name NAME[,NAME...]] [--out DIR] [--junit FILE]\n"
+    "\n"
+    "Judge trajectories of SCENARIO recorded elsewhere (any engine, any sampling) against the\n"
+    "reference, as compare judges a linked engine: every metric with its limit, the horizon,\n"
+    "the lying down, the validity window; DIR/<scenario>/ as compare writes it (default DIR:\n"
+    "report), and the JUnit XML to FILE. A TRAJECTORY is a CSV in the state form\n"
+    "(t,theta[,phi,psi,x,y][,contact_x,contact_y][,theta_dot,phi_dot,psi_dot][,energy]) or the\n"
+    "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
+    "--name: each trajectory's name in the report (default: its file name without extension).\n"
+    "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
+    "(a bad file: one line naming its file, line and column) or error.\n";
+
+/* a name a report can carry: letters, digits, '_', '-', '.', not a linked engine's */
+static int check_name(const char *name, dv_error *err) {
+  if (!*name || strlen(name) > 40)
+    return dv_fail(err, DV_EINPUT, "name '%.60s': 1 to 40 characters", name);
+  for (const char *p = name; *p; p++)
+    if (!isalnum((unsigned char)*p) && *p != '_' && *p != '-' && *p != '.')
+      return dv_fail(err, DV_EINPUT,
+                     "name '%.60s': only letters, digits, '_', '-' and '.' (give --name)", name);
+  if (dv_engine_find(name))
+    return dv_fail(err, DV_EINPUT,
+                   "name '%s' is a linked engine's: its report would carry that engine's "
+                   "settings (give --name)",
+                   name);
+  return DV_OK;
+}
+
+/* each file's name: from --name, else its file name without its extension */
+static int make_names(const char *list, const dv_cli_list *files, char names[][64],
+                      dv_error *err) {
+  const size_t n = files->n - 1;
+  if (list) {
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", list);
+    size_t k = 0;
+    for (char *save, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++)
+      if (k < n) snprintf(names[k], 64, "%s", tok);
+    if (k != n)
+      return dv_fail(err, DV_EINPUT, "--name gives %zu names for %zu trajectories", k, n);
+  } else {
+    for (size_t i = 0; i < n; i++) {
+      const char *path = files->items[i + 1], *base = strrchr(path, '/');
+      base = base ? base + 1 : path;
+      const char *dot = strrchr(base, '.');
+      const int len = dot && dot > base ? (int)(dot - base) : (int)strlen(base);
+      snprintf(names[i], 64, "%.*s", len > 63 ? 63 : len, base);
+    }
+  }
+  for (size_t i = 0; i < n; i++) {
+    if (check_name(names[i], err)) return DV_EINPUT;
+    for (size_t j = 0; j < i; j++)
+      if (!strcmp(names[i], names[j]))
+        return dv_fail(err, DV_EINPUT, "two trajectories named '%s' (give --name)", names[i]);
+  }
+  return DV_OK;
+}
+
+int dv_cli_judge(int argc, char **argv) {
+  const char *out = "report", *list = NULL, *junit = NULL;
+  const dv_cli_option options[] = {
+      {"out", DV_CLI_TEXT, &out, 0, 0},
+      {"name", DV_CLI_TEXT, &list, 0, 0},
+      {"junit", DV_CLI_TEXT, &junit, 0, 0},
+  };
+  const dv_cli_command cmd = {"judge", HELP, options, 3, 2, SIZE_MAX};
+  dv_cli_args a;
+  const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
+  if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("judge", a.quiet, 0);
+  const size_t n = a.args.n - 1;
+  char names[DV_MAX_ENGINES][64];
+  dv_trajfile files[DV_MAX_ENGINES];
+  dv_replay replays[DV_MAX_ENGINES];
+  size_t nread = 0;
+  dv_scenario sc;
+  dv_error err = {{0}};
+  int code = DV_EXIT_OK, lock = -1;
+  if (n > DV_MAX_ENGINES) {
+    code = dv_cli_usage_error("judge", "%zu trajectories: at most %d at a time", n, DV_MAX_ENGINES);
+  } else if (make_names(list, &a.args, names, &err)) {
+    code = dv_cli_usage_error("judge", "%s", err.msg);
+  } else if (dv_cli_load_scenario("judge", a.args.items[0], &a.sets, &sc, &err)) {
+    code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
+  }
+  for (size_t i = 0; code == DV_EXIT_OK && i < n; i++) {
+    const char *path = a.args.items[i + 1];
+    if (junit && dv_io_same_file(junit, path))
+      code = dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit, path);
+    else if (dv_run_trajfile_read(path, &sc, &files[i], &err))
+      code = dv_cli_error("judge", "%s", err.msg);
+    else
+      dv_run_replay_init(&replays[nread++], &files[i], names[i]);
+  }
+  if (code == DV_EXIT_OK && junit && dv_io_same_file(junit, a.args.items[0]))
+    code = dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit,
+                        a.args.items[0]);
+  if (code != DV_EXIT_OK) {
+  } else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
+             dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err)) {
+    code = dv_cli_error("judge", "%s", err.msg);
+  } else {
+    code = dv_report_judge_run(&sc, replays, nread, out, junit, &err);
+    if (code == DV_SUITE_ERROR)
+      code = dv_cli_error("judge", "%s", err.msg);
+    else
+      printf("report: %s/%s/report.md\n", out, sc.name);
+  }
+  dv_io_unlock_dir(out, lock);
+  for (size_t i = 0; i < nread; i++) dv_run_trajfile_free(&files[i]);
+  dv_cli_args_free(&cmd, &a);
+  return code;
+}
