@@ -61,4 +61,8 @@ void dv_run_trajfile_free(dv_trajfile *f);
  * quaternion q = (w, x, y, z) */
 void dv_run_quat_to_matrix(const double q[4], double R[9]);
 
+/* the unit quaternion (w, x, y, z), w >= 0, of the rotation R (Shepperd's
+ * method: from the largest of its four squared components) */
+void dv_run_matrix_to_quat(const double R[9], double q[4]);
+
 #endif
