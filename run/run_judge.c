@@ -31,8 +31,8 @@ static void check_sparse(judge_ctx *ctx, const dv_replay *rp, const dv_engine_re
   if (ctx->sparse || !(th || p)) return;
   ctx->sparse = 1;
   dv_fail(&ctx->why, DV_EINPUT,
-          "%.400s:%ld: samples too sparse to judge: interpolating between them (Steffen against "
-          "Akima) is uncertain by %.3g %s in %s after this line, %.3g times %g of its limit %.3g "
+          "%.400s:%ld: samples too sparse to judge: interpolating between them (Akima against "
+          "Steffen) is uncertain by %.3g %s in %s after this line, %.3g times %g of its limit %.3g "
           "%s; give samples more often",
           rp->file->path, th ? rp->theta_line : rp->path_line, th ? rp->interp_theta : rp->interp_path,
           th ? "rad" : "m", th ? "theta" : "the contact point",

@@ -49,7 +49,9 @@ typedef struct replay_run {
   int lay_down;  /* the last row served lies down: -1 lower, +1 upper limit */
   double theta_limit, duration;
   double *t, *v[NF];
-  gsl_interp *steffen[NF], *akima[NF]; /* NULL for a column the file cannot give */
+  /* Akima's interpolant serves, Steffen's estimates its error (NULL for a
+   * column the file cannot give) */
+  gsl_interp *steffen[NF], *akima[NF];
   gsl_interp_accel *acc;
   dv_engine_stats stats;
   int ended;
@@ -105,7 +107,7 @@ static void *replay_alloc(const dv_engine_type *self, const dv_scenario *sc, dv_
   }
   if (!ok) return replay_free(r), dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
   snprintf(r->stats.method, sizeof r->stats.method,
-           "replayed from %.60s: %zu rows, %s form%s; between rows Steffen, error: against Akima",
+           "replayed from %.60s: %zu rows, %s form%s; between rows Akima, error: against Steffen",
            f->path, f->n, f->form == DV_TRAJ_POSE ? "pose" : "state",
            f->has_rates ? "" : ", rates derived");
   return r;
@@ -146,8 +148,8 @@ static void interpolate(replay_run *r, double t, size_t below, dv_sample *out) {
       set_field(out, k, NAN);
       continue;
     }
-    const double a = gsl_interp_eval(r->steffen[k], r->t, r->v[k], t, r->acc);
-    const double b = gsl_interp_eval(r->akima[k], r->t, r->v[k], t, r->acc);
+    const double a = gsl_interp_eval(r->akima[k], r->t, r->v[k], t, r->acc);
+    const double b = gsl_interp_eval(r->steffen[k], r->t, r->v[k], t, r->acc);
     set_field(out, k, a);
     d[k] = fabs(a - b);
   }

@@ -3,10 +3,13 @@
  * Its table (dv_engine_type, alloc_self) serves the recorded samples at the
  * times the harness asks for, so a comparison judges a file exactly as it
  * judges a linked engine (run_scenario.h): one code path. At a recorded time
- * (to 1e-9 s relative) the row itself; between rows a Steffen interpolant
- * (GSL, monotone between samples: no overshoot at theta's turns) of each
- * column, and the difference to an Akima interpolant of the same rows as its
- * error estimate (largest over the run, in theta and in the contact point).
+ * (to 1e-9 s relative) the row itself; between rows an Akima interpolant
+ * (GSL) of each column, and its difference to a Steffen interpolant of the same
+ * rows as its error estimate (largest over the run, in theta and in the
+ * contact point). Measured on MuJoCo's steady circle sampled every 0.05 s and
+ * 0.1 s: Akima's true error in the contact point 1.0e-4 and 8.6e-4 m, the
+ * estimate 8.3e-4 and 3.3e-3 m (Steffen, monotone between samples, flattens
+ * every extremum of contact_x: the estimate errs on the safe side).
  * The run ends with the file: at the first row where theta reaches the lying-down
  * limit (DV_EVENT, lay_down), or at the last row when it ends before the
  * scenario's duration (DV_EVENT, lay_down 0; the comparison does not judge

@@ -221,11 +221,11 @@ static void state_row(const reader *rd, const double v[NCOLS], dv_sample *s) {
   s->force[0] = s->force[1] = s->force[2] = NAN;
 }
 
-/* the rates of a file that gives none: the derivative of a Steffen interpolant
- * of theta, phi and psi (monotone between samples: no overshoot at a turn) */
+/* the rates of a file that gives none: the derivative of the Akima interpolant
+ * of theta, phi and psi that serves the samples between rows (run_replay.h) */
 static int derive_rates(dv_trajfile *f, dv_error *err) {
   double *t = malloc(f->n * sizeof *t), *y = malloc(f->n * sizeof *y);
-  gsl_interp *in = gsl_interp_alloc(gsl_interp_steffen, f->n);
+  gsl_interp *in = gsl_interp_alloc(gsl_interp_akima, f->n);
   gsl_interp_accel *acc = gsl_interp_accel_alloc();
   int status = t && y && in && acc ? DV_OK : dv_fail(err, DV_ESYSTEM, "out of memory");
   static const int angle[3] = {RED_TH, RED_PH, RED_PS}, rate[3] = {RED_VTH, RED_VPH, RED_VPS};
