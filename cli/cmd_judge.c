@@ -1,6 +1,7 @@
 /* dv_cli_judge: diskval judge SCENARIO TRAJECTORY...: trajectories from any
  * other engine judged against the reference as compare judges a linked one. */
 #include <ctype.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 #include "report_judge.h"
 #include "report_suite_dir.h"
 #include "run_progress.h"
+#include "search_verify.h"
 
 static const char HELP[] =
     "usage: diskval judge SCENARIO TRAJECTORY... [--name NAME[,NAME...]] [--out DIR] [--junit FILE]\n"
@@ -23,6 +25,9 @@ static const char HELP[] =
     "(t,theta[,phi,psi,x,y][,contact_x,contact_y][,theta_dot,phi_dot,psi_dot][,energy]) or the\n"
     "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
     "--name: each trajectory's name in the report (default: its file name without extension).\n"
+    "--step H1,H2,H3,H4: the time step of each of 4 trajectories of one engine, each half the\n"
+    "one before: their theta errors give the order and the extrapolated discrepancy, as verify\n"
+    "does (exit 1 unless it converges to the reference).\n"
     "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
     "(a bad file: one line naming its file, line and column) or error.\n";
 
@@ -40,6 +45,48 @@ static int check_name(const char *name, dv_error *err) {
                    "settings (give --name)",
                    name);
   return DV_OK;
+}
+
+/* --step: one step a trajectory, DV_VERIFY_LEVELS of them, each half the one before */
+static int parse_steps(const char *list, size_t n, double *steps, dv_error *err) {
+  char buf[512];
+  snprintf(buf, sizeof buf, "%s", list);
+  size_t k = 0;
+  for (char *save, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++) {
+    char *end;
+    const double h = strtod(tok, &end);
+    if (*end || end == tok || !(h > 0.0) || !isfinite(h))
+      return dv_fail(err, DV_EINPUT, "--step: '%.40s' is not a positive number", tok);
+    if (k < DV_VERIFY_LEVELS) steps[k] = h;
+    /* Richardson extrapolation over halved steps (search_verify.h) */
+    if (k && k < DV_VERIFY_LEVELS && fabs(steps[k - 1] / h - 2.0) > 0.02)
+      return dv_fail(err, DV_EINPUT, "--step: %g is not half of %g (the steps must halve)", h,
+                     steps[k - 1]);
+  }
+  if (k != DV_VERIFY_LEVELS || n != DV_VERIFY_LEVELS)
+    return dv_fail(err, DV_EINPUT, "--step gives %zu steps for %zu trajectories: %d of each needed",
+                   k, n, DV_VERIFY_LEVELS);
+  return DV_OK;
+}
+
+/* the convergence of the trajectories' theta errors over their steps, as
+ * verify prints it; 1 unless it converges to the reference */
+static int print_convergence(const double *steps, const double *errors) {
+  dv_verification v;
+  memset(&v, 0, sizeof v);
+  for (int i = 0; i < DV_VERIFY_LEVELS; i++) v.step[i] = steps[i], v.error[i] = errors[i];
+  dv_search_verify_judge(&v);
+  printf("convergence:");
+  for (int i = 0; i < DV_VERIFY_LEVELS; i++) printf(" %.3e (dt %.3g)", v.error[i], v.step[i]);
+  printf("\n  order %s", isnan(v.order) ? "none (the errors do not fall)" : "");
+  if (!isnan(v.order)) printf("%.2f", v.order);
+  printf("; extrapolated discrepancy %.3e rad (floor %g", v.extrapolated, DV_VERIFY_FLOOR);
+  if (v.uncertainty > 0.0) printf(", uncertainty %.2e", v.uncertainty);
+  printf("): %s%s\n", dv_search_convergence_name(v.verdict),
+         v.verdict == DV_CONVERGES_ELSEWHERE
+             ? " (no cause: recorded trajectories cannot be re-run with their knobs turned)"
+             : "");
+  return v.verdict != DV_CONVERGES;
 }
 
 /* each file's name: from --name, else its file name without its extension */
@@ -73,13 +120,14 @@ static int make_names(const char *list, const dv_cli_list *files, char names[][6
 }
 
 int dv_cli_judge(int argc, char **argv) {
-  const char *out = "report", *list = NULL, *junit = NULL;
+  const char *out = "report", *list = NULL, *junit = NULL, *step_list = NULL;
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &out, 0, 0},
       {"name", DV_CLI_TEXT, &list, 0, 0},
       {"junit", DV_CLI_TEXT, &junit, 0, 0},
+      {"step", DV_CLI_TEXT, &step_list, 0, 0},
   };
-  const dv_cli_command cmd = {"judge", HELP, options, 3, 2, SIZE_MAX};
+  const dv_cli_command cmd = {"judge", HELP, options, 4, 2, SIZE_MAX};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
@@ -89,12 +137,14 @@ int dv_cli_judge(int argc, char **argv) {
   dv_trajfile files[DV_MAX_ENGINES];
   dv_replay replays[DV_MAX_ENGINES];
   size_t nread = 0;
+  double steps[DV_VERIFY_LEVELS], errors[DV_MAX_ENGINES];
   dv_scenario sc;
   dv_error err = {{0}};
   int code = DV_EXIT_OK, lock = -1;
   if (n > DV_MAX_ENGINES) {
     code = dv_cli_usage_error("judge", "%zu trajectories: at most %d at a time", n, DV_MAX_ENGINES);
-  } else if (make_names(list, &a.args, names, &err)) {
+  } else if (make_names(list, &a.args, names, &err) ||
+             (step_list && parse_steps(step_list, n, steps, &err))) {
     code = dv_cli_usage_error("judge", "%s", err.msg);
   } else if (dv_cli_load_scenario("judge", a.args.items[0], &a.sets, &sc, &err)) {
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
@@ -116,11 +166,13 @@ int dv_cli_judge(int argc, char **argv) {
              dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err)) {
     code = dv_cli_error("judge", "%s", err.msg);
   } else {
-    code = dv_report_judge_run(&sc, replays, nread, out, junit, &err);
-    if (code == DV_SUITE_ERROR)
+    code = dv_report_judge_run(&sc, replays, nread, out, junit, errors, &err);
+    if (code == DV_SUITE_ERROR) {
       code = dv_cli_error("judge", "%s", err.msg);
-    else
+    } else {
+      if (step_list && print_convergence(steps, errors)) code = DV_EXIT_FAIL;
       printf("report: %s/%s/report.md\n", out, sc.name);
+    }
   }
   dv_io_unlock_dir(out, lock);
   for (size_t i = 0; i < nread; i++) dv_run_trajfile_free(&files[i]);

@@ -24,7 +24,7 @@ static void say_no_cause(dv_comparison *c) {
 }
 
 int dv_report_judge_run(const dv_scenario *sc, dv_replay *replays, size_t n, const char *out_dir,
-                        const char *junit, dv_error *err) {
+                        const char *junit, double *theta_err, dv_error *err) {
   char tmp[1300];
   dv_comparison *c = calloc(1, sizeof *c);
   if (!c) return dv_fail(err, DV_ESYSTEM, "out of memory"), DV_SUITE_ERROR;
@@ -35,6 +35,8 @@ int dv_report_judge_run(const dv_scenario *sc, dv_replay *replays, size_t n, con
     if (!status) say_no_cause(c);
     if (!status) status = dv_report_scenario_write(tmp, c, err);
     if (!status) dv_report_scenario_print(stdout, c);
+    for (size_t i = 0; !status && theta_err && i < c->n; i++)
+      theta_err[i] = c->r[i].vs_ref.value[DV_THETA_MAX_ERR];
     if (status)
       dv_report_dir_discard(tmp);
     else if (!dv_report_dir_install(tmp, out_dir, sc->name, err))
