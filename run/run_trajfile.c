@@ -311,12 +311,43 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
   return DV_OK;
 }
 
+/* append the row v (by column) read at lineno */
+static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
+                   dv_trajfile *f, const double v[NCOLS], long lineno) {
+  if (f->n == f->cap) {
+    const size_t cap = f->cap ? 2 * f->cap : 1024;
+    dv_sample *s = realloc(f->s, cap * sizeof *s);
+    long *l = s ? realloc(f->line, cap * sizeof *l) : NULL;
+    if (s) f->s = s;
+    if (!l) return dv_fail(rd->err, DV_ESYSTEM, "%s: out of memory at line %ld", rd->path, lineno);
+    f->line = l;
+    f->cap = cap;
+  }
+  if (f->n && !(v[C_T] > f->s[f->n - 1].t))
+    return fail_at(rd, lineno, rd->col[C_T] + 1,
+                   "times must increase: t = %.17g s after t = %.17g s (line %ld)", v[C_T],
+                   f->s[f->n - 1].t, f->line[f->n - 1]);
+  dv_sample *s = &f->s[f->n];
+  memset(s, 0, sizeof *s);
+  if (f->form == DV_TRAJ_POSE) {
+    const int vel = f->has_rates;
+    if (pose_row(rd, sc, geom, v, lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s))
+      return DV_EINPUT;
+  } else {
+    state_row(rd, v, s);
+  }
+  if (!(s->y[RED_TH] >= 0.0 && s->y[RED_TH] <= M_PI))
+    return fail_at(rd, lineno, rd->col[f->form == DV_TRAJ_POSE ? C_QW : C_TH] + 1,
+                   "theta = %.10g rad is outside [0, pi]", s->y[RED_TH]);
+  s->contacts = 1;
+  f->line[f->n++] = lineno;
+  return DV_OK;
+}
+
 /* read every row of fp after the header */
 static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geometry *geom,
                      dv_trajfile *f, long *lineno) {
   char line[MAX_LINE + 2];
-  size_t cap = 0;
-  const int vel = f->has_rates && f->form == DV_TRAJ_POSE;
   while (fgets(line, sizeof line, fp)) {
     ++*lineno;
     size_t len = strlen(line);
@@ -325,36 +356,24 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     while (len && (line[len - 1] == '\n' || line[len - 1] == '\r')) line[--len] = '\0';
     if (line[0] == '#') continue; /* a comment */
     if (!len) return fail_at(rd, *lineno, 0, "an empty line");
-    if (f->n == cap) {
-      cap = cap ? 2 * cap : 1024;
-      dv_sample *s = realloc(f->s, cap * sizeof *s);
-      long *l = s ? realloc(f->line, cap * sizeof *l) : NULL;
-      if (s) f->s = s;
-      if (!l) return dv_fail(rd->err, DV_ESYSTEM, "%s: out of memory at line %ld", rd->path, *lineno);
-      f->line = l;
-    }
     double v[NCOLS];
-    if (read_row(rd, line, *lineno, v)) return DV_EINPUT;
-    if (f->n && !(v[C_T] > f->s[f->n - 1].t))
-      return fail_at(rd, *lineno, rd->col[C_T] + 1,
-                     "times must increase: t = %.17g s after t = %.17g s (line %ld)", v[C_T],
-                     f->s[f->n - 1].t, f->line[f->n - 1]);
-    dv_sample *s = &f->s[f->n];
-    memset(s, 0, sizeof *s);
-    if (f->form == DV_TRAJ_POSE) {
-      if (pose_row(rd, sc, geom, v, *lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s))
-        return DV_EINPUT;
-    } else {
-      state_row(rd, v, s);
-    }
-    if (!(s->y[RED_TH] >= 0.0 && s->y[RED_TH] <= M_PI))
-      return fail_at(rd, *lineno, rd->col[f->form == DV_TRAJ_POSE ? C_QW : C_TH] + 1,
-                     "theta = %.10g rad is outside [0, pi]", s->y[RED_TH]);
-    s->contacts = 1;
-    f->line[f->n++] = *lineno;
+    if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
   }
   if (ferror(fp)) return dv_fail(rd->err, DV_ESYSTEM, "%s: cannot read: %s", rd->path, strerror(errno));
   return DV_OK;
+}
+
+/* every row read: enough of them, what they do not give derived, the start checked */
+static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
+                  dv_trajfile *f, long lineno) {
+  if (f->n < DV_TRAJ_MIN_SAMPLES)
+    return fail_at(rd, lineno, 0, "%zu samples: at least %d needed to interpolate", f->n,
+                   DV_TRAJ_MIN_SAMPLES);
+  if (!f->has_rates && derive_rates(f, rd->err)) return DV_ESYSTEM;
+  const int contact = f->form == DV_TRAJ_STATE && rd->col[C_CX] < 0;
+  const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd->col[C_E] < 0;
+  complete(sc, geom, f, contact, energy);
+  return check_start(rd, sc, f);
 }
 
 int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f, dv_error *err) {
@@ -387,16 +406,7 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
     status = read_rows(&rd, fp, sc, &geom, f, &lineno);
   }
   fclose(fp);
-  if (!status && f->n < DV_TRAJ_MIN_SAMPLES)
-    status = fail_at(&rd, lineno + 1, 0, "%zu samples: at least %d needed to interpolate", f->n,
-                     DV_TRAJ_MIN_SAMPLES);
-  if (!status && !f->has_rates) status = derive_rates(f, err);
-  if (!status) {
-    const int contact = f->form == DV_TRAJ_STATE && rd.col[C_CX] < 0;
-    const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd.col[C_E] < 0;
-    complete(sc, &geom, f, contact, energy);
-    status = check_start(&rd, sc, f);
-  }
+  if (!status) status = finish(&rd, sc, &geom, f, lineno + 1);
   if (status) dv_run_trajfile_free(f);
   return status;
 }
@@ -408,4 +418,84 @@ void dv_run_trajfile_free(dv_trajfile *f) {
   f->s = NULL;
   f->line = NULL;
   f->n = 0;
+}
+
+/* a trajectory pushed in code: the columns its samples fill, as if a header
+ * named them (the state form: the whole state with its rates; the pose form:
+ * the pose, with the velocities when has_rates) */
+static void pushed_header(const dv_trajfile *f, reader *rd) {
+  static const int state[] = {C_T, C_TH, C_PH, C_PS, C_X, C_Y, C_VTH, C_VPH, C_VPS};
+  static const int pose[] = {C_T,  C_X,  C_Y,  C_Z,  C_QW, C_QX, C_QY,
+                             C_QZ, C_VX, C_VY, C_VZ, C_WX, C_WY, C_WZ};
+  for (int c = 0; c < NCOLS; c++) rd->col[c] = -1;
+  const int *cols = f->form == DV_TRAJ_POSE ? pose : state;
+  const int n = f->form == DV_TRAJ_POSE ? (f->has_rates ? 14 : 8) : 9;
+  for (int i = 0; i < n; i++) rd->col[cols[i]] = i;
+  rd->ncols = n;
+}
+
+void dv_run_trajfile_begin(dv_trajfile *f, const char *label) {
+  memset(f, 0, sizeof *f);
+  snprintf(f->path, sizeof f->path, "%s", label);
+}
+
+/* the form of the first push; every later one must match it */
+static int push_form(dv_trajfile *f, dv_traj_form form, int rates, dv_error *err) {
+  if (!f->n) {
+    f->form = form, f->has_rates = rates, f->has_angles = 1;
+    f->has_slip = form == DV_TRAJ_POSE && rates;
+    f->has_energy = 1;
+  } else if (f->form != form || f->has_rates != rates) {
+    return dv_fail(err, DV_EINPUT,
+                   "%s:%zu: a %s%s after %ss%s: one kind of sample a trajectory", f->path,
+                   f->n + 1, form == DV_TRAJ_POSE ? "pose" : "state",
+                   form == DV_TRAJ_POSE && !rates ? " without velocities" : "",
+                   f->form == DV_TRAJ_POSE ? "pose" : "state",
+                   f->form == DV_TRAJ_POSE && !f->has_rates ? " without velocities" : "");
+  }
+  return DV_OK;
+}
+
+int dv_run_trajfile_push_state(dv_trajfile *f, const dv_scenario *sc, double t,
+                               const double y[RED_NSTATE], dv_error *err) {
+  if (push_form(f, DV_TRAJ_STATE, 1, err)) return DV_EINPUT;
+  reader rd = {f->path, err, {0}, 0};
+  pushed_header(f, &rd);
+  double v[NCOLS];
+  for (int c = 0; c < NCOLS; c++) v[c] = NAN;
+  v[C_T] = t, v[C_TH] = y[RED_TH], v[C_PH] = y[RED_PH], v[C_PS] = y[RED_PS];
+  v[C_X] = y[RED_X], v[C_Y] = y[RED_Y];
+  v[C_VTH] = y[RED_VTH], v[C_VPH] = y[RED_VPH], v[C_VPS] = y[RED_VPS];
+  for (int c = 0; c < NCOLS; c++)
+    if (rd.col[c] >= 0 && !isfinite(v[c]))
+      return fail_at(&rd, (long)f->n + 1, rd.col[c] + 1, "%s = %g is not finite", names[c], v[c]);
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, 0.5 * sc->thickness};
+  return add_row(&rd, sc, &geom, f, v, (long)f->n + 1);
+}
+
+int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, const double pos[3],
+                              const double q[4], const double *vel, const double *omega,
+                              dv_error *err) {
+  if (push_form(f, DV_TRAJ_POSE, vel && omega, err)) return DV_EINPUT;
+  reader rd = {f->path, err, {0}, 0};
+  pushed_header(f, &rd);
+  double v[NCOLS];
+  for (int c = 0; c < NCOLS; c++) v[c] = NAN;
+  v[C_T] = t;
+  v[C_X] = pos[0], v[C_Y] = pos[1], v[C_Z] = pos[2];
+  for (int k = 0; vel && omega && k < 3; k++) v[C_VX + k] = vel[k], v[C_WX + k] = omega[k];
+  v[C_QW] = q[0], v[C_QX] = q[1], v[C_QY] = q[2], v[C_QZ] = q[3];
+  for (int c = 0; c < NCOLS; c++)
+    if (rd.col[c] >= 0 && !isfinite(v[c]))
+      return fail_at(&rd, (long)f->n + 1, rd.col[c] + 1, "%s = %g is not finite", names[c], v[c]);
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, 0.5 * sc->thickness};
+  return add_row(&rd, sc, &geom, f, v, (long)f->n + 1);
+}
+
+int dv_run_trajfile_end(dv_trajfile *f, const dv_scenario *sc, dv_error *err) {
+  reader rd = {f->path, err, {0}, 0};
+  pushed_header(f, &rd);
+  f->half_thickness = 0.5 * sc->thickness;
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
+  return finish(&rd, sc, &geom, f, (long)f->n + 1);
 }

@@ -45,7 +45,7 @@ typedef struct dv_trajfile {
   int has_angles;   /* phi, psi and x, y: the whole state */
   int has_energy;   /* given, or computed from a pose with velocities */
   int has_slip;     /* measured: the pose form with velocities */
-  size_t n;
+  size_t n, cap;
   dv_sample *s;     /* each row, converted */
   long *line;       /* each row's line in the file */
   double half_thickness; /* m: the disk the scenario describes */
@@ -56,6 +56,19 @@ typedef struct dv_trajfile {
 int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *out, dv_error *err);
 
 void dv_run_trajfile_free(dv_trajfile *f);
+
+/* a trajectory built in code (the C API), checked as a file is: begin with
+ * the label its errors name in place of the file ("LABEL:N:COLUMN: ...", N
+ * the sample, from 1), push samples (every one a state, or every one a pose:
+ * the centre, the unit quaternion (w, x, y, z), and the velocities, both or
+ * neither NULL), then end (at least DV_TRAJ_MIN_SAMPLES, the start checked) */
+void dv_run_trajfile_begin(dv_trajfile *f, const char *label);
+int dv_run_trajfile_push_state(dv_trajfile *f, const dv_scenario *sc, double t,
+                               const double y[RED_NSTATE], dv_error *err);
+int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, const double pos[3],
+                              const double q[4], const double *vel, const double *omega,
+                              dv_error *err);
+int dv_run_trajfile_end(dv_trajfile *f, const dv_scenario *sc, dv_error *err);
 
 /* the body-to-world rotation (row-major, body axes as columns) of the unit
  * quaternion q = (w, x, y, z) */
