@@ -4,6 +4,7 @@
 # verify refines them; written by simulate) gives verify's order and
 # extrapolated discrepancy, within 5% (measured on tests/data/short_circle.ini:
 # the same digits, order 1.00, 2.205e-09 rad, converges to the reference).
+# Re-measure: the test prints every measured number (ctest -V -R NAME).
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C

@@ -11,6 +11,7 @@
 #     quaternion's round trip), but energy_drift (its energy is from the
 #     rolling velocities, not MuJoCo's own: 1.3% apart) and slip_max (0).
 # Timing and cost fields (wall_*, steps) and the engine's settings are not compared.
+# Re-measure: the test prints every measured number (ctest -V -R NAME).
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C

@@ -13,6 +13,7 @@
 #   - stopped at half the duration: not judged, "the file ends at t = 1.5 s";
 #   - lying down early (theta falling 2 rad/s from t = 2 s to the limit
 #     0.01 rad): ended by event, "lies down where the reference does not".
+# Re-measure: the test prints every measured number (ctest -V -R NAME).
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
