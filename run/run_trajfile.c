@@ -394,7 +394,9 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
   } while (line[0] == '#');
   if (!status) {
     line[strcspn(line, "\r\n")] = '\0';
-    status = read_header(&rd, line, lineno, &f->form);
+    /* a spreadsheet's UTF-8 byte order mark is no part of the first column's name */
+    const size_t bom = strncmp(line, "\xEF\xBB\xBF", 3) ? 0 : 3;
+    status = read_header(&rd, line + bom, lineno, &f->form);
   }
   f->half_thickness = 0.5 * sc->thickness;
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
