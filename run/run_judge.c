@@ -52,6 +52,20 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
                    ? "no velocities (vx..wz) in the file: no slip to measure"
                    : "the state form's rates assume rolling: no slip to measure");
   }
+  /* what needs the columns a file lacks: NaN samples there may fold into a
+   * maximum as nothing, so these are not judged whatever they came to */
+  if (!f->has_angles) {
+    r->vs_ref.value[DV_HEADING_PERIOD_ERR] = r->vs_thin.value[DV_HEADING_PERIOD_ERR] = NAN;
+    not_judged(r, DV_HEADING_PERIOD_ERR, "no phi in the file: no heading to compare");
+  }
+  if (!f->has_angles && !f->has_rates) {
+    r->vs_ref.value[DV_INVARIANT_DRIFT] = r->vs_thin.value[DV_INVARIANT_DRIFT] = NAN;
+    not_judged(r, DV_INVARIANT_DRIFT, "no rates in the file, nor phi, psi to derive them from");
+  }
+  if (!f->has_energy) {
+    r->vs_ref.value[DV_ENERGY_DRIFT] = r->vs_thin.value[DV_ENERGY_DRIFT] = NAN;
+    not_judged(r, DV_ENERGY_DRIFT, "no energy in the file, nor a pose to compute it from");
+  }
   for (int m = 0; m < DV_NMETRICS; m++)
     if (isnan(r->vs_ref.value[m]) && !isnan(r->tolerance[m]))
       not_judged(r, m,

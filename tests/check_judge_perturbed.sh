@@ -5,7 +5,9 @@
 # written by simulate passes, and so does the same run
 #   - with every third row left out (irregular times: interpolated; measured:
 #     path_max_err 1.0533e-3 against 1.0454e-3 m with every row),
-#   - in the pose form without velocities (rates from the interpolant);
+#   - in the pose form without velocities (rates from the interpolant),
+#   - with only t,theta,contact_x,contact_y (energy, heading, invariants and
+#     slip not judged, and said so);
 # it fails when perturbed by awk:
 #   - theta + 0.05 rad after t = 1 s: theta_max_err = 0.05001 > 0.01 (the shift and MuJoCo's own 1e-5);
 #   - the path drifting by 5% of the distance rolled (x and contact_x +
@@ -29,6 +31,7 @@ name=$(sed -n 's/^name *= *//p' "$sc" | head -1)
 cd "$work" || exit 2
 awk 'NR <= 2 || NR % 3 != 0' run.csv >irregular.csv
 "$to_pose" 0.1 0 --no-velocity <run.csv >pose_only.csv
+cut -d, -f1,2,7,8 run.csv >minimal.csv
 awk -F, -v OFS=, 'NR > 1 && $1 > 1 { $2 += 0.05 } 1' run.csv >theta_shift.csv
 awk -F, -v OFS=, 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
 awk -F, 'NR == 1 || $1 <= 1.5' run.csv >half.csv
@@ -51,6 +54,11 @@ judge() {
 judge run 0 agrees ""
 judge irregular 0 agrees ""
 judge pose_only 0 agrees ""
+judge minimal 0 agrees ""
+for m in energy_drift heading_period_err invariant_drift slip_max; do
+  why=$(jq -r ".engines.minimal.limits.$m.from" "out_minimal/$name/report.json")
+  check '[[ "$why" == "not judged: "* ]]' "minimal: $m: $why"
+done
 judge theta_shift 1 "exceeds tolerance" "theta_max_err = 0.050"
 judge path_drift 1 "exceeds tolerance" "path_max_err = "
 judge half 1 "not judged" "the file ends at t = 1.5 s"
