@@ -10,6 +10,7 @@
 #include "exec_mpi.h"
 #include "io_temp.h"
 #include "dv_engine.h"
+#include "engine_choose.h"
 #include "scenario.h"
 #include "red_solver.h"
 #include "run_scenario.h"
@@ -62,9 +63,14 @@ int dv_cli_unknown_engine(const char *command, const char *name) {
 }
 
 int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_error *err) {
-  if (list && list[0]) return dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, err);
+  if (list && list[0]) {
+    const int status = dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, err);
+    if (status == DV_OK) dv_engine_choose_only(engines); /* probe only the engines run */
+    return status;
+  }
   size_t n = 0;
-  for (const dv_engine_type *const *e = dv_engines; *e && n < DV_MAX_ENGINES; e++)
+  _Static_assert(DV_NENGINES <= DV_MAX_ENGINES, "every engine fits in one comparison");
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
     if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
   engines[n] = NULL;
   return DV_OK;

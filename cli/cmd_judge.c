@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "cli_args.h"
+#include "engine_choose.h"
 #include "io_lock.h"
 #include "report_judge.h"
 #include "report_suite_dir.h"
@@ -132,6 +133,8 @@ int dv_cli_judge(int argc, char **argv) {
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("judge", a.quiet, 0);
+  const dv_engine_type *const none[] = {NULL};
+  dv_engine_choose_only(none); /* a file runs no linked engine: none has its settings probed */
   const size_t n = a.args.n - 1;
   char names[DV_MAX_ENGINES][64];
   dv_trajfile files[DV_MAX_ENGINES];

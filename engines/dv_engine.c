@@ -71,8 +71,9 @@ void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, c
 
 /* every engine's settings table, NULL-terminated */
 static void tables(const dv_settings_section **out) {
+  _Static_assert(DV_NENGINES <= DV_MAX_ENGINE_SECTIONS, "every engine's settings section fits");
   size_t n = 0;
-  for (const dv_engine_type *const *e = dv_engines; *e && n < DV_MAX_ENGINE_SECTIONS; e++)
+  for (const dv_engine_type *const *e = dv_engines; *e; e++)
     if ((*e)->settings) out[n++] = (*e)->settings;
   out[n] = NULL;
 }

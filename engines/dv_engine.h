@@ -133,6 +133,11 @@ typedef struct dv_engine_type {
 #define DV_ENGINE(name) extern const dv_engine_type dv_engine_##name;
 #include "dv_engines.def"
 #undef DV_ENGINE
+#define DV_ENGINE(name) +1
+enum { DV_NENGINES = 0
+#include "dv_engines.def"
+};
+#undef DV_ENGINE
 
 /* NULL-terminated list of every engine */
 extern const dv_engine_type *const dv_engines[];

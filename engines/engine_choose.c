@@ -259,8 +259,8 @@ static void name_of(const dv_engine_type *engine, const dv_engine_knobs *kn, con
 
 /* the choice, why, and whether the choice key was chosen (1) or had one candidate (0) */
 static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_engine_knobs *kn,
-                  int default_choice, const dv_knob_choice *given, dv_knob_choice *out, char *why,
-                  size_t size) {
+                  int default_choice, const dv_knob_choice *given, int runs, dv_knob_choice *out,
+                  char *why, size_t size) {
   candidate c[MAX_CANDIDATES];
   const int n = candidates(sc, kn, given, c);
   char what[160] = "";
@@ -284,7 +284,9 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
       sc->thickness > 0.0 && !shape_given && dv_engine_half_thickness(engine, sc) > 0.0
           ? DV_ENGINE_MATCHED_REFERENCE
           : DV_ENGINE_THIN_REFERENCE);
-  if (ref->role == DV_ENGINE_THIN_REFERENCE &&
+  if (!runs)
+    no_probe = "the engine is not among those run";
+  else if (ref->role == DV_ENGINE_THIN_REFERENCE &&
       (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0))
     no_probe = "a stand-in shape, whose reference is not the thin disk";
   else if (n < 2 && !isnan(given->timestep))
@@ -340,17 +342,41 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   return 1;
 }
 
+/* the engines this process runs (dv_engine_choose_only); none set: every engine */
+static const dv_engine_type *running[DV_NENGINES + 1];
+static int running_set;
+
+void dv_engine_choose_only(const dv_engine_type *const *engines) {
+  size_t n = 0;
+  running_set = engines != NULL;
+  for (; engines && engines[n] && n < DV_NENGINES; n++) running[n] = engines[n];
+  running[n] = NULL;
+}
+
+/* does engine run in sc: this process's engines, or those sc names ([scenario] engines) */
+static int runs_in(const dv_scenario *sc, const dv_engine_type *engine) {
+  if (!running_set) return 1;
+  for (size_t i = 0; running[i]; i++)
+    if (running[i] == engine) return 1;
+  char list[sizeof sc->engines];
+  snprintf(list, sizeof list, "%s", sc->engines);
+  for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok; tok = strtok_r(NULL, ", ", &save))
+    if (strcmp(tok, engine->name) == 0) return 1;
+  return 0;
+}
+
 void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
                       const dv_engine_knobs *knobs, int default_choice, const dv_knob_choice *given,
                       dv_knob_choice *out, char *why, size_t size, const char **keys) {
-  const uint64_t key = scene_key(sc, engine, given);
+  const int runs = runs_in(sc, engine);
+  const uint64_t key = scene_key(sc, engine, given) ^ (uint64_t)!runs; /* an unprobed choice apart */
   const memo_entry *hit = NULL;
   for (int i = 0; i < nmemo && !hit; i++)
     if (memo[i].key == key) hit = &memo[i];
   memo_entry fresh = {key, {0}, "", 0};
   if (!hit) {
-    fresh.chose =
-        choose(sc, engine, knobs, default_choice, given, &fresh.out, fresh.why, sizeof fresh.why);
+    fresh.chose = choose(sc, engine, knobs, default_choice, given, runs, &fresh.out, fresh.why,
+                         sizeof fresh.why);
     memo[next_slot] = fresh;
     next_slot = (next_slot + 1) % MEMO; /* full: the oldest entry goes */
     nmemo = nmemo < MEMO ? nmemo + 1 : MEMO;

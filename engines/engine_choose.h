@@ -81,4 +81,10 @@ void dv_engine_choose(const dv_scenario *sc, const struct dv_engine_type *engine
                       const dv_engine_knobs *knobs, int default_choice, const dv_knob_choice *given,
                       dv_knob_choice *out, char *why, size_t size, const char **keys);
 
+/* the engines this process will run (NULL-terminated; NULL: every engine): a
+ * scene's settings are probed only for these and for those its [scenario]
+ * engines names; any other keeps its error model's step, "not probed (the
+ * engine is not among those run)". Commands set it before they load. */
+void dv_engine_choose_only(const struct dv_engine_type *const *engines);
+
 #endif

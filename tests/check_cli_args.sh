@@ -95,7 +95,7 @@ expect "^diskval judge: --name gives 2 names for 1 trajectories" judge "$sc" a.c
 expect "^diskval judge: name 'mujoco' is a linked engine's" judge "$sc" mujoco.csv
 expect "^diskval judge: two trajectories named 'a'" judge "$sc" a.csv x/a.csv
 expect "^diskval judge: name 'a b': only letters" judge "$sc" a.csv --name 'a b'
-expect "^diskval judge: 5 trajectories: at most 4" judge "$sc" a.csv b.csv c.csv d.csv e.csv
+expect "^diskval judge: 9 trajectories: at most 8" judge "$sc" a.csv b.csv c.csv d.csv e.csv f.csv g.csv h.csv i.csv
 expect "^diskval judge: nosuch.csv: cannot open: No such file or directory\$" judge "$sc" nosuch.csv
 [ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
 exit $fail

@@ -54,6 +54,7 @@ extern "C" {
 #include "engine_scene.h"
 #include "engine_shape.h"
 }
+#include "bullet_contact.h"
 
 #define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
 #define AIR_TIME 0.05   /* and for longer than this, s */
@@ -352,8 +353,7 @@ void build(bullet_engine *e) {
   e->world->addRigidBody(e->ground);
 
   /* the thin disk: Bullet drops the margin to 0 at half-height 0 */
-  e->shape = new btCylinderShapeZ(btVector3(e->disk.r, e->disk.r, e->geom.half_thickness));
-  e->shape->setMargin(0.0);
+  e->shape = dv_bullet_disk_shape(e->disk.r, e->geom.half_thickness); /* margin 0 */
   const btVector3 inertia(e->disk.A, e->disk.A, e->disk.C);
   if (e->set.body == BODY_MULTI) {
     e->mb = new btMultiBody(0, e->disk.m, inertia, false, false);
