@@ -28,7 +28,8 @@ static const char HELP[] =
     "--name: each trajectory's name in the report (default: its file name without extension).\n"
     "--step H1,H2,H3,H4: the time step of each of 4 trajectories of one engine, each half the\n"
     "one before: their theta errors give the order and the extrapolated discrepancy, as verify\n"
-    "does (exit 1 unless it converges to the reference).\n"
+    "does (exit 1 unless it converges to the reference). Without --step: the files' own\n"
+    "\"# dt = H\" comment lines, when all four give one.\n"
     "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
     "(a bad file: one line naming its file, line and column) or error.\n";
 
@@ -161,6 +162,17 @@ int dv_cli_judge(int argc, char **argv) {
     else
       dv_run_replay_init(&replays[nread++], &files[i], names[i]);
   }
+  /* no --step: the files' own "# dt = H" lines, when all four give one */
+  int file_steps = !step_list && n == DV_VERIFY_LEVELS && code == DV_EXIT_OK;
+  for (size_t i = 0; file_steps && i < n; i++) file_steps = !isnan(files[i].step);
+  if (file_steps) {
+    char list_buf[200] = "";
+    for (size_t i = 0; i < n; i++)
+      snprintf(list_buf + strlen(list_buf), sizeof list_buf - strlen(list_buf), "%s%.17g",
+               i ? "," : "", files[i].step);
+    if (parse_steps(list_buf, n, steps, &err))
+      code = dv_cli_error("judge", "the files' dt lines: %s", err.msg);
+  }
   if (code == DV_EXIT_OK && junit && dv_io_same_file(junit, a.args.items[0]))
     code = dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit,
                         a.args.items[0]);
@@ -173,7 +185,7 @@ int dv_cli_judge(int argc, char **argv) {
     if (code == DV_SUITE_ERROR) {
       code = dv_cli_error("judge", "%s", err.msg);
     } else {
-      if (step_list && print_convergence(steps, errors)) code = DV_EXIT_FAIL;
+      if ((step_list || file_steps) && print_convergence(steps, errors)) code = DV_EXIT_FAIL;
       printf("report: %s/%s/report.md\n", out, sc.name);
     }
   }

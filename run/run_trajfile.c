@@ -344,6 +344,26 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
   return DV_OK;
 }
 
+/* a comment "# dt = H" into *step (the engine's time step, s); other comments
+ * change nothing; a dt that is not a positive number, or a second one, is an error */
+static int comment_step(const reader *rd, const char *line, long lineno, double *step) {
+  const char *p = line + 1;
+  while (*p == ' ' || *p == '\t') p++;
+  if (strncmp(p, "dt", 2) != 0) return DV_OK;
+  p += 2;
+  while (*p == ' ' || *p == '\t') p++;
+  if (*p != '=') return DV_OK;
+  char *end;
+  const double h = strtod(p + 1, &end);
+  while (*end == ' ' || *end == '\t') end++;
+  if (*end || end == p + 1 || !(h > 0.0) || !isfinite(h))
+    return fail_at(rd, lineno, 0, "'%.60s': dt must be a positive number of seconds", line);
+  if (!isnan(*step))
+    return fail_at(rd, lineno, 0, "a second dt (%.17g s after %.17g s)", h, *step);
+  *step = h;
+  return DV_OK;
+}
+
 /* read every row of fp after the header */
 static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geometry *geom,
                      dv_trajfile *f, long *lineno) {
@@ -354,7 +374,10 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     if (len == sizeof line - 1 && line[len - 1] != '\n')
       return fail_at(rd, *lineno, 0, "a line longer than %d bytes", MAX_LINE);
     while (len && (line[len - 1] == '\n' || line[len - 1] == '\r')) line[--len] = '\0';
-    if (line[0] == '#') continue; /* a comment */
+    if (line[0] == '#') { /* a comment, or the step: "# dt = H" */
+      if (comment_step(rd, line, *lineno, &f->step)) return DV_EINPUT;
+      continue;
+    }
     if (!len) return fail_at(rd, *lineno, 0, "an empty line");
     double v[NCOLS];
     if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
@@ -385,13 +408,18 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
   char line[MAX_LINE + 2];
   long lineno = 0;
   int status = DV_OK;
+  f->step = NAN;
   do { /* the header: the first line that is not a comment */
     if (!fgets(line, sizeof line, fp)) {
       status = fail_at(&rd, lineno + 1, 0, "an empty file: no header");
       break;
     }
     lineno++;
-  } while (line[0] == '#');
+    if (line[0] == '#') {
+      line[strcspn(line, "\r\n")] = '\0';
+      status = comment_step(&rd, line, lineno, &f->step);
+    }
+  } while (!status && line[0] == '#');
   if (!status) {
     line[strcspn(line, "\r\n")] = '\0';
     /* a spreadsheet's UTF-8 byte order mark is no part of the first column's name */
@@ -438,6 +466,7 @@ static void pushed_header(const dv_trajfile *f, reader *rd) {
 
 void dv_run_trajfile_begin(dv_trajfile *f, const char *label) {
   memset(f, 0, sizeof *f);
+  f->step = NAN;
   snprintf(f->path, sizeof f->path, "%s", label);
 }
 

@@ -15,6 +15,8 @@
  * (then the metrics needing it are not judged): a state-form file gives no
  * velocity of its own, so its slip is NAN.
  *
+ * Lines starting with '#' are comments; "# dt = H" gives the engine's time
+ * step H (s), for a convergence check over steps (judge --step).
  * Every error is one line naming the file, the line and the column:
  * "FILE:LINE:COLUMN: what".
  */
@@ -49,6 +51,7 @@ typedef struct dv_trajfile {
   dv_sample *s;     /* each row, converted */
   long *line;       /* each row's line in the file */
   double half_thickness; /* m: the disk the scenario describes */
+  double step; /* s: the engine's time step from a "# dt = H" comment line, NAN when none */
 } dv_trajfile;
 
 /* read path for sc into out: DV_OK, or DV_EINPUT / DV_ESYSTEM with err the
