@@ -17,7 +17,8 @@
 #include "search_verify.h"
 
 static const char HELP[] =
-    "usage: diskval judge SCENARIO TRAJECTORY... [--name NAME[,NAME...]] [--out DIR] [--junit FILE]\n"
+    "usage: diskval judge SCENARIO TRAJECTORY... [--name NAME[,NAME...]] [--out DIR] [--junit "
+    "FILE]\n"
     "\n"
     "Judge trajectories of SCENARIO recorded elsewhere (any engine, any sampling) against the\n"
     "reference, as compare judges a linked engine: every metric with its limit, the horizon,\n"
@@ -92,8 +93,7 @@ static int print_convergence(const double *steps, const double *errors) {
 }
 
 /* each file's name: from --name, else its file name without its extension */
-static int make_names(const char *list, const dv_cli_list *files, char names[][64],
-                      dv_error *err) {
+static int make_names(const char *list, const dv_cli_list *files, char names[][64], dv_error *err) {
   const size_t n = files->n - 1;
   if (list) {
     char buf[1024];
@@ -101,8 +101,7 @@ static int make_names(const char *list, const dv_cli_list *files, char names[][6
     size_t k = 0;
     for (char *save, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++)
       if (k < n) snprintf(names[k], 64, "%s", tok);
-    if (k != n)
-      return dv_fail(err, DV_EINPUT, "--name gives %zu names for %zu trajectories", k, n);
+    if (k != n) return dv_fail(err, DV_EINPUT, "--name gives %zu names for %zu trajectories", k, n);
   } else {
     for (size_t i = 0; i < n; i++) {
       const char *path = files->items[i + 1], *base = strrchr(path, '/');
@@ -174,8 +173,8 @@ int dv_cli_judge(int argc, char **argv) {
       code = dv_cli_error("judge", "the files' dt lines: %s", err.msg);
   }
   if (code == DV_EXIT_OK && junit && dv_io_same_file(junit, a.args.items[0]))
-    code = dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit,
-                        a.args.items[0]);
+    code =
+        dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit, a.args.items[0]);
   if (code != DV_EXIT_OK) {
   } else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
              dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err)) {

@@ -45,7 +45,8 @@ int dv_report_judge_run(const dv_scenario *sc, dv_replay *replays, size_t n, con
   dv_run_comparison_free(c);
   free(c);
   dv_error ignored;
-  if (code == DV_SUITE_ERROR && !bad_input) dv_report_dir_write_error(out_dir, sc, err->msg, &ignored);
+  if (code == DV_SUITE_ERROR && !bad_input)
+    dv_report_dir_write_error(out_dir, sc, err->msg, &ignored);
   if (code != DV_SUITE_ERROR && junit && dv_report_suite_write_junit(out_dir, sc->name, junit, err))
     code = DV_SUITE_ERROR;
   return code;

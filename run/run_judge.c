@@ -6,8 +6,8 @@
 #include <string.h>
 
 typedef struct judge_ctx {
-  int sparse;      /* a file too sparse to judge */
-  dv_error why;    /* the first such file, in one line */
+  int sparse;   /* a file too sparse to judge */
+  dv_error why; /* the first such file, in one line */
 } judge_ctx;
 
 /* metric m not judged, and why */
@@ -34,9 +34,10 @@ static void check_sparse(judge_ctx *ctx, const dv_replay *rp, const dv_engine_re
           "%.400s:%ld: samples too sparse to judge: interpolating between them (Akima against "
           "Steffen) is uncertain by %.3g %s in %s after this line, %.3g times %g of its limit %.3g "
           "%s; give samples more often",
-          rp->file->path, th ? rp->theta_line : rp->path_line, th ? rp->interp_theta : rp->interp_path,
-          th ? "rad" : "m", th ? "theta" : "the contact point",
-          (th ? rp->interp_theta / lth : rp->interp_path / lp), DV_JUDGE_INTERP_SHARE,
+          rp->file->path, th ? rp->theta_line : rp->path_line,
+          th ? rp->interp_theta : rp->interp_path, th ? "rad" : "m",
+          th ? "theta" : "the contact point", (th ? rp->interp_theta / lth : rp->interp_path / lp),
+          DV_JUDGE_INTERP_SHARE,
           th ? r->tolerance[DV_THETA_MAX_ERR] : r->tolerance[DV_PATH_MAX_ERR], th ? "rad" : "m");
 }
 

@@ -13,40 +13,68 @@
 enum { F_TH, F_PH, F_PS, F_X, F_Y, F_CX, F_CY, F_VTH, F_VPH, F_VPS, F_E, F_SLIP, NF };
 
 static double field(const dv_sample *s, int k) {
-  static const int y[] = {[F_TH] = RED_TH,   [F_PH] = RED_PH,   [F_PS] = RED_PS,
-                          [F_X] = RED_X,     [F_Y] = RED_Y,     [F_VTH] = RED_VTH,
-                          [F_VPH] = RED_VPH, [F_VPS] = RED_VPS};
+  static const int y[] = {[F_TH] = RED_TH, [F_PH] = RED_PH,   [F_PS] = RED_PS,   [F_X] = RED_X,
+                          [F_Y] = RED_Y,   [F_VTH] = RED_VTH, [F_VPH] = RED_VPH, [F_VPS] = RED_VPS};
   switch (k) {
-    case F_CX: return s->contact[0];
-    case F_CY: return s->contact[1];
-    case F_E: return s->energy;
-    case F_SLIP: return s->slip;
-    default: return s->y[y[k]];
+    case F_CX:
+      return s->contact[0];
+    case F_CY:
+      return s->contact[1];
+    case F_E:
+      return s->energy;
+    case F_SLIP:
+      return s->slip;
+    default:
+      return s->y[y[k]];
   }
 }
 
 static void set_field(dv_sample *s, int k, double v) {
   switch (k) {
-    case F_CX: s->contact[0] = v; break;
-    case F_CY: s->contact[1] = v; break;
-    case F_E: s->energy = v; break;
-    case F_SLIP: s->slip = v; break;
-    case F_TH: s->y[RED_TH] = v; break;
-    case F_PH: s->y[RED_PH] = v; break;
-    case F_PS: s->y[RED_PS] = v; break;
-    case F_X: s->y[RED_X] = v; break;
-    case F_Y: s->y[RED_Y] = v; break;
-    case F_VTH: s->y[RED_VTH] = v; break;
-    case F_VPH: s->y[RED_VPH] = v; break;
-    case F_VPS: s->y[RED_VPS] = v; break;
+    case F_CX:
+      s->contact[0] = v;
+      break;
+    case F_CY:
+      s->contact[1] = v;
+      break;
+    case F_E:
+      s->energy = v;
+      break;
+    case F_SLIP:
+      s->slip = v;
+      break;
+    case F_TH:
+      s->y[RED_TH] = v;
+      break;
+    case F_PH:
+      s->y[RED_PH] = v;
+      break;
+    case F_PS:
+      s->y[RED_PS] = v;
+      break;
+    case F_X:
+      s->y[RED_X] = v;
+      break;
+    case F_Y:
+      s->y[RED_Y] = v;
+      break;
+    case F_VTH:
+      s->y[RED_VTH] = v;
+      break;
+    case F_VPH:
+      s->y[RED_VPH] = v;
+      break;
+    case F_VPS:
+      s->y[RED_VPS] = v;
+      break;
   }
 }
 
 typedef struct replay_run {
   dv_replay *rp;
   const dv_trajfile *f;
-  size_t n;      /* rows served: up to and with the lying-down row */
-  int lay_down;  /* the last row served lies down: -1 lower, +1 upper limit */
+  size_t n;     /* rows served: up to and with the lying-down row */
+  int lay_down; /* the last row served lies down: -1 lower, +1 upper limit */
   double theta_limit, duration;
   double *t, *v[NF];
   /* Akima's interpolant serves, Steffen's estimates its error (NULL for a
@@ -127,8 +155,10 @@ static long row_at(const replay_run *r, double t, size_t *below) {
   size_t lo = 0, hi = r->n - 1;
   while (hi - lo > 1) {
     const size_t mid = (lo + hi) / 2;
-    if (r->t[mid] <= t) lo = mid;
-    else hi = mid;
+    if (r->t[mid] <= t)
+      lo = mid;
+    else
+      hi = mid;
   }
   *below = lo;
   const double tol = 1e-9 * fmax(1.0, fabs(t));

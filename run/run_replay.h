@@ -30,7 +30,7 @@ typedef struct dv_replay {
    * of the row before it */
   double interp_theta, interp_path; /* rad, m */
   long theta_line, path_line;
-  double t_end;  /* s: the last row served */
+  double t_end;   /* s: the last row served */
   int ends_early; /* the file ends before the duration, not lying down */
 } dv_replay;
 

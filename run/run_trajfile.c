@@ -15,16 +15,42 @@
 
 /* the columns either form may name, in DV_CSV_HEADER's order, then the pose form's */
 enum {
-  C_T, C_TH, C_PH, C_PS, C_X, C_Y, C_CX, C_CY, C_VTH, C_VPH, C_VPS, C_E, /* state */
-  C_Z, C_QW, C_QX, C_QY, C_QZ, C_VX, C_VY, C_VZ, C_WX, C_WY, C_WZ,      /* pose */
+  C_T,
+  C_TH,
+  C_PH,
+  C_PS,
+  C_X,
+  C_Y,
+  C_CX,
+  C_CY,
+  C_VTH,
+  C_VPH,
+  C_VPS,
+  C_E, /* state */
+  C_Z,
+  C_QW,
+  C_QX,
+  C_QY,
+  C_QZ,
+  C_VX,
+  C_VY,
+  C_VZ,
+  C_WX,
+  C_WY,
+  C_WZ, /* pose */
   NCOLS
 };
 static const char *const names[NCOLS] = {
-    "t",  "theta", "phi", "psi", "x",  "y",  "contact_x", "contact_y", "theta_dot", "phi_dot",
-    "psi_dot", "energy", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"};
+    "t",         "theta",   "phi",     "psi",    "x",  "y",  "contact_x", "contact_y",
+    "theta_dot", "phi_dot", "psi_dot", "energy", "z",  "qw", "qx",        "qy",
+    "qz",        "vx",      "vy",      "vz",     "wx", "wy", "wz"};
 /* the columns of only one form */
-static int state_only(int c) { return c == C_TH || c == C_PH || c == C_PS || (c >= C_CX && c <= C_E); }
-static int pose_only(int c) { return c >= C_Z; }
+static int state_only(int c) {
+  return c == C_TH || c == C_PH || c == C_PS || (c >= C_CX && c <= C_E);
+}
+static int pose_only(int c) {
+  return c >= C_Z;
+}
 
 #define MAX_FIELDS 64
 #define MAX_LINE 4096
@@ -81,7 +107,8 @@ static int read_header(reader *rd, char *line, long lineno, dv_traj_form *form) 
     while (c < NCOLS && strcmp(f[i], names[c])) c++;
     if (c == NCOLS)
       return fail_at(rd, lineno, i + 1,
-                     "unknown column '%.60s' (the state form: " "t,theta,phi,psi,x,y,contact_x,"
+                     "unknown column '%.60s' (the state form: "
+                     "t,theta,phi,psi,x,y,contact_x,"
                      "contact_y,theta_dot,phi_dot,psi_dot,energy; the pose form: "
                      "t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz])",
                      f[i]);
@@ -110,8 +137,8 @@ static int read_header(reader *rd, char *line, long lineno, dv_traj_form *form) 
     int nv = 0;
     for (int c = C_VX; c <= C_WZ; c++) nv += rd->col[c] >= 0;
     if (nv && nv < 6)
-      return fail_at(rd, lineno, 0,
-                     "%d of the velocity columns vx,vy,vz,wx,wy,wz: all six or none", nv);
+      return fail_at(rd, lineno, 0, "%d of the velocity columns vx,vy,vz,wx,wy,wz: all six or none",
+                     nv);
     return DV_OK;
   }
   if (rd->col[C_T] < 0) return fail_at(rd, lineno, 0, "missing column 't'");
@@ -119,8 +146,8 @@ static int read_header(reader *rd, char *line, long lineno, dv_traj_form *form) 
   if ((rd->col[C_CX] < 0) != (rd->col[C_CY] < 0))
     return fail_at(rd, lineno, 0, "missing column '%s': contact_x and contact_y come together",
                    rd->col[C_CX] < 0 ? "contact_x" : "contact_y");
-  const int npose = (rd->col[C_PH] >= 0) + (rd->col[C_PS] >= 0) + (rd->col[C_X] >= 0) +
-                    (rd->col[C_Y] >= 0);
+  const int npose =
+      (rd->col[C_PH] >= 0) + (rd->col[C_PS] >= 0) + (rd->col[C_X] >= 0) + (rd->col[C_Y] >= 0);
   if (npose && npose < 4)
     return fail_at(rd, lineno, 0, "%d of the columns phi,psi,x,y: all four or none", npose);
   if (rd->col[C_CX] < 0 && !npose)
@@ -129,8 +156,8 @@ static int read_header(reader *rd, char *line, long lineno, dv_traj_form *form) 
                    "computed from (phi,psi,x,y)");
   const int nr = (rd->col[C_VTH] >= 0) + (rd->col[C_VPH] >= 0) + (rd->col[C_VPS] >= 0);
   if (nr && nr < 3)
-    return fail_at(rd, lineno, 0, "%d of the rate columns theta_dot,phi_dot,psi_dot: all three or none",
-                   nr);
+    return fail_at(rd, lineno, 0,
+                   "%d of the rate columns theta_dot,phi_dot,psi_dot: all three or none", nr);
   return DV_OK;
 }
 
@@ -140,7 +167,10 @@ static int read_row(const reader *rd, char *line, long lineno, double v[NCOLS]) 
   const int n = split(line, f);
   if (n != rd->ncols)
     return fail_at(rd, lineno, n < 0 || n > rd->ncols ? rd->ncols + 1 : n,
-                   "%s fields, the header has %d", n < 0 ? "too many" : n > rd->ncols ? "more" : "fewer",
+                   "%s fields, the header has %d",
+                   n < 0           ? "too many"
+                   : n > rd->ncols ? "more"
+                                   : "fewer",
                    rd->ncols);
   for (int c = 0; c < NCOLS; c++) {
     v[c] = NAN;
@@ -177,16 +207,15 @@ void dv_run_matrix_to_quat(const double R[9], double q[4]) {
   const double wx = (R[7] - R[5]) * s, wy = (R[2] - R[6]) * s, wz = (R[3] - R[1]) * s;
   const double xy = (R[1] + R[3]) * s, xz = (R[2] + R[6]) * s, yz = (R[5] + R[7]) * s;
   const double big = 0.5 * sqrt(c[k]);
-  const double out[4][4] = {{big, wx, wy, wz}, {wx, big, xy, xz}, {wy, xy, big, yz},
-                            {wz, xz, yz, big}};
+  const double out[4][4] = {
+      {big, wx, wy, wz}, {wx, big, xy, xz}, {wy, xy, big, yz}, {wz, xz, yz, big}};
   const double sign = out[k][0] < 0 ? -1.0 : 1.0;
   for (int i = 0; i < 4; i++) q[i] = sign * out[k][i];
 }
 
 /* a pose-form row into its sample (rates zero when the file gives none: derived later) */
 static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
-                    const double v[NCOLS], long lineno, const double *prev, int vel,
-                    dv_sample *s) {
+                    const double v[NCOLS], long lineno, const double *prev, int vel, dv_sample *s) {
   double q[4] = {v[C_QW], v[C_QX], v[C_QY], v[C_QZ]};
   const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (!(fabs(norm - 1.0) <= DV_TRAJ_QUAT_TOL))
@@ -207,9 +236,9 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
 
 /* a state-form row into its sample: what it gives (contact, energy: NAN where not) */
 static void state_row(const reader *rd, const double v[NCOLS], dv_sample *s) {
-  static const int at[RED_NSTATE] = {[RED_TH] = C_TH, [RED_VTH] = C_VTH, [RED_VPH] = C_VPH,
-                                     [RED_VPS] = C_VPS, [RED_PH] = C_PH,  [RED_PS] = C_PS,
-                                     [RED_X] = C_X,     [RED_Y] = C_Y};
+  static const int at[RED_NSTATE] = {
+      [RED_TH] = C_TH, [RED_VTH] = C_VTH, [RED_VPH] = C_VPH, [RED_VPS] = C_VPS,
+      [RED_PH] = C_PH, [RED_PS] = C_PS,   [RED_X] = C_X,     [RED_Y] = C_Y};
   (void)rd;
   s->t = v[C_T];
   for (int k = 0; k < RED_NSTATE; k++) s->y[k] = v[at[k]];
@@ -236,7 +265,8 @@ static int derive_rates(dv_trajfile *f, dv_error *err) {
       continue;
     }
     gsl_interp_init(in, t, y, f->n);
-    for (size_t i = 0; i < f->n; i++) f->s[i].y[rate[k]] = gsl_interp_eval_deriv(in, t, y, t[i], acc);
+    for (size_t i = 0; i < f->n; i++)
+      f->s[i].y[rate[k]] = gsl_interp_eval_deriv(in, t, y, t[i], acc);
   }
   gsl_interp_free(in);
   gsl_interp_accel_free(acc);
@@ -295,12 +325,12 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
   for (size_t i = 0; i < sizeof q / sizeof *q; i++) {
     const int k = q[i].k;
     if (k >= RED_VTH && k <= RED_VPS && !f->has_rates) continue; /* derived, not given */
-    if (isnan(s->y[k])) continue; /* not in the file */
+    if (isnan(s->y[k])) continue;                                /* not in the file */
     const double d = q[i].angle ? angle_diff(s->y[k], y0[k]) : s->y[k] - y0[k];
     if (fabs(d) > DV_TRAJ_START_TOL * q[i].scale) {
       static const char *const state_names[RED_NSTATE] = {
-          [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot",
-          [RED_VPS] = "psi_dot", [RED_PH] = "phi", [RED_PS] = "psi", [RED_X] = "x", [RED_Y] = "y"};
+          [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot", [RED_VPS] = "psi_dot",
+          [RED_PH] = "phi",   [RED_PS] = "psi",        [RED_X] = "x",         [RED_Y] = "y"};
       return fail_at(rd, f->line[0], rd->col[q[i].col] + 1,
                      "the start does not match the scenario's initial state: %s = %.10g %s, the "
                      "scenario's %.10g (off by %.3g, tolerance %g %s)",
@@ -312,8 +342,8 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
 }
 
 /* append the row v (by column) read at lineno */
-static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
-                   dv_trajfile *f, const double v[NCOLS], long lineno) {
+static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom, dv_trajfile *f,
+                   const double v[NCOLS], long lineno) {
   if (f->n == f->cap) {
     const size_t cap = f->cap ? 2 * f->cap : 1024;
     dv_sample *s = realloc(f->s, cap * sizeof *s);
@@ -331,8 +361,7 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
   memset(s, 0, sizeof *s);
   if (f->form == DV_TRAJ_POSE) {
     const int vel = f->has_rates;
-    if (pose_row(rd, sc, geom, v, lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s))
-      return DV_EINPUT;
+    if (pose_row(rd, sc, geom, v, lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s)) return DV_EINPUT;
   } else {
     state_row(rd, v, s);
   }
@@ -358,8 +387,7 @@ static int comment_step(const reader *rd, const char *line, long lineno, double 
   while (*end == ' ' || *end == '\t') end++;
   if (*end || end == p + 1 || !(h > 0.0) || !isfinite(h))
     return fail_at(rd, lineno, 0, "'%.60s': dt must be a positive number of seconds", line);
-  if (!isnan(*step))
-    return fail_at(rd, lineno, 0, "a second dt (%.17g s after %.17g s)", h, *step);
+  if (!isnan(*step)) return fail_at(rd, lineno, 0, "a second dt (%.17g s after %.17g s)", h, *step);
   *step = h;
   return DV_OK;
 }
@@ -382,13 +410,14 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     double v[NCOLS];
     if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
   }
-  if (ferror(fp)) return dv_fail(rd->err, DV_ESYSTEM, "%s: cannot read: %s", rd->path, strerror(errno));
+  if (ferror(fp))
+    return dv_fail(rd->err, DV_ESYSTEM, "%s: cannot read: %s", rd->path, strerror(errno));
   return DV_OK;
 }
 
 /* every row read: enough of them, what they do not give derived, the start checked */
-static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
-                  dv_trajfile *f, long lineno) {
+static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *geom, dv_trajfile *f,
+                  long lineno) {
   if (f->n < DV_TRAJ_MIN_SAMPLES)
     return fail_at(rd, lineno, 0, "%zu samples: at least %d needed to interpolate", f->n,
                    DV_TRAJ_MIN_SAMPLES);
@@ -477,9 +506,8 @@ static int push_form(dv_trajfile *f, dv_traj_form form, int rates, dv_error *err
     f->has_slip = form == DV_TRAJ_POSE && rates;
     f->has_energy = 1;
   } else if (f->form != form || f->has_rates != rates) {
-    return dv_fail(err, DV_EINPUT,
-                   "%s:%zu: a %s%s after %ss%s: one kind of sample a trajectory", f->path,
-                   f->n + 1, form == DV_TRAJ_POSE ? "pose" : "state",
+    return dv_fail(err, DV_EINPUT, "%s:%zu: a %s%s after %ss%s: one kind of sample a trajectory",
+                   f->path, f->n + 1, form == DV_TRAJ_POSE ? "pose" : "state",
                    form == DV_TRAJ_POSE && !rates ? " without velocities" : "",
                    f->form == DV_TRAJ_POSE ? "pose" : "state",
                    f->form == DV_TRAJ_POSE && !f->has_rates ? " without velocities" : "");

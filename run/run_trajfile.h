@@ -43,13 +43,13 @@ typedef enum dv_traj_form { DV_TRAJ_STATE = 0, DV_TRAJ_POSE = 1 } dv_traj_form;
 typedef struct dv_trajfile {
   char path[1024];
   dv_traj_form form;
-  int has_rates;    /* the file gives rates (state form) or velocities (pose form) */
-  int has_angles;   /* phi, psi and x, y: the whole state */
-  int has_energy;   /* given, or computed from a pose with velocities */
-  int has_slip;     /* measured: the pose form with velocities */
+  int has_rates;  /* the file gives rates (state form) or velocities (pose form) */
+  int has_angles; /* phi, psi and x, y: the whole state */
+  int has_energy; /* given, or computed from a pose with velocities */
+  int has_slip;   /* measured: the pose form with velocities */
   size_t n, cap;
-  dv_sample *s;     /* each row, converted */
-  long *line;       /* each row's line in the file */
+  dv_sample *s;          /* each row, converted */
+  long *line;            /* each row's line in the file */
   double half_thickness; /* m: the disk the scenario describes */
   double step; /* s: the engine's time step from a "# dt = H" comment line, NAN when none */
 } dv_trajfile;

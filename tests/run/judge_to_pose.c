@@ -21,9 +21,9 @@ int main(int argc, char **argv) {
     double v[12]; /* t,theta,phi,psi,x,y,contact_x,contact_y,theta_dot,phi_dot,psi_dot,energy */
     char *p = line;
     for (int i = 0; i < 12; i++) v[i] = strtod(p, &p), p += *p == ',';
-    const double y[RED_NSTATE] = {[RED_TH] = v[1], [RED_PH] = v[2], [RED_PS] = v[3],
-                                  [RED_X] = v[4],  [RED_Y] = v[5],  [RED_VTH] = v[8],
-                                  [RED_VPH] = v[9], [RED_VPS] = v[10]};
+    const double y[RED_NSTATE] = {
+        [RED_TH] = v[1], [RED_PH] = v[2],  [RED_PS] = v[3],  [RED_X] = v[4],
+        [RED_Y] = v[5],  [RED_VTH] = v[8], [RED_VPH] = v[9], [RED_VPS] = v[10]};
     dv_pose pose;
     dv_pose_from_state(&geom, y, &pose);
     double q[4];
