@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "run_judge.h"
 #include "run_scenario.h"
 #include "run_trajectory.h"
 
@@ -22,8 +23,12 @@ struct diskval_scenario {
 };
 
 struct diskval_trajectory {
-  dv_traj traj;
+  dv_traj traj; /* an engine's run (diskval_run) */
   dv_engine_stats stats;
+  /* the caller's samples (diskval_trajectory_new): the scenario they are
+   * of, and the samples as judge reads them from a file; sc NULL for a run */
+  const dv_scenario *sc;
+  dv_trajfile file;
 };
 
 /* the internal error buffer of err (the same layout), or NULL */
@@ -193,13 +198,13 @@ static int run(const diskval_scenario *sc, const char *engine, diskval_trajector
 
 /* the number of samples */
 size_t diskval_trajectory_size(const diskval_trajectory *tr) {
-  return tr ? tr->traj.n : 0;
+  return !tr ? 0 : tr->sc ? tr->file.n : tr->traj.n;
 }
 
 /* sample i in the public layout */
 int diskval_trajectory_sample(const diskval_trajectory *tr, size_t i, diskval_sample *out) {
-  if (!tr || !out || i >= tr->traj.n) return -1;
-  const dv_sample *s = &tr->traj.s[i];
+  if (!tr || !out || i >= diskval_trajectory_size(tr)) return -1;
+  const dv_sample *s = tr->sc ? &tr->file.s[i] : &tr->traj.s[i];
   out->t = s->t;
   state_out(s->y, &out->state);
   out->contact_x = s->contact[0];
@@ -212,6 +217,7 @@ int diskval_trajectory_sample(const diskval_trajectory *tr, size_t i, diskval_sa
 void diskval_trajectory_free(diskval_trajectory *tr) {
   if (!tr) return;
   dv_run_traj_free(&tr->traj);
+  dv_run_trajfile_free(&tr->file);
   free(tr);
 }
 
@@ -242,6 +248,89 @@ int diskval_compare_trajectories(const diskval_trajectory *engine,
   return DV_OK;
 }
 
+/* a comparison's result for engine result r in the public layout */
+static void comparison_out(const dv_engine_result *r, diskval_comparison *out) {
+  memset(out, 0, sizeof *out);
+  out->pass = r->pass;
+  snprintf(out->verdict, sizeof out->verdict, "%s", dv_run_verdict_name(r->verdict));
+  snprintf(out->decided, sizeof out->decided, "%.*s", (int)sizeof out->decided - 1, r->decided);
+  metrics_out(&r->vs_ref, &out->metrics);
+  for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++)
+    out->limit[i] = i < DV_NMETRICS ? r->tolerance[i] : NAN;
+  out->wall_s = r->wall_s;
+}
+
+int diskval_trajectory_new(const diskval_scenario *sc, const char *name, diskval_trajectory **out,
+                           diskval_error *err) {
+  if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_trajectory_new: NULL argument");
+  diskval_trajectory *tr = calloc(1, sizeof *tr);
+  if (!tr) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a trajectory");
+  tr->sc = &sc->sc;
+  dv_run_trajfile_begin(&tr->file, name ? name : "trajectory");
+  *out = tr;
+  return DV_OK;
+}
+
+int diskval_trajectory_push(diskval_trajectory *tr, double t, const diskval_state *s,
+                            diskval_error *err) {
+  if (!tr || !s || !tr->sc)
+    return dv_fail(as_dv(err), DV_EINPUT,
+                   "diskval_trajectory_push: NULL, or a trajectory not from diskval_trajectory_new");
+  double y[RED_NSTATE];
+  y[RED_TH] = s->theta, y[RED_VTH] = s->theta_dot, y[RED_VPH] = s->phi_dot;
+  y[RED_VPS] = s->psi_dot, y[RED_PH] = s->phi, y[RED_PS] = s->psi, y[RED_X] = s->x, y[RED_Y] = s->y;
+  return dv_run_trajfile_push_state(&tr->file, tr->sc, t, y, as_dv(err));
+}
+
+int diskval_trajectory_push_pose(diskval_trajectory *tr, double t, const diskval_pose *p,
+                                 int with_velocity, diskval_error *err) {
+  if (!tr || !p || !tr->sc)
+    return dv_fail(as_dv(err), DV_EINPUT,
+                   "diskval_trajectory_push_pose: NULL, or a trajectory not from "
+                   "diskval_trajectory_new");
+  return dv_run_trajfile_push_pose(&tr->file, tr->sc, t, p->pos, p->quat,
+                                   with_velocity ? p->vel : NULL, with_velocity ? p->omega : NULL,
+                                   as_dv(err));
+}
+
+/* judge the caller's samples as diskval judge judges a file */
+static int judge(const diskval_scenario *sc, const diskval_trajectory *tr, diskval_comparison *out,
+                 diskval_error *err) {
+  if (!sc || !tr || !out || !tr->sc)
+    return dv_fail(as_dv(err), DV_EINPUT,
+                   "diskval_judge: NULL, or a trajectory not from diskval_trajectory_new");
+  dv_trajfile f = tr->file; /* ended on a copy: the caller may push on */
+  f.s = malloc((f.n ? f.n : 1) * sizeof *f.s);
+  f.line = malloc((f.n ? f.n : 1) * sizeof *f.line);
+  dv_comparison *c = calloc(1, sizeof *c);
+  dv_replay *rp = malloc(sizeof *rp);
+  int status = f.s && f.line && c && rp ? DV_OK : dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  if (!status) {
+    memcpy(f.s, tr->file.s, f.n * sizeof *f.s);
+    memcpy(f.line, tr->file.line, f.n * sizeof *f.line);
+    f.cap = f.n;
+    status = dv_run_trajfile_end(&f, &sc->sc, as_dv(err));
+  }
+  if (!status) {
+    dv_run_replay_init(rp, &f, f.path);
+    status = dv_run_judge(&sc->sc, rp, 1, c, as_dv(err));
+  }
+  if (!status) comparison_out(&c->r[0], out);
+  if (c) dv_run_comparison_free(c);
+  free(c);
+  free(rp);
+  dv_run_trajfile_free(&f);
+  return status < 0 ? status : DV_OK;
+}
+
+int diskval_judge(const diskval_scenario *sc, const diskval_trajectory *tr,
+                  diskval_comparison *out, diskval_error *err) {
+  gsl_error_handler_t *handler = gsl_set_error_handler_off();
+  const int status = judge(sc, tr, out, err);
+  gsl_set_error_handler(handler);
+  return status;
+}
+
 /* run engine on sc and judge it against its reference */
 static int compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
                    diskval_error *err) {
@@ -251,17 +340,7 @@ static int compare(const diskval_scenario *sc, const char *engine, diskval_compa
   dv_comparison *c = calloc(1, sizeof *c);
   if (!c) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a comparison");
   const int status = dv_run_scenario(&sc->sc, NULL, e, 1, c, as_dv(err));
-  if (status >= 0) {
-    const dv_engine_result *r = &c->r[0];
-    memset(out, 0, sizeof *out);
-    out->pass = r->pass;
-    snprintf(out->verdict, sizeof out->verdict, "%s", dv_run_verdict_name(r->verdict));
-    snprintf(out->decided, sizeof out->decided, "%.*s", (int)sizeof out->decided - 1, r->decided);
-    metrics_out(&r->vs_ref, &out->metrics);
-    for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++)
-      out->limit[i] = i < DV_NMETRICS ? r->tolerance[i] : NAN;
-    out->wall_s = r->wall_s;
-  }
+  if (status >= 0) comparison_out(&c->r[0], out);
   dv_run_comparison_free(c);
   free(c);
   return status < 0 ? status : DV_OK;

@@ -10,6 +10,7 @@ int dv_cli_simulate(int argc, char **argv);
 int dv_cli_analyze(int argc, char **argv);
 int dv_cli_engines(int argc, char **argv);
 int dv_cli_compare(int argc, char **argv);
+int dv_cli_judge(int argc, char **argv);
 int dv_cli_suite(int argc, char **argv);
 int dv_cli_sweep(int argc, char **argv);
 int dv_cli_best(int argc, char **argv);

@@ -25,6 +25,7 @@ static const char HELP[] =
     "  simulate SCENARIO --engine NAME [--out FILE]   one trajectory as CSV\n"
     "  analyze SCENARIO [--json]                      invariants, steady motion, stability\n"
     "  compare SCENARIO [--engines LIST] [--out DIR]  engines against the references\n"
+    "  judge SCENARIO TRAJECTORY... [--out DIR]       trajectories from any engine, judged\n"
     "  suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N]   many scenarios, reports\n"
     "  sweep SCENARIO --engine NAME --vary KEY=VALUES speed against error over settings\n"
     "  best SCENARIO --engine NAME --theta-tol X      the cheapest settings meeting X\n"
@@ -80,7 +81,7 @@ int main(int argc, char **argv) {
     const char *name;
     int (*run)(int, char **);
   } commands[] = {{"simulate", dv_cli_simulate},   {"analyze", dv_cli_analyze},
-                  {"compare", dv_cli_compare},     {"suite", dv_cli_suite},
+                  {"compare", dv_cli_compare},     {"judge", dv_cli_judge},     {"suite", dv_cli_suite},
                   {"sweep", dv_cli_sweep},         {"best", dv_cli_best},
                   {"attribute", dv_cli_attribute}, {"map", dv_cli_map},
                   {"engines", dv_cli_engines},     {"verify", dv_cli_verify}};

@@ -122,6 +122,11 @@ typedef struct dv_engine_type {
   int (*advance)(void *engine, double t, dv_sample *out, dv_error *err);
   void (*stats)(const void *engine, dv_engine_stats *out);
   void (*free)(void *engine); /* NULL-safe */
+  /* an engine made at run time, not in the registry (a recorded trajectory
+   * replayed, run/run_replay.h): alloc given its own table, whose data it
+   * reads; NULL for the registry's engines, which use alloc */
+  void *(*alloc_self)(const struct dv_engine_type *self, const dv_scenario *sc, dv_error *err);
+  const void *data;
 } dv_engine_type;
 
 /* every engine's table, dv_engine_NAME (engines/NAME/), as dv_engines.def lists them */

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "dv_reference.h"
+#include "run_judge.h"
 #include "run_meta.h"
 #include "io_file.h"
 #include "report_escape.h"
@@ -281,6 +282,16 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
             100 * r->window_fraction, r->pointwise_end);
     fprintf(fp, "Horizon: %s.\n\n", r->horizon_why);
     if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
+    const dv_replay *rp = dv_run_replay_of(r->engine);
+    if (rp) { /* a recorded trajectory: where from (the user's path: escaped), what its
+               * interpolation may add */
+      fprintf(fp, "%s: ", r->engine->name);
+      dv_report_escape_markdown(fp, r->stats.method);
+      fprintf(fp,
+              "; the interpolation's estimated error %.3g rad in theta, %.3g m in the contact "
+              "point (refused above %g of the limits).\n\n",
+              rp->interp_theta, rp->interp_path, DV_JUDGE_INTERP_SHARE);
+    }
     char knobs[256];
     dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
     if (knobs[0]) fprintf(fp, "%s ran with %s.\n\n", r->engine->name, knobs);

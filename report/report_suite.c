@@ -374,3 +374,22 @@ int dv_report_suite_write(const char *out_dir, const char *const *scenario_dirs,
                           const char *junit_path, dv_error *err) {
   return dv_report_suite_write_ended(out_dir, scenario_dirs, NULL, n, junit_path, err);
 }
+
+int dv_report_suite_write_junit(const char *out_dir, const char *dir, const char *junit_path,
+                                dv_error *err) {
+  dv_io_file out;
+  memset(&out, 0, sizeof out);
+  if (strlen(junit_path) >= sizeof out.path)
+    return dv_fail(err, DV_EINPUT, "path too long: %.200s", junit_path);
+  entry e;
+  memset(&e, 0, sizeof e);
+  load_entry(out_dir, dir, &e);
+  int status = dv_io_open(&out, junit_path, err);
+  if (!status) {
+    dvs_write_junit(out.fp, &e, 1);
+    status = dv_io_commit(&out, err);
+  }
+  dv_io_abort(&out);
+  cJSON_Delete(e.report);
+  return status;
+}

@@ -69,4 +69,8 @@ int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario
                                 const char *const *not_ended, size_t n, const char *junit_path,
                                 dv_error *err);
 
+/* the JUnit XML alone of one report directory out_dir/dir (judge --junit) */
+int dv_report_suite_write_junit(const char *out_dir, const char *dir, const char *junit_path,
+                                dv_error *err);
+
 #endif

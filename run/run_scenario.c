@@ -174,6 +174,9 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 "%s: %s: not judged: %s is the reference it would be compared with (the same "
                 "engine on the same scenario): its errors are zero and measure nothing",
                 sc->name, name, name);
+  } else if (r->not_judged[0]) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r, "%s: %s: not judged: %s", sc->name, name, r->not_judged);
   } else if (r->status < 0 && t_eng < t_ref - 0.5 * sc->output_dt) {
     const dv_verdict v = dv_run_verdict_of_outcome(r->stats.outcome);
     r->verdict = dv_run_verdict_failed(v) ? v : DV_VERDICT_ERROR;
@@ -243,6 +246,12 @@ static int run_into(const dv_engine_type *type, const dv_scenario *sc, dv_traj *
 int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                     const dv_engine_type *const *engines, size_t n, dv_comparison *c,
                     dv_error *err) {
+  return dv_run_scenario_hooked(sc, ref_sc, engines, n, NULL, c, err);
+}
+
+int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
+                           const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
+                           dv_comparison *c, dv_error *err) {
   memset(c, 0, sizeof *c);
   c->sc = sc;
   c->pass = 1;
@@ -350,6 +359,7 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
     }
     const dv_engine_stats *ref_st = ref == &c->thin ? &c->thin_stats : &r->matched_stats;
     const int itself = ref_sc == sc && engines[i] == (ref == &c->thin ? thin : matched);
+    if (hook && hook->before_verdict) hook->before_verdict(hook->ctx, c, r);
     judge(c, ref, ref_st, ref_end, itself, r);
     c->pass &= r->pass;
   }

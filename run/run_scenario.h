@@ -65,6 +65,7 @@ typedef struct dv_engine_result {
   char cause[200];                  /* an excess's cause, from attribution ("": unknown) */
   char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
+  char not_judged[240];             /* why the run is not judged, set by a hook ("": it is) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -93,6 +94,20 @@ typedef struct dv_comparison {
 int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
                     const dv_engine_type *const *engines, size_t n, dv_comparison *out,
                     dv_error *err);
+
+/* what a caller adds to the judging of an engine it made (run_judge.h):
+ * called once each engine's metrics and limits are set, before its verdict;
+ * it may mark a metric not judged (tolerance NAN, limit_why saying why) or
+ * the whole run (not_judged) */
+typedef struct dv_run_hook {
+  void (*before_verdict)(void *ctx, const dv_comparison *c, dv_engine_result *r);
+  void *ctx;
+} dv_run_hook;
+
+/* dv_run_scenario with hook (NULL: none) */
+int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
+                           const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
+                           dv_comparison *out, dv_error *err);
 
 void dv_run_comparison_free(dv_comparison *c);
 

@@ -89,5 +89,13 @@ expect "same file" simulate "$sc" --engine reduced --out "$work/a.csv" --forces 
 expect "same file" simulate "$sc" --engine reduced --out - --forces -
 expect "the metadata file --out writes beside it 'a.csv.json'" simulate "$sc" --engine reduced --out a.csv \
   --forces ./a.csv.json
+# judge: its files are read, and its names checked, before anything is written
+expect "^diskval judge: .*needs|^diskval judge: .*trajector|^diskval judge: .*argument" judge "$sc"
+expect "^diskval judge: --name gives 2 names for 1 trajectories" judge "$sc" a.csv --name p,q
+expect "^diskval judge: name 'mujoco' is a linked engine's" judge "$sc" mujoco.csv
+expect "^diskval judge: two trajectories named 'a'" judge "$sc" a.csv x/a.csv
+expect "^diskval judge: name 'a b': only letters" judge "$sc" a.csv --name 'a b'
+expect "^diskval judge: 9 trajectories: at most 8" judge "$sc" a.csv b.csv c.csv d.csv e.csv f.csv g.csv h.csv i.csv
+expect "^diskval judge: nosuch.csv: cannot open: No such file or directory\$" judge "$sc" nosuch.csv
 [ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
 exit $fail

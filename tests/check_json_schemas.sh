@@ -5,7 +5,7 @@
 # fails here:
 #   report.json   compare on a thin scene, a thick one and a coin that lies
 #                 down (its event judged), a suite's scenarios, and the error
-#                 report of a scenario that timed out
+#                 report of a scenario that timed out, and judge of a recorded MuJoCo run
 #   summary.json  a suite of two scenes, and a suite whose scenario timed out
 #   run JSON      simulate with each engine: reduced, matched, mujoco, ode, bullet, simbody
 #   verify.json   suite --verify: a case that ran and one skipped
@@ -87,6 +87,8 @@ for engine in reduced matched mujoco ode bullet simbody; do
   run simulate "$data/short_circle.ini" --engine "$engine" --set scenario.duration=0.5 \
     --out "$work/run_$engine.csv"
 done
+# a recorded trajectory judged: its entry is named by the file, with no settings
+run judge "$data/short_circle.ini" --set scenario.duration=0.5 "$work/run_mujoco.csv" --out "$work/judged"
 # two half-second circles: one verified in both engines, one naming mujoco (ode skipped)
 sed 's/^duration = .*/duration = 0.5/' "$data/short_circle.ini" >"$work/verify_in/both.ini"
 sed -e 's/^name = .*/name = mujoco_only\nengines = mujoco/' "$work/verify_in/both.ini" \
@@ -95,7 +97,7 @@ run suite "$work/verify_in" --verify --engines mujoco,ode --jobs 1 --out "$work/
 check 'grep -q "\"verdict\":.*\"skipped\"" "$work/verify/verify.json"' "verify.json has no skipped case"
 check 'grep -q "\"agrees\":" "$work/flat/coin_falls_flat/report.json"' "the coin's event was not judged"
 
-check 'validate report.schema.json valid "$work"/{thin,thick,flat,suite,late_out}/*/report.json' \
+check 'validate report.schema.json valid "$work"/{thin,thick,flat,suite,late_out,judged}/*/report.json' \
   "report.json does not match report.schema.json"
 check 'validate summary.schema.json valid "$work"/{suite,late_out}/summary.json' \
   "summary.json does not match summary.schema.json"

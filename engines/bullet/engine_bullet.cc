@@ -537,4 +537,6 @@ extern "C" const dv_engine_type dv_engine_bullet = {
     bullet_advance,
     bullet_stats,
     bullet_free,
+    NULL, /* alloc_self: a replay's */
+    NULL, /* data */
 };

@@ -541,4 +541,6 @@ extern "C" const dv_engine_type dv_engine_simbody = {
     simbody_advance,
     simbody_stats,
     simbody_free,
+    NULL, /* alloc_self: a replay's */
+    NULL, /* data */
 };

@@ -148,6 +148,38 @@ DISKVAL_API int diskval_compare_trajectories(const diskval_trajectory *engine,
 DISKVAL_API int diskval_compare(const diskval_scenario *sc, const char *engine,
                                 diskval_comparison *out, diskval_error *err);
 
+/* a rigid body's pose, world frame: the disk's centre (m), the body-to-world
+ * unit quaternion (w, x, y, z) with the body's z axis along the disk's axis
+ * (that of R = Rz(phi) Ry(theta) Rz(psi - pi/2)), the centre's velocity (m/s)
+ * and the angular velocity (rad/s) */
+typedef struct diskval_pose {
+  double pos[3], quat[4], vel[3], omega[3];
+} diskval_pose;
+
+/* an empty trajectory of sc (kept by the caller while the trajectory lives)
+ * for the caller's own samples: an engine diskval does not link, judged
+ * without files. name: the one its errors and verdict carry (NULL: "trajectory") */
+DISKVAL_API int diskval_trajectory_new(const diskval_scenario *sc, const char *name,
+                                       diskval_trajectory **out, diskval_error *err);
+
+/* append the sample at time t (s, from 0, increasing): a state, or a pose
+ * (with_velocity 0: vel and omega are not given; the rates come from the
+ * samples). All of a trajectory's samples are states, or all poses. Checked
+ * as `diskval judge` checks a file's rows ("NAME:N:COLUMN: ...", N the
+ * sample from 1): finite, times increasing, a unit quaternion within 1e-6 */
+DISKVAL_API int diskval_trajectory_push(diskval_trajectory *tr, double t, const diskval_state *state,
+                                        diskval_error *err);
+DISKVAL_API int diskval_trajectory_push_pose(diskval_trajectory *tr, double t,
+                                             const diskval_pose *pose, int with_velocity,
+                                             diskval_error *err);
+
+/* judge tr (from diskval_trajectory_new, at least 5 samples, starting at
+ * sc's initial state) against sc's reference as `diskval judge` does: 0 (see
+ * out->pass) or < 0 (-1 with err naming the sample; e.g. samples too sparse
+ * to interpolate within a tenth of the limits). tr may be pushed on after */
+DISKVAL_API int diskval_judge(const diskval_scenario *sc, const diskval_trajectory *tr,
+                              diskval_comparison *out, diskval_error *err);
+
 /* the value of metric name in m, or NAN when m has none of that name */
 DISKVAL_API double diskval_metric(const diskval_metrics *m, const char *name);
 

@@ -1,0 +1,96 @@
+/* run_judge: a comparison of recorded trajectories (run_judge.h). */
+#include "run_judge.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef struct judge_ctx {
+  int sparse;   /* a file too sparse to judge */
+  dv_error why; /* the first such file, in one line */
+} judge_ctx;
+
+/* metric m not judged, and why */
+static void not_judged(dv_engine_result *r, int m, const char *why) {
+  r->tolerance[m] = NAN;
+  snprintf(r->limit_why[m], sizeof r->limit_why[m], "not judged: %.99s", why);
+}
+
+/* the end of the compared window: the reference's end or its validity limit */
+static double window_end(const dv_comparison *c, const dv_engine_result *r) {
+  const dv_traj *ref = r->half_thickness > 0.0 ? &r->matched : &c->thin;
+  const double end = ref->n ? ref->s[ref->n - 1].t : 0.0;
+  return r->half_thickness > 0.0 ? end : fmin(end, c->thin_valid_end);
+}
+
+/* the interpolation's error against the limits: a file too sparse into ctx */
+static void check_sparse(judge_ctx *ctx, const dv_replay *rp, const dv_engine_result *r) {
+  const double lth = DV_JUDGE_INTERP_SHARE * r->tolerance[DV_THETA_MAX_ERR];
+  const double lp = DV_JUDGE_INTERP_SHARE * r->tolerance[DV_PATH_MAX_ERR];
+  const int th = rp->interp_theta > lth, p = rp->interp_path > lp;
+  if (ctx->sparse || !(th || p)) return;
+  ctx->sparse = 1;
+  dv_fail(&ctx->why, DV_EINPUT,
+          "%.400s:%ld: samples too sparse to judge: interpolating between them (Akima against "
+          "Steffen) is uncertain by %.3g %s in %s after this line, %.3g times %g of its limit %.3g "
+          "%s; give samples more often",
+          rp->file->path, th ? rp->theta_line : rp->path_line,
+          th ? rp->interp_theta : rp->interp_path, th ? "rad" : "m",
+          th ? "theta" : "the contact point", (th ? rp->interp_theta / lth : rp->interp_path / lp),
+          DV_JUDGE_INTERP_SHARE,
+          th ? r->tolerance[DV_THETA_MAX_ERR] : r->tolerance[DV_PATH_MAX_ERR], th ? "rad" : "m");
+}
+
+static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r) {
+  judge_ctx *ctx = p;
+  const dv_replay *rp = dv_run_replay_of(r->engine);
+  if (!rp) return;
+  const dv_trajfile *f = rp->file;
+  if (!f->has_slip) {
+    r->vs_ref.value[DV_SLIP_MAX] = r->vs_thin.value[DV_SLIP_MAX] = NAN; /* unmeasured, not 0 */
+    not_judged(r, DV_SLIP_MAX,
+               f->form == DV_TRAJ_POSE
+                   ? "no velocities (vx..wz) in the file: no slip to measure"
+                   : "the state form's rates assume rolling: no slip to measure");
+  }
+  /* what needs the columns a file lacks: NaN samples there may fold into a
+   * maximum as nothing, so these are not judged whatever they came to */
+  if (!f->has_angles) {
+    r->vs_ref.value[DV_HEADING_PERIOD_ERR] = r->vs_thin.value[DV_HEADING_PERIOD_ERR] = NAN;
+    not_judged(r, DV_HEADING_PERIOD_ERR, "no phi in the file: no heading to compare");
+  }
+  if (!f->has_angles && !f->has_rates) {
+    r->vs_ref.value[DV_INVARIANT_DRIFT] = r->vs_thin.value[DV_INVARIANT_DRIFT] = NAN;
+    not_judged(r, DV_INVARIANT_DRIFT, "no rates in the file, nor phi, psi to derive them from");
+  }
+  if (!f->has_energy) {
+    r->vs_ref.value[DV_ENERGY_DRIFT] = r->vs_thin.value[DV_ENERGY_DRIFT] = NAN;
+    not_judged(r, DV_ENERGY_DRIFT, "no energy in the file, nor a pose to compute it from");
+  }
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (isnan(r->vs_ref.value[m]) && !isnan(r->tolerance[m]))
+      not_judged(r, m,
+                 m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
+                                      : "no phi, psi, x, y in the file to compute it from");
+  const double end = window_end(c, r);
+  if (rp->ends_early && rp->t_end < end - 0.5 * c->sc->output_dt)
+    snprintf(r->not_judged, sizeof r->not_judged,
+             "the file ends at t = %g s, before the compared window does (t = %g s), without "
+             "lying down: what it does not cover cannot be judged",
+             rp->t_end, end);
+  check_sparse(ctx, rp, r);
+}
+
+int dv_run_judge(const dv_scenario *sc, dv_replay *replays, size_t n, dv_comparison *c,
+                 dv_error *err) {
+  const dv_engine_type *types[DV_MAX_ENGINES];
+  if (n > DV_MAX_ENGINES)
+    return dv_fail(err, DV_EINPUT, "at most %d trajectories at a time", DV_MAX_ENGINES);
+  for (size_t i = 0; i < n; i++) types[i] = &replays[i].type;
+  judge_ctx ctx = {0, {{0}}};
+  const dv_run_hook hook = {before_verdict, &ctx};
+  const int status = dv_run_scenario_hooked(sc, NULL, types, n, &hook, c, err);
+  if (status < 0) return status;
+  if (ctx.sparse) return *err = ctx.why, DV_EINPUT;
+  return DV_OK;
+}
