@@ -10,7 +10,7 @@
 
 const dv_engine_type *const dv_engines[] = {&dv_engine_reduced, &dv_engine_matched,
                                             &dv_engine_mujoco, &dv_engine_ode,
-                                            &dv_engine_bullet, NULL};
+                                            &dv_engine_bullet, &dv_engine_dart, NULL};
 
 const dv_engine_type *dv_engine_find(const char *name) {
   for (const dv_engine_type *const *e = dv_engines; *e; e++)

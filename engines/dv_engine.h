@@ -129,6 +129,7 @@ extern const dv_engine_type dv_engine_matched; /* thick disk, Newton-Euler rolli
 extern const dv_engine_type dv_engine_ode;     /* ODE 0.16 contact simulation */
 extern const dv_engine_type dv_engine_mujoco;  /* MuJoCo 2.2 contact simulation */
 extern const dv_engine_type dv_engine_bullet;  /* Bullet 3.24 contact simulation (engines/bullet/) */
+extern const dv_engine_type dv_engine_dart;    /* DART 6.12 contact simulation (engines/dart/) */
 
 /* NULL-terminated list of every engine */
 extern const dv_engine_type *const dv_engines[];
