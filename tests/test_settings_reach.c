@@ -34,6 +34,7 @@ static const char *const BASE[] = {
     "scenario.duration=0.2",         "engines.mujoco.timestep=1e-4",
     "engines.mujoco.integrator=rk4", "engines.ode.timestep=1e-4",
     "engines.bullet.timestep=1e-4",  "engines.bullet.body=multibody",
+    "engines.dart.timestep=1e-4",    "engines.dart.lcp=pgs",
 };
 #define NBASE (sizeof BASE / sizeof BASE[0])
 
@@ -82,6 +83,15 @@ static const reach TABLE[] = {
     {"bullet", "friction", "0.05", NULL, MORE_SLIP, NULL},
     {"bullet", "cfm", "1e-3", NULL, DIFFERS, NULL},
     {"bullet", "gyroscopic", "off", NULL, DIFFERS, NULL},
+    {"dart", "timestep", "5e-5", NULL, DIFFERS, NULL},
+    {"dart", "lcp", "dantzig", NULL, DIFFERS, NULL},
+    {"dart", "detector", "bullet", NULL, DIFFERS, NULL},
+    {"dart", "friction", "0.05", NULL, MORE_SLIP, NULL},
+    {"dart", "erp", "0.01", NULL, DIFFERS, NULL},
+    {"dart", "erv", "1e-6", NULL, DIFFERS, NULL},
+    {"dart", "cfm", "1e-3", NULL, DIFFERS, NULL},
+    {"dart", "geom", "thin", NULL, SAME,
+     "the thin disk is the DART engine's only shape: given, it is the default"},
     {"bullet", "geom", "thin", NULL, SAME,
      "the thin disk is Bullet's only shape (a thickness brings its collision margin): "
      "given, it is the default"},
