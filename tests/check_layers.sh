@@ -72,6 +72,8 @@ for f in $(find common reduced scenario engines io exec run report search cli ap
     grep -v '\.h>' | sed "s|^|$f:|; s|\$|  (a C++ header outside an engine's folder)|" | grep . && bad=1
   grep -n '^#include <\(bt[A-Za-z]*\|Bullet[A-Za-z/]*\|LinearMath/[A-Za-z]*\)\.h>' "$f" |
     sed "s|^|$f:|; s|\$|  (Bullet outside engines/bullet/)|" | grep . && bad=1
+  grep -n '^#include <dart/' "$f" |
+    sed "s|^|$f:|; s|\$|  (DART outside engines/dart/)|" | grep . && bad=1
 done
 [ $bad -eq 0 ] && echo "layers: every include goes downwards; no engine named outside engines/"
 exit $bad

@@ -28,7 +28,7 @@ for cc in "$src"/engines/*/*.cc; do
   # shellcheck disable=SC2046
   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize=vptr \
     -I"$src/common" -I"$src/reduced" -I"$src/scenario" -I"$src/engines" \
-    $(pkg-config --cflags bullet-float64) \
+    $(pkg-config --cflags bullet-float64 eigen3) \
     -c "$cc" -o "$o" || exit 1
   cxx_engines+=("$o")
 done
@@ -38,7 +38,7 @@ clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "$src"/engines/*.c \
   "$src/common/dv_error.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c \
   -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode bullet-float64) -lmujoco $sundials \
-  -ldouble-conversion -lstdc++ -lm -o "$work/fuzz" || exit 1
+  -ldart -ldart-collision-ode -ldl -ldouble-conversion -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
 cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
 cd "$work" || exit 1
