@@ -8,7 +8,9 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-dev libcjson-dev
-          libode-dev libmujoco-dev libbullet-dev libsimbody-dev libplplot-dev libopenmpi-dev openmpi-bin libdouble-conversion-dev
+          libode-dev libmujoco-dev libbullet-dev libdart-dev libdart-collision-bullet-dev
+          libdart-collision-ode-dev libsimbody-dev libplplot-dev libopenmpi-dev openmpi-bin
+          libdouble-conversion-dev
           libdragonbox-dev)
 # the tests also check the report's XML and render its page in a real browser, read JSON (jq)
 # and validate it against its schemas (python3-jsonschema)

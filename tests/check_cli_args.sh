@@ -71,10 +71,10 @@ expect "no scenario given" suite
 expect "unknown engine 'Mujoco' \(one of: .*mujoco" simulate "$sc" --engine Mujoco
 # an engine list names the valid engines once, and nothing after them
 for cmd in compare suite verify; do
-  expect "^diskval $cmd: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, simbody\)\$" \
+  expect "^diskval $cmd: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody\)\$" \
     $cmd "$sc" --engines ode,Mujoco
 done
-expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, simbody\)\$" map --engines Mujoco
+expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody\)\$" map --engines Mujoco
 # an engine named twice would be two results under one key in report.json
 for cmd in compare suite verify; do
   expect "^diskval $cmd: engine 'ode' listed twice\$" $cmd "$sc" --engines ode,mujoco,ode

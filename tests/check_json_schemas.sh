@@ -7,7 +7,7 @@
 #                 down (its event judged), a suite's scenarios, and the error
 #                 report of a scenario that timed out, and judge of a recorded MuJoCo run
 #   summary.json  a suite of two scenes, and a suite whose scenario timed out
-#   run JSON      simulate with each engine: reduced, matched, mujoco, ode, bullet, simbody
+#   run JSON      simulate with each engine: reduced, matched, mujoco, ode, bullet, dart, simbody
 #   verify.json   suite --verify: a case that ran and one skipped
 # and the schemas are not too loose: copies of a report.json with one field
 # broken (a limit's margin renamed, an engine's pass dropped, a metric written
@@ -83,7 +83,7 @@ cp "$data/short_circle.ini" "$work/late/"
 "$diskval" suite "$work/late" --jobs 1 --timeout 0.001 --quiet --out "$work/late_out" >/dev/null 2>&1
 check 'grep -q "\"error\":.*timed out" "$work/late_out/short_circle/report.json"' \
   "a scenario timed out without an error report"
-for engine in reduced matched mujoco ode bullet simbody; do
+for engine in reduced matched mujoco ode bullet dart simbody; do
   run simulate "$data/short_circle.ini" --engine "$engine" --set scenario.duration=0.5 \
     --out "$work/run_$engine.csv"
 done

@@ -32,7 +32,7 @@ static dv_scenario base(const char *name, double duration) {
 }
 
 static dv_geometry engine_geometry(const dv_engine_type *e, const dv_scenario *sc) {
-  /* ODE's thin disk or cylinder, Bullet's and Simbody's thin disk */
+  /* ODE's thin disk or cylinder, Bullet's, DART's and Simbody's thin disk */
   if (strcmp(e->name, "mujoco"))
     return (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r, dv_engine_half_thickness(e, sc)};
   /* MuJoCo's geoms: thin (a cylinder of half-thickness 0), cylinder, ellipsoid */
@@ -105,6 +105,10 @@ static void differences(const traj *a, const traj *b, double *th, double *path) 
  * 8.4e-7 m to the validity window at 0.257 s; limits 3x */
 #define SMALL_C_SIMBODY_TH 2.5e-6
 #define SMALL_C_SIMBODY_P 2.5e-6
+/* DART (the probe's choice: its Dantzig solver holds the tiny friction row
+ * PGS does not): measured theta 2.5e-4 rad / contact 1.4e-4 m; limits 3x */
+#define SMALL_C_DART_TH 7.5e-4
+#define SMALL_C_DART_P 4.3e-4
 
 typedef struct limit {
   const char *engine, *scenario;
@@ -120,6 +124,8 @@ typedef struct limit {
  *           the thin disk, at the model's step)
  *   simbody: upright 2.0e-9 / 3.0e-10, circle 4.4e-14 / 9.5e-13 (held to rounding), fall
  *           2.8e-8 / 4.7e-13 (rk3 at 1e-3 s, the step the scene gives)
+ *   dart:   upright 1.3e-6 / 1.9e-6, circle 3.7e-4 / 2.9e-3, fall 9.0e-5 / 7.9e-7 (the thin
+ *           disk, ODE's collider, at the probe's solver and step)
  * limits: about 3x the measurement. */
 static const limit LIMITS[] = {
     {"mujoco", "upright", 2e-6, 4e-6}, {"mujoco", "circle", 5e-4, 1.6e-2},
@@ -128,6 +134,8 @@ static const limit LIMITS[] = {
     {"bullet", "upright", 4e-7, 2e-6}, {"bullet", "circle", 6e-4, 4.5e-3},
     {"bullet", "fall", 3e-4, 2e-6},    {"simbody", "upright", 6e-9, 1e-9},
     {"simbody", "circle", 1.5e-13, 3e-12}, {"simbody", "fall", 1e-7, 1.5e-12},
+    {"dart", "upright", 4e-6, 6e-6},   {"dart", "circle", 1.1e-3, 9e-3},
+    {"dart", "fall", 2.7e-4, 2.4e-6},
 };
 
 static void check_accuracy(const dv_engine_type *e) {
@@ -189,7 +197,7 @@ static void check_small_c(const dv_engine_type *e) {
    * Simbody's constraints end there too, on its step grid (1e-3 s, within the
    * sample the reference ends at: the same number of samples) */
   const int mj = !strcmp(e->name, "mujoco"), bt = !strcmp(e->name, "bullet");
-  const int sb = !strcmp(e->name, "simbody");
+  const int sb = !strcmp(e->name, "simbody"), dt = !strcmp(e->name, "dart");
   if (sb)
     CHECK(a.status == DV_EVENT && a.stats.outcome == DV_OUTCOME_EVENT && a.n == b.n && b.n > 20 &&
               strstr(a.stats.detail, "friction") && fabs(a.s[a.n - 1].t - b.s[b.n - 1].t) <= 1e-3,
@@ -203,10 +211,12 @@ static void check_small_c(const dv_engine_type *e) {
   const double lim_th = mj   ? SMALL_C_MUJOCO_TH
                         : bt ? SMALL_C_BULLET_TH
                         : sb ? SMALL_C_SIMBODY_TH
+                        : dt ? SMALL_C_DART_TH
                              : SMALL_C_ODE_TH;
   const double lim_p = mj   ? SMALL_C_MUJOCO_P
                        : bt ? SMALL_C_BULLET_P
                        : sb ? SMALL_C_SIMBODY_P
+                       : dt ? SMALL_C_DART_P
                             : SMALL_C_ODE_P;
   CHECK(th <= lim_th && path <= lim_p, "%s: C = 1e-6 m r^2: theta %.3g (limit %.3g), contact %.3g "
         "(limit %.3g)", e->name, th, lim_th, path, lim_p);
@@ -215,7 +225,7 @@ static void check_small_c(const dv_engine_type *e) {
 int main(void) {
   gsl_set_error_handler_off();
   const dv_engine_type *contact[] = {&dv_engine_mujoco, &dv_engine_ode, &dv_engine_bullet,
-                                     &dv_engine_simbody};
+                                     &dv_engine_dart, &dv_engine_simbody};
   for (size_t i = 0; i < sizeof contact / sizeof contact[0]; i++) {
     check_round_trip(contact[i]);
     check_accuracy(contact[i]);

@@ -35,6 +35,7 @@ static const char *const BASE[] = {
     "engines.mujoco.integrator=rk4", "engines.ode.timestep=1e-4",
     "engines.bullet.timestep=1e-4",  "engines.bullet.body=multibody",
     "engines.simbody.timestep=1e-3", "engines.simbody.integrator=rk3",
+    "engines.dart.timestep=1e-4",    "engines.dart.lcp=pgs",
 };
 #define NBASE (sizeof BASE / sizeof BASE[0])
 
@@ -95,6 +96,15 @@ static const reach TABLE[] = {
     {"simbody", "geom", "thin", NULL, SAME,
      "the thin disk is the only body the constraints hold (their contact point is its rim "
      "point): given, it is the default"},
+    {"dart", "timestep", "5e-5", NULL, DIFFERS, NULL},
+    {"dart", "lcp", "dantzig", NULL, DIFFERS, NULL},
+    {"dart", "detector", "bullet", NULL, DIFFERS, NULL},
+    {"dart", "friction", "0.05", NULL, MORE_SLIP, NULL},
+    {"dart", "erp", "0.01", NULL, DIFFERS, NULL},
+    {"dart", "erv", "1e-6", NULL, DIFFERS, NULL},
+    {"dart", "cfm", "1e-3", NULL, DIFFERS, NULL},
+    {"dart", "geom", "thin", NULL, SAME,
+     "the thin disk is the DART engine's only shape: given, it is the default"},
 };
 #define NTABLE (sizeof TABLE / sizeof TABLE[0])
 
