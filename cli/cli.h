@@ -30,11 +30,15 @@ int dv_cli_error(const char *command, const char *fmt, ...) __attribute__((forma
 int dv_cli_unknown_engine(const char *command, const char *name);
 
 /* engines from "mujoco,ode"; NULL or "": every contact engine (NULL-terminated,
- * at most DV_MAX_ENGINES) */
+ * at most DV_MAX_ENGINES); loads then probe the settings of these only */
 struct dv_engine_type;
 struct dv_error;
 int dv_cli_engine_list(const char *list, const struct dv_engine_type **engines,
                        struct dv_error *err);
+
+/* the one engine a command runs (NULL: unknown, a no-op): loads then probe its
+ * settings only */
+void dv_cli_probe_only(const struct dv_engine_type *engine);
 
 /* load path with sets (--set) applied, as dv_engine_load_scenario; a line on
  * stderr for each engine whose check replaced a setting the file or --set gave */

@@ -76,6 +76,11 @@ int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_erro
   return DV_OK;
 }
 
+void dv_cli_probe_only(const dv_engine_type *engine) {
+  const dv_engine_type *const run[] = {engine, NULL};
+  if (engine) dv_engine_choose_only(run);
+}
+
 int main(int argc, char **argv) {
   static const struct {
     const char *name;

@@ -92,6 +92,7 @@ int dv_cli_attribute(int argc, char **argv) {
   dv_attribution at;
   dv_scenario sc; /* read once: every probe varies it in memory */
   dv_error err = {{0}};
+  if (engine) dv_cli_probe_only(dv_engine_find(engine)); /* probe the engine run only */
   if (!engine)
     code = dv_cli_usage_error("attribute", "no --engine given");
   else if (!dv_engine_find(engine))

@@ -82,6 +82,7 @@ int dv_cli_best(int argc, char **argv) {
   dv_search *s = calloc(1, sizeof *s);
   dv_scenario *sc = malloc(sizeof *sc); /* read once: every probe varies it in memory */
   dv_error err = {{0}};
+  if (engine) dv_cli_probe_only(dv_engine_find(engine)); /* probe the engine run only */
   if (!engine)
     code = dv_cli_usage_error("best", "no --engine given");
   else if (!dv_engine_find(engine))

@@ -5,7 +5,6 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "dv_engine.h"
-#include "engine_choose.h"
 #include "run_meta.h"
 #include "io_file.h"
 #include "io_lock.h"
@@ -39,8 +38,7 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
   if (!engine_name) return dv_cli_usage_error("simulate", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_cli_unknown_engine("simulate", engine_name);
-  const dv_engine_type *const run[] = {engine, NULL};
-  dv_engine_choose_only(run); /* probe only the engine run */
+  dv_cli_probe_only(engine);
   char meta_path[1100];
   snprintf(meta_path, sizeof meta_path, "%s.json", out_path);
   const char *const outputs[] = {out_path, forces_path, meta_path};

@@ -122,6 +122,7 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
   if (!engine_name) return dv_cli_usage_error("sweep", "no --engine given");
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_cli_unknown_engine("sweep", engine_name);
+  dv_cli_probe_only(engine);
   if (!specs->n) return dv_cli_usage_error("sweep", "no --vary given");
   if (specs->n > DV_SWEEP_MAX_VARY)
     return dv_cli_usage_error("sweep", "at most %d --vary options", DV_SWEEP_MAX_VARY);
