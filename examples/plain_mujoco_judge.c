@@ -215,7 +215,8 @@ static void run_initial_qpos(const diskval_state *y, double r, double h, double 
     R[3 * i + 1] = -ss * t[i] + cs * d[i];
     R[3 * i + 2] = n[i];
   }
-  for (int i = 0; i < 3; i++) w[i] = y->phi_dot * (i == 2) - y->theta_dot * t[i] + y->psi_dot * n[i];
+  for (int i = 0; i < 3; i++)
+    w[i] = y->phi_dot * (i == 2) - y->theta_dot * t[i] + y->psi_dot * n[i];
   const double nz = R[8], sn = sqrt(fmax(0.0, 1.0 - nz * nz)), sg = (nz > 0.0) - (nz < 0.0);
   for (int i = 0; i < 3; i++) {
     const double di = (sn > 0.0) ? (nz * R[3 * i + 2] - (i == 2)) / sn : 0.0;
@@ -243,10 +244,14 @@ int main(int argc, char **argv) {
   const char *run_path = NULL, *pose_path = NULL;
   double dt_out = 0.01;
   for (int i = 2; i + 1 < argc; i += 2) {
-    if (!strcmp(argv[i], "--run")) run_path = argv[i + 1];
-    else if (!strcmp(argv[i], "--pose")) pose_path = argv[i + 1];
-    else if (!strcmp(argv[i], "--dt")) dt_out = atof(argv[i + 1]);
-    else argc = 0;
+    if (!strcmp(argv[i], "--run"))
+      run_path = argv[i + 1];
+    else if (!strcmp(argv[i], "--pose"))
+      pose_path = argv[i + 1];
+    else if (!strcmp(argv[i], "--dt"))
+      dt_out = atof(argv[i + 1]);
+    else
+      argc = 0;
   }
   if (argc < 2 || argc % 2 || !(dt_out > 0.0))
     return fprintf(stderr, "usage: %s SCENARIO.ini [--run RUN.csv.json] [--pose OUT.csv --dt H]\n",
@@ -273,7 +278,8 @@ int main(int argc, char **argv) {
   mjData *d = m ? mj_makeData(m) : NULL;
   FILE *pose = pose_path && d ? fopen(pose_path, "w") : NULL;
   diskval_trajectory *tr = NULL;
-  int status = m && d && (pose || !pose_path) ? diskval_trajectory_new(sc, "plain_mujoco", &tr, &err) : -3;
+  int status =
+      m && d && (pose || !pose_path) ? diskval_trajectory_new(sc, "plain_mujoco", &tr, &err) : -3;
   if (!status && run_path) {
     run_initial_qpos(&y0, disk.radius, h, d->qpos, d->qvel);
     mj_forward(m, d); /* as diskval's engine does after setting the state */

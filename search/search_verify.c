@@ -20,8 +20,7 @@ static double difference_ratio(double r1, double r2, double p) {
 }
 
 /* Richardson's e(0) from errors a, b, c at steps ha > hb > hc; its order in *p */
-static double richardson(double a, double b, double c, double ha, double hb, double hc,
-                         double *p) {
+static double richardson(double a, double b, double c, double ha, double hb, double hc, double *p) {
   const double d1 = a - b, d2 = b - c, r1 = ha / hb, r2 = hb / hc;
   if (!(d1 > 0.0 && d2 > 0.0)) {
     *p = NAN;
@@ -45,8 +44,7 @@ static double richardson(double a, double b, double c, double ha, double hb, dou
   return *p > 0.2 ? c - d2 / (pow(r2, *p) - 1.0) : NAN;
 }
 
-void dv_search_convergence_judge(const double *h, const double *e, int n,
-                                 dv_convergence_fit *fit) {
+void dv_search_convergence_judge(const double *h, const double *e, int n, dv_convergence_fit *fit) {
   const int z = n - 1;
   const int flat = fabs(e[0] - e[z]) <= DV_VERIFY_FLAT * e[0];
   double p, q = NAN;

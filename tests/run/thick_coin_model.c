@@ -208,8 +208,9 @@ int main(int argc, char **argv) {
       gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-13, 1e-13);
   FILE *out = fopen(argv[3], "w");
   if (!out || !drv) return fprintf(stderr, "cannot write %s\n", argv[3]), 2;
-  fprintf(out, "# the rolling cylinder, Newton-Euler in the body frame with the contact force as "
-               "multiplier (tests/run/thick_coin_model.c)\n");
+  fprintf(out,
+          "# the rolling cylinder, Newton-Euler in the body frame with the contact force as "
+          "multiplier (tests/run/thick_coin_model.c)\n");
   fprintf(out, "t,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n");
   double e0, slip, height, e_drift = 0, slip_max = 0, height_max = 0, qnorm_max = 0, t = 0;
   measure(&k, y, &e0, &slip, &height);
@@ -228,7 +229,8 @@ int main(int argc, char **argv) {
     for (int j = 0; j < 4; j++) q[j] = y[6 + j] / qn;
     rotation(q, R);
     mul(R, y + 10, w_world);
-    fprintf(out, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+    fprintf(out,
+            "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
             ti, y[0], y[1], y[2], q[0], q[1], q[2], q[3], y[3], y[4], y[5], w_world[0], w_world[1],
             w_world[2]);
     if (ti >= duration) break;
@@ -236,8 +238,9 @@ int main(int argc, char **argv) {
   gsl_odeiv2_driver_free(drv);
   if (fclose(out) || status != GSL_SUCCESS)
     return fprintf(stderr, "integration failed at t = %g s\n", t), 2;
-  printf("energy drift %.3g (relative), no-slip residual %.3g m/s, corner height %.3g m, "
-         "quaternion norm %.3g\n",
-         e_drift, slip_max, height_max, qnorm_max);
+  printf(
+      "energy drift %.3g (relative), no-slip residual %.3g m/s, corner height %.3g m, "
+      "quaternion norm %.3g\n",
+      e_drift, slip_max, height_max, qnorm_max);
   return e_drift <= 1e-10 && slip_max <= 1e-10 && height_max <= 1e-10 ? 0 : 1;
 }
