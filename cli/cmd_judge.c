@@ -27,10 +27,11 @@ static const char HELP[] =
     "(t,theta[,phi,psi,x,y][,contact_x,contact_y][,theta_dot,phi_dot,psi_dot][,energy]) or the\n"
     "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
     "--name: each trajectory's name in the report (default: its file name without extension).\n"
-    "--step H1,H2,H3,H4: the time step of each of 4 trajectories of one engine, each half the\n"
-    "one before: their theta errors give the order and the extrapolated discrepancy, as verify\n"
-    "does (exit 1 unless it converges to the reference). Without --step: the files' own\n"
-    "\"# dt = H\" comment lines, when all four give one.\n"
+    "--step H1,H2,H3[,...]: the time step of each of 3 to 8 trajectories of one engine, each\n"
+    "smaller than the one before (halving, as verify refines, or any ratio of at least 1.1):\n"
+    "their theta errors give the order and the extrapolated discrepancy, as verify does (exit 1\n"
+    "unless it converges to the reference). Without --step: the files' own \"# dt = H\" comment\n"
+    "lines, when 3 or more files all give one.\n"
     "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
     "(a bad file: one line naming its file, line and column) or error.\n";
 
@@ -50,7 +51,8 @@ static int check_name(const char *name, dv_error *err) {
   return DV_OK;
 }
 
-/* --step: one step a trajectory, DV_VERIFY_LEVELS of them, each half the one before */
+/* --step: one step a trajectory, DV_CONVERGE_MIN_LEVELS..MAX_LEVELS of them,
+ * each smaller than the one before by a ratio of at least DV_CONVERGE_MIN_RATIO */
 static int parse_steps(const char *list, size_t n, double *steps, dv_error *err) {
   char buf[512];
   snprintf(buf, sizeof buf, "%s", list);
@@ -60,31 +62,35 @@ static int parse_steps(const char *list, size_t n, double *steps, dv_error *err)
     const double h = strtod(tok, &end);
     if (*end || end == tok || !(h > 0.0) || !isfinite(h))
       return dv_fail(err, DV_EINPUT, "--step: '%.40s' is not a positive number", tok);
-    if (k < DV_VERIFY_LEVELS) steps[k] = h;
-    /* Richardson extrapolation over halved steps (search_verify.h) */
-    if (k && k < DV_VERIFY_LEVELS && fabs(steps[k - 1] / h - 2.0) > 0.02)
-      return dv_fail(err, DV_EINPUT, "--step: %g is not half of %g (the steps must halve)", h,
-                     steps[k - 1]);
+    if (k < DV_CONVERGE_MAX_LEVELS) steps[k] = h;
+    /* Richardson extrapolation over refined steps (search_verify.h): steps
+     * closer than that ratio make the differences of their errors noise */
+    if (k && k < DV_CONVERGE_MAX_LEVELS && !(steps[k - 1] / h >= DV_CONVERGE_MIN_RATIO))
+      return dv_fail(err, DV_EINPUT,
+                     "--step: %g is not smaller than %g by a ratio of at least %g (the steps "
+                     "must be refined, finest last)",
+                     h, steps[k - 1], DV_CONVERGE_MIN_RATIO);
   }
-  if (k != DV_VERIFY_LEVELS || n != DV_VERIFY_LEVELS)
-    return dv_fail(err, DV_EINPUT, "--step gives %zu steps for %zu trajectories: %d of each needed",
-                   k, n, DV_VERIFY_LEVELS);
+  if (k != n || k < DV_CONVERGE_MIN_LEVELS || k > DV_CONVERGE_MAX_LEVELS)
+    return dv_fail(err, DV_EINPUT,
+                   "--step gives %zu steps for %zu trajectories: one each, %d to %d of them", k, n,
+                   DV_CONVERGE_MIN_LEVELS, DV_CONVERGE_MAX_LEVELS);
   return DV_OK;
 }
 
 /* the convergence of the trajectories' theta errors over their steps, as
  * verify prints it; 1 unless it converges to the reference */
-static int print_convergence(const double *steps, const double *errors) {
-  dv_verification v;
-  memset(&v, 0, sizeof v);
-  for (int i = 0; i < DV_VERIFY_LEVELS; i++) v.step[i] = steps[i], v.error[i] = errors[i];
-  dv_search_verify_judge(&v);
+static int print_convergence(const double *steps, const double *errors, size_t n) {
+  dv_convergence_fit v;
+  dv_search_convergence_judge(steps, errors, (int)n, &v);
   printf("convergence:");
-  for (int i = 0; i < DV_VERIFY_LEVELS; i++) printf(" %.3e (dt %.3g)", v.error[i], v.step[i]);
+  for (size_t i = 0; i < n; i++) printf(" %.3e (dt %.3g)", errors[i], steps[i]);
   printf("\n  order %s", isnan(v.order) ? "none (the errors do not fall)" : "");
   if (!isnan(v.order)) printf("%.2f", v.order);
   printf("; extrapolated discrepancy %.3e rad (floor %g", v.extrapolated, DV_VERIFY_FLOOR);
-  if (v.uncertainty > 0.0) printf(", uncertainty %.2e", v.uncertainty);
+  if (v.uncertainty > 0.0)
+    printf(", uncertainty %.2e%s", v.uncertainty,
+           n == DV_CONVERGE_MIN_LEVELS ? " (grid convergence index, 3 levels)" : "");
   printf("): %s%s\n", dv_search_convergence_name(v.verdict),
          v.verdict == DV_CONVERGES_ELSEWHERE
              ? " (no cause: recorded trajectories cannot be re-run with their knobs turned)"
@@ -140,7 +146,7 @@ int dv_cli_judge(int argc, char **argv) {
   dv_trajfile files[DV_MAX_ENGINES];
   dv_replay replays[DV_MAX_ENGINES];
   size_t nread = 0;
-  double steps[DV_VERIFY_LEVELS], errors[DV_MAX_ENGINES];
+  double steps[DV_CONVERGE_MAX_LEVELS], errors[DV_MAX_ENGINES];
   dv_scenario sc;
   dv_error err = {{0}};
   int code = DV_EXIT_OK, lock = -1;
@@ -161,8 +167,8 @@ int dv_cli_judge(int argc, char **argv) {
     else
       dv_run_replay_init(&replays[nread++], &files[i], names[i]);
   }
-  /* no --step: the files' own "# dt = H" lines, when all four give one */
-  int file_steps = !step_list && n == DV_VERIFY_LEVELS && code == DV_EXIT_OK;
+  /* no --step: the files' own "# dt = H" lines, when 3 or more files all give one */
+  int file_steps = !step_list && n >= DV_CONVERGE_MIN_LEVELS && code == DV_EXIT_OK;
   for (size_t i = 0; file_steps && i < n; i++) file_steps = !isnan(files[i].step);
   if (file_steps) {
     char list_buf[200] = "";
@@ -184,7 +190,7 @@ int dv_cli_judge(int argc, char **argv) {
     if (code == DV_SUITE_ERROR) {
       code = dv_cli_error("judge", "%s", err.msg);
     } else {
-      if ((step_list || file_steps) && print_convergence(steps, errors)) code = DV_EXIT_FAIL;
+      if ((step_list || file_steps) && print_convergence(steps, errors, n)) code = DV_EXIT_FAIL;
       printf("report: %s/%s/report.md\n", out, sc.name);
     }
   }

@@ -189,6 +189,13 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   char knobs[256];
   dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
   cJSON_AddStringToObject(o, "ran_with", knobs);
+  const dv_replay *rp = dv_run_replay_of(r->engine);
+  if (rp) { /* a recorded trajectory: what interpolating between its rows may add */
+    cJSON *in = cJSON_AddObjectToObject(o, "interpolation");
+    cJSON_AddItemToObject(in, "theta", dv_io_json_number(rp->interp_theta));
+    cJSON_AddItemToObject(in, "path", dv_io_json_number(rp->interp_path));
+    cJSON_AddNumberToObject(in, "refused_above", DV_JUDGE_INTERP_SHARE);
+  }
   return o;
 }
 

@@ -13,28 +13,68 @@ const char *dv_search_convergence_name(dv_convergence c) {
   return (unsigned)c < 3 ? names[c] : "unknown";
 }
 
-/* Richardson's e(0) from errors a, b, c at steps halving each time; its order in *p */
-static double richardson(double a, double b, double c, double *p) {
-  const double d1 = a - b, d2 = b - c;
-  *p = d1 > 0.0 && d2 > 0.0 ? log2(d1 / d2) : NAN;
-  return *p > 0.2 ? c - d2 / (pow(2.0, *p) - 1.0) : NAN;
+/* r2^p (r1^p - 1) / (r2^p - 1): the ratio of successive error differences
+ * that order p gives at step ratios r1 = ha/hb, r2 = hb/hc */
+static double difference_ratio(double r1, double r2, double p) {
+  return pow(r2, p) * (pow(r1, p) - 1.0) / (pow(r2, p) - 1.0);
+}
+
+/* Richardson's e(0) from errors a, b, c at steps ha > hb > hc; its order in *p */
+static double richardson(double a, double b, double c, double ha, double hb, double hc, double *p) {
+  const double d1 = a - b, d2 = b - c, r1 = ha / hb, r2 = hb / hc;
+  if (!(d1 > 0.0 && d2 > 0.0)) {
+    *p = NAN;
+  } else if (r1 == 2.0 && r2 == 2.0) { /* verify's levels */
+    *p = log2(d1 / d2);
+  } else if (fabs(r1 - r2) <= 1e-9 * r2) {
+    *p = log(d1 / d2) / log(r2);
+  } else { /* the ratio grows with p: bisect on [0.2, 30], else no order above 0.2 */
+    double lo = 0.2, hi = 30.0;
+    const double want = d1 / d2;
+    if (difference_ratio(r1, r2, lo) > want || difference_ratio(r1, r2, hi) < want) {
+      *p = NAN;
+    } else {
+      for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; i++) {
+        const double mid = 0.5 * (lo + hi);
+        *(difference_ratio(r1, r2, mid) < want ? &lo : &hi) = mid;
+      }
+      *p = 0.5 * (lo + hi);
+    }
+  }
+  return *p > 0.2 ? c - d2 / (pow(r2, *p) - 1.0) : NAN;
+}
+
+void dv_search_convergence_judge(const double *h, const double *e, int n, dv_convergence_fit *fit) {
+  const int z = n - 1;
+  const int flat = fabs(e[0] - e[z]) <= DV_VERIFY_FLAT * e[0];
+  double p, q = NAN;
+  const double late = richardson(e[z - 2], e[z - 1], e[z], h[z - 2], h[z - 1], h[z], &p);
+  const double early =
+      n >= 4 ? richardson(e[z - 3], e[z - 2], e[z - 1], h[z - 3], h[z - 2], h[z - 1], &q) : NAN;
+  fit->order = !flat && p > 0.2 ? p : NAN;
+  fit->extrapolated = isnan(fit->order) ? e[z] : late;
+  fit->uncertainty = 0.0;
+  const double below = fit->extrapolated < 0.0 ? -fit->extrapolated : 0.0;
+  if (isnan(fit->order)) {
+  } else if (n >= 4) {
+    if (fabs(p - q) <= DV_VERIFY_ORDER_SPREAD && isfinite(early))
+      fit->uncertainty = fmax(fabs(late - early), below);
+  } else {
+    fit->uncertainty = fmax(DV_CONVERGE_SAFETY * fabs(e[z] - late), below);
+  }
+  if (e[z] <= DV_VERIFY_FLOOR || fabs(fit->extrapolated) <= fmax(DV_VERIFY_FLOOR, fit->uncertainty))
+    fit->verdict = DV_CONVERGES;
+  else /* flat: the step no longer matters, what is left is the model's */
+    fit->verdict = flat || !isnan(fit->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
 }
 
 void dv_search_verify_judge(dv_verification *v) {
-  const double *e = v->error;
-  const int flat = fabs(e[0] - e[3]) <= DV_VERIFY_FLAT * e[0];
-  double p, q;
-  const double late = richardson(e[1], e[2], e[3], &p), early = richardson(e[0], e[1], e[2], &q);
-  v->order = !flat && p > 0.2 ? p : NAN;
-  v->extrapolated = isnan(v->order) ? e[3] : late;
-  v->uncertainty = 0.0;
-  if (!isnan(v->order) && fabs(p - q) <= DV_VERIFY_ORDER_SPREAD && isfinite(early))
-    v->uncertainty = fmax(fabs(late - early), v->extrapolated < 0.0 ? -v->extrapolated : 0.0);
-  if (e[3] <= DV_VERIFY_FLOOR ||
-      fabs(v->extrapolated) <= fmax(DV_VERIFY_FLOOR, v->uncertainty))
-    v->verdict = DV_CONVERGES;
-  else /* flat: the step no longer matters, what is left is the model's */
-    v->verdict = flat || !isnan(v->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
+  dv_convergence_fit fit;
+  dv_search_convergence_judge(v->step, v->error, DV_VERIFY_LEVELS, &fit);
+  v->order = fit.order;
+  v->extrapolated = fit.extrapolated;
+  v->uncertainty = fit.uncertainty;
+  v->verdict = fit.verdict;
 }
 
 int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verification *out,

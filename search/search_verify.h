@@ -52,8 +52,32 @@ typedef struct dv_verification {
 } dv_verification;
 
 /* order, extrapolation, uncertainty and verdict (before attribution) from
- * v->step and v->error */
+ * v->step and v->error: dv_search_convergence_judge over verify's 4 levels */
 void dv_search_verify_judge(dv_verification *v);
+
+#define DV_CONVERGE_MIN_LEVELS 3
+#define DV_CONVERGE_MAX_LEVELS 8
+#define DV_CONVERGE_MIN_RATIO 1.1 /* each step at least this much larger than the next */
+#define DV_CONVERGE_SAFETY 1.25   /* Roache's grid-convergence-index factor, three levels */
+
+/* The same judging over n errors (DV_CONVERGE_MIN_LEVELS..MAX_LEVELS) at
+ * decreasing steps of any ratios (halving is verify's): the order p and e(0)
+ * from the last three levels (e(h) = e(0) + K h^p through them: p from the
+ * ratio of successive differences, solved by bisection when the two step
+ * ratios differ); the uncertainty, with 4 or more levels, from the triple
+ * before the last as above; with 3 there is no second triple, and it is
+ * Roache's grid convergence index, DV_CONVERGE_SAFETY |e(finest) - e(0)|
+ * (the band an order observed from three levels puts on the finest error's
+ * extrapolation). The flat test compares the first and the last error.
+ * Over verify's 4 halving levels this is dv_search_verify_judge, bit for bit. */
+typedef struct dv_convergence_fit {
+  double order;        /* NAN when the errors do not fall */
+  double extrapolated; /* e(0) */
+  double uncertainty;  /* 0: not estimated */
+  dv_convergence verdict;
+} dv_convergence_fit;
+void dv_search_convergence_judge(const double *step, const double *error, int n,
+                                 dv_convergence_fit *fit);
 
 /* refine engine on the scenario and judge its convergence */
 int dv_search_verify(const struct dv_scenario *sc, const char *engine, dv_verification *out,

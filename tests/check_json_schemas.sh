@@ -6,6 +6,7 @@
 #   report.json   compare on a thin scene, a thick one and a coin that lies
 #                 down (its event judged), a suite's scenarios, and the error
 #                 report of a scenario that timed out, and judge of a recorded MuJoCo run
+#                 (its entry with the interpolation's estimated error)
 #   summary.json  a suite of two scenes, and a suite whose scenario timed out
 #   run JSON      simulate with each engine: reduced, matched, mujoco, ode, bullet, dart, simbody
 #   verify.json   suite --verify: a case that ran and one skipped
@@ -152,7 +153,19 @@ for broken in (margin_renamed, pass_dropped, metric_as_string, outcome_unknown, 
     broken(report)
     (pathlib.Path(sys.argv[2]) / f"{broken.__name__}.json").write_text(json.dumps(report))
 EOF
-check '[ "$(ls "$work/broken" | wc -l)" -eq 7 ]' "the broken copies were not all written"
+# a judged file's entry must carry its interpolation's estimated error
+python3 - "$work/judged/short_circle/report.json" "$work/broken" <<'EOF'
+import json, pathlib, sys
+
+def interpolation_dropped(r): del r["engines"]["run_mujoco"]["interpolation"]
+def interpolation_theta_dropped(r): del r["engines"]["run_mujoco"]["interpolation"]["theta"]
+
+for broken in (interpolation_dropped, interpolation_theta_dropped):
+    report = json.loads(pathlib.Path(sys.argv[1]).read_text())
+    broken(report)
+    (pathlib.Path(sys.argv[2]) / f"{broken.__name__}.json").write_text(json.dumps(report))
+EOF
+check '[ "$(ls "$work/broken" | wc -l)" -eq 9 ]' "the broken copies were not all written"
 check 'validate report.schema.json invalid "$work"/broken/*.json' \
   "report.schema.json accepts a broken report.json"
 exit $fail

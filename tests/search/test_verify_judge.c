@@ -8,7 +8,12 @@
  *   - the issue's clean sequence 0.248, 0.127, 0.064, 0.032 (order 0.99,
  *     e(0) -6e-5 with the earlier levels giving -4.5e-3): converges, the
  *     uncertainty covering e(0);
- *   - errors that grow: does not converge; flat above the floor: elsewhere. */
+ *   - errors that grow: does not converge; flat above the floor: elsewhere;
+ *   - three levels (judge --step over 3 files) at ratios 2, 3 and unequal
+ *     (1e-3, 4e-4, 1e-4), orders 1..4: e(0) = L and the order p to 1e-9, the
+ *     uncertainty 1.25 |e(finest) - L| (exact data: measured worst 8.9e-16 in
+ *     the order, 5.2e-18 in e(0), rounding and the bisection's 1e-15; re-measure
+ *     with DV_TEST_MEASURE=1 build/tests/test_verify_judge). */
 #include <math.h>
 #include <string.h>
 
@@ -69,5 +74,18 @@ int main(void) {
   v = judge_errors(flat);
   CHECK(v.verdict == DV_CONVERGES_ELSEWHERE, "flat errors: %s",
         dv_search_convergence_name(v.verdict));
+  const double ratios[][3] = {{1e-3, 5e-4, 2.5e-4}, {9e-3, 3e-3, 1e-3}, {1e-3, 4e-4, 1e-4}};
+  for (int k = 0; k < 3; k++) {
+    for (double p = 1.0; p <= 4.0; p += 1.0) {
+      const double L = 0.002, *h = ratios[k], c = 0.1 / pow(h[0], p); /* e(h0) - L = 0.1 */
+      const double e[3] = {L + c * pow(h[0], p), L + c * pow(h[1], p), L + c * pow(h[2], p)};
+      dv_convergence_fit f;
+      dv_search_convergence_judge(h, e, 3, &f);
+      CHECK_NEAR(f.order, p, 1e-9, "3 levels: order");
+      CHECK_NEAR(f.extrapolated, L, 1e-9 * L, "3 levels: e(0)");
+      CHECK_NEAR(f.uncertainty, 1.25 * c * pow(h[2], p), 1e-6 * c * pow(h[2], p),
+                 "3 levels: the grid convergence index");
+    }
+  }
   return TEST_RESULT();
 }
