@@ -40,12 +40,14 @@ summary() {
 cp "$data/short_circle.ini" fast.ini
 sed -e "s/^name = .*/name = slow/" -e "s/^duration = .*/duration = 1/" \
   "$sc/hard/long_horizon.ini" >slow.ini
-"$dv" suite fast.ini slow.ini --out out --jobs 2 --quiet >/dev/null 2>&1
+# MuJoCo alone: the interruption is the suite's, not an engine's (fast's failure is
+# attributed per engine: five engines under the sanitizers took over the 60 s wait)
+"$dv" suite fast.ini slow.ini --engines mujoco --out out --jobs 2 --quiet >/dev/null 2>&1
 check '[ "$(jq -r .pass out/summary.json)" = true ]' "first run: not a pass: $(cat out/summary.json)"
 # then fast fails a limit at once and slow takes 60 s (over 20 s of MuJoCo)
 printf '\n[tolerance]\ntheta_max_err = 1e-15\n' >>fast.ini
 sed -i "s/^duration = .*/duration = 60/" slow.ini
-"$dv" suite fast.ini slow.ini --out out --jobs 2 --quiet >stdout 2>stderr &
+"$dv" suite fast.ini slow.ini --engines mujoco --out out --jobs 2 --quiet >stdout 2>stderr &
 pid=$!
 # fast has ended: its report says fail and diskval has only slow's process left
 wait_for '[ "$(jq -r .pass out/short_circle/report.json 2>/dev/null)" = false ] &&
