@@ -53,12 +53,10 @@ extern "C" {
 #include "engine_choose.h"
 #include "engine_scene.h"
 #include "engine_shape.h"
+#include "engine_watch.h"
 }
 #include "bullet_contact.h"
 
-#define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
-#define AIR_TIME 0.05   /* and for longer than this, s */
-#define SUNK_DEPTH 0.05 /* diverged: lowest point this deep below the ground, in radii */
 #define BT_CHECK_STEPS 16
 #define TOUCH 1e-6 /* m: a manifold point this close counts as a contact */
 
@@ -191,10 +189,8 @@ struct bullet_engine {
   btMultiBody *mb;               /* BODY_MULTI */
   btMultiBodyLinkCollider *link; /* its base's collider */
   long k;                        /* steps since reset: time = k timestep */
-  long k_checked;                /* the step of the last full check */
+  dv_engine_watch watch;         /* its faults (engine_watch.h) */
   double prev_y[RED_NSTATE];     /* last canonical state, for unwrapping */
-  double e0, e_max;              /* energy at reset, runaway above, J */
-  double airborne;               /* s the lowest point has been off the ground */
   double theta_limit, cos_limit; /* lying down outside (limit, pi - limit) */
   int status;                    /* < 0 once the run failed; DV_EVENT once it ended */
   dv_engine_stats st;
@@ -273,12 +269,6 @@ void write_pose(bullet_engine *e, const dv_pose *p) {
   }
 }
 
-int pose_finite(const dv_pose *p) {
-  double sum = 0.0;
-  for (int i = 0; i < 3; i++) sum += p->pos[i] + p->vel[i] + p->omega[i];
-  for (int i = 0; i < 9; i++) sum += p->R[i];
-  return std::isfinite(sum);
-}
 
 /* contact points within TOUCH of the ground */
 int count_contacts(const bullet_engine *e) {
@@ -417,8 +407,7 @@ void *bullet_alloc(const dv_scenario *sc, dv_error *err) {
 int bullet_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   bullet_engine *e = static_cast<bullet_engine *>(p);
   memset(&e->st, 0, sizeof e->st);
-  e->k = e->k_checked = 0;
-  e->airborne = 0.0;
+  e->k = 0;
   e->status = DV_OK;
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
@@ -433,32 +422,20 @@ int bullet_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
     pairs->cleanProxyFromPairs(o->getBroadphaseHandle(), e->dispatcher);
   e->world->updateAabbs();
   read_pose(e, &pose);
-  e->e0 = dv_pose_energy(&e->disk, &pose);
-  e->e_max = e->e0 + 0.5 * std::fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
-  if (!pose_finite(&pose) || !std::isfinite(e->e0))
-    return failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
+  char why[160];
+  const dv_failure fault = dv_engine_watch_start(&e->watch, &e->disk, &pose, why, sizeof why);
+  if (fault) return failed(e, fault, err, "%s", why);
   return DV_OK;
 }
 
 /* the divergence and lost-contact checks over the steps since the last */
 int check_state(bullet_engine *e, dv_error *err) {
-  const double dt = e->set.timestep, t = e->k * dt;
   dv_pose p;
   read_pose(e, &p);
-  if (!pose_finite(&p)) return failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
-  const double energy = dv_pose_energy(&e->disk, &p);
-  if (!(energy <= e->e_max))
-    return failed(e, DV_FAILURE_ENERGY, err, "runaway energy at t = %g s: %g J > %g J (E0 = %g J)",
-                  t, energy, e->e_max, e->e0);
-  const double height = p.pos[2] + dv_geometry_contact_height(&e->geom, p.R);
-  if (height < -SUNK_DEPTH * e->disk.r)
-    return failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
-  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + (e->k - e->k_checked) * dt : 0.0;
-  if (e->airborne > AIR_TIME)
-    return failed(e, DV_FAILURE_LOST_CONTACT, err,
-                  "lowest point %g m above the ground for %g s at t = %g s", height, e->airborne, t);
-  e->k_checked = e->k;
-  return DV_OK;
+  char why[160];
+  const dv_failure fault = dv_engine_watch_check(&e->watch, &e->disk, &e->geom, &p, e->k,
+                                                 e->set.timestep, why, sizeof why);
+  return fault ? failed(e, fault, err, "%s", why) : DV_OK;
 }
 
 /* the body axis' z component: cos theta */
@@ -482,7 +459,7 @@ int step(bullet_engine *e, dv_error *err) {
     e->status = DV_EVENT;
     return DV_EVENT;
   }
-  return e->k - e->k_checked < BT_CHECK_STEPS ? DV_OK : check_state(e, err);
+  return e->k - e->watch.checked < BT_CHECK_STEPS ? DV_OK : check_state(e, err);
 }
 
 int bullet_advance(void *p, double t, dv_sample *out, dv_error *err) {
@@ -494,7 +471,7 @@ int bullet_advance(void *p, double t, dv_sample *out, dv_error *err) {
   int status = DV_OK;
   try {
     while (status == DV_OK && e->k * dt < t - 0.5 * dt) status = step(e, err);
-    if (status == DV_OK && e->k > e->k_checked) status = check_state(e, err);
+    if (status == DV_OK && e->k > e->watch.checked) status = check_state(e, err);
   } catch (const std::exception &ex) {
     return failed(e, DV_FAILURE_LIBRARY, err, "Bullet: %s", ex.what());
   }

@@ -79,6 +79,7 @@ extern "C" {
 #include "dv_reference.h"
 #include "engine_choose.h"
 #include "engine_scene.h"
+#include "engine_watch.h"
 }
 #include "dv_dart.h"
 
@@ -90,9 +91,6 @@ extern "C" {
 #endif
 #endif
 
-#define AIR_HEIGHT 0.01  /* lost contact: height above the ground, in radii */
-#define AIR_TIME 0.05    /* and for longer than this, s */
-#define SUNK_DEPTH 0.05  /* diverged: lowest point this deep below the ground, in radii */
 #define DART_CHECK_STEPS 16
 #define THIN_HEIGHT 1e-7 /* the thin disk's cylinder height, in radii */
 #define BULLET_LIBRARY "libdart-collision-bullet.so.6.12"
@@ -219,10 +217,8 @@ struct dart_engine {
   SkeletonPtr skel, ground;
   BodyNode *body;
   long k;                        /* steps since reset: time = k timestep */
-  long k_checked;                /* the step of the last full check */
+  dv_engine_watch watch;         /* its faults (engine_watch.h) */
   double prev_y[RED_NSTATE];     /* last canonical state, for unwrapping */
-  double e0, e_max;              /* energy at reset, runaway above, J */
-  double airborne;               /* s the lowest point has been off the ground */
   double theta_limit, cos_limit; /* lying down outside (limit, pi - limit) */
   int status;                    /* < 0 once the run failed; DV_EVENT once it ended */
   dv_engine_stats st;
@@ -273,12 +269,6 @@ void write_pose(dart_engine *e, const dv_pose *p) {
   e->skel->clearInternalForces();
 }
 
-int pose_finite(const dv_pose *p) {
-  double sum = 0.0;
-  for (int i = 0; i < 3; i++) sum += p->pos[i] + p->vel[i] + p->omega[i];
-  for (int i = 0; i < 9; i++) sum += p->R[i];
-  return std::isfinite(sum);
-}
 
 /* DART's Bullet collision detector, from its library opened in a scope of its
  * own (the header's comment); NULL and why when it cannot be */
@@ -395,8 +385,7 @@ void *dart_alloc(const dv_scenario *sc, dv_error *err) {
 int dart_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   dart_engine *e = static_cast<dart_engine *>(p);
   memset(&e->st, 0, sizeof e->st);
-  e->k = e->k_checked = 0;
-  e->airborne = 0.0;
+  e->k = 0;
   e->status = DV_OK;
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
@@ -410,32 +399,20 @@ int dart_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   } catch (const std::exception &ex) {
     return failed(e, DV_FAILURE_LIBRARY, err, "DART: %s", ex.what());
   }
-  e->e0 = dv_pose_energy(&e->disk, &pose);
-  e->e_max = e->e0 + 0.5 * std::fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
-  if (!pose_finite(&pose) || !std::isfinite(e->e0))
-    return failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
+  char why[160];
+  const dv_failure fault = dv_engine_watch_start(&e->watch, &e->disk, &pose, why, sizeof why);
+  if (fault) return failed(e, fault, err, "%s", why);
   return DV_OK;
 }
 
 /* the divergence and lost-contact checks over the steps since the last */
 int check_state(dart_engine *e, dv_error *err) {
-  const double dt = e->set.timestep, t = e->k * dt;
   dv_pose p;
   read_pose(e, &p);
-  if (!pose_finite(&p)) return failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
-  const double energy = dv_pose_energy(&e->disk, &p);
-  if (!(energy <= e->e_max))
-    return failed(e, DV_FAILURE_ENERGY, err, "runaway energy at t = %g s: %g J > %g J (E0 = %g J)",
-                  t, energy, e->e_max, e->e0);
-  const double height = p.pos[2] + dv_geometry_contact_height(&e->geom, p.R);
-  if (height < -SUNK_DEPTH * e->disk.r)
-    return failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
-  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + (e->k - e->k_checked) * dt : 0.0;
-  if (e->airborne > AIR_TIME)
-    return failed(e, DV_FAILURE_LOST_CONTACT, err,
-                  "lowest point %g m above the ground for %g s at t = %g s", height, e->airborne, t);
-  e->k_checked = e->k;
-  return DV_OK;
+  char why[160];
+  const dv_failure fault = dv_engine_watch_check(&e->watch, &e->disk, &e->geom, &p, e->k,
+                                                 e->set.timestep, why, sizeof why);
+  return fault ? failed(e, fault, err, "%s", why) : DV_OK;
 }
 
 /* one step and its lying-down test (n.z = cos theta, as the references' event) */
@@ -453,7 +430,7 @@ int step(dart_engine *e, dv_error *err) {
     e->status = DV_EVENT;
     return DV_EVENT;
   }
-  return e->k - e->k_checked < DART_CHECK_STEPS ? DV_OK : check_state(e, err);
+  return e->k - e->watch.checked < DART_CHECK_STEPS ? DV_OK : check_state(e, err);
 }
 
 int dart_advance(void *p, double t, dv_sample *out, dv_error *err) {
@@ -468,7 +445,7 @@ int dart_advance(void *p, double t, dv_sample *out, dv_error *err) {
   try {
     apply_contact_parameters(e);
     while (status == DV_OK && e->k * dt < t - 0.5 * dt) status = step(e, err);
-    if (status == DV_OK && e->k > e->k_checked) status = check_state(e, err);
+    if (status == DV_OK && e->k > e->watch.checked) status = check_state(e, err);
     if (status < 0) return status;
     read_pose(e, &pose);
     contacts = static_cast<int>(e->world->getLastCollisionResult().getNumContacts());

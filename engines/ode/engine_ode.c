@@ -39,11 +39,9 @@
 #include "engine_ode_thin.h"
 #include "engine_scene.h"
 #include "engine_shape.h"
+#include "engine_watch.h"
 
 #define ODE_MAX_CONTACTS 4
-#define AIR_HEIGHT 0.01 /* lost contact: height above the ground, in radii */
-#define AIR_TIME 0.05   /* and for longer than this, s */
-#define SUNK_DEPTH 0.05 /* diverged: lowest point this deep below the ground, in radii */
 /* the full checks' share of a 1 us step falls from 4% (every step) to 0.3% */
 #define ODE_CHECK_STEPS 16
 
@@ -152,11 +150,8 @@ typedef struct ode_engine {
   dGeomID shape, plane; /* the thin disk or the cylinder; the ground */
   dJointGroupID group;
   long k;                    /* steps since reset: time = k timestep */
-  long k_checked;            /* the step of the last full check */
+  dv_engine_watch watch;         /* its faults (engine_watch.h) */
   double prev_y[RED_NSTATE]; /* last canonical state, for unwrapping */
-  double e0;                 /* energy at reset, J */
-  double e_max;              /* runaway above this energy, J */
-  double airborne;           /* s the lowest point has been off the ground */
   double theta_limit;        /* rad: the run ends at an event outside (limit, pi - limit) */
   double cos_limit;          /* cos(theta_limit), the per-step test of n.z */
   dContact contact;          /* every contact's surface, made once */
@@ -231,14 +226,6 @@ static int ode_failed(ode_engine *e, dv_failure failure, dv_error *err, const ch
   return dv_fail(err, DV_ENUMERIC, "%s: %s", dv_outcome_name(outcome), e->st.detail);
 }
 
-/* all 18 pose numbers are finite */
-static int ode_pose_finite(const dv_pose *p) {
-  double sum = 0.0;
-  for (int i = 0; i < 3; i++) sum += p->pos[i] + p->vel[i] + p->omega[i];
-  for (int i = 0; i < 9; i++) sum += p->R[i];
-  return isfinite(sum);
-}
-
 /* run fn under the error guard; an ODE error or debug message fails the run */
 static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
   jmp_buf here;
@@ -253,7 +240,7 @@ static int ode_guarded(ode_engine *e, ode_call fn, void *arg, dv_error *err) {
     e->broken = 1;
     dv_pose p;
     dv_ode_read_pose(e->body, &p);
-    status = ode_pose_finite(&p)
+    status = dv_pose_finite(&p)
                  ? ode_failed(e, DV_FAILURE_LIBRARY, err, "ODE error: %s", ode_message)
                  : ode_failed(e, DV_FAILURE_NAN, err, "non-finite state (ODE: %s)", ode_message);
   }
@@ -354,11 +341,10 @@ static int ode_place(ode_engine *e, void *arg, dv_error *err) {
   dBodySetForce(e->body, 0.0, 0.0, 0.0);
   dBodySetTorque(e->body, 0.0, 0.0, 0.0);
   dv_ode_read_pose(e->body, &p);
-  e->e0 = dv_pose_energy(&e->disk, &p);
-  e->e_max = e->e0 + 0.5 * fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   ode_collide(e, 0);
-  if (!ode_pose_finite(&p) || !isfinite(e->e0))
-    return ode_failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
+  char why[160];
+  const dv_failure fault = dv_engine_watch_start(&e->watch, &e->disk, &p, why, sizeof why);
+  if (fault) return ode_failed(e, fault, err, "%s", why);
   return DV_OK;
 }
 
@@ -367,8 +353,7 @@ static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   ode_engine *e = p;
   if (e->broken) return dv_fail(err, DV_ENUMERIC, "ODE failed earlier: %s", e->st.detail);
   memset(&e->st, 0, sizeof e->st);
-  e->k = e->k_checked = 0;
-  e->airborne = 0.0;
+  e->k = 0;
   e->status = DV_OK;
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
@@ -380,27 +365,12 @@ static int ode_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
 /* the divergence and lost-contact checks of the body's state, over the steps
  * since the last check */
 static int ode_check_state(ode_engine *e, dv_error *err) {
-  const double dt = e->set.timestep, t = e->k * dt;
   dv_pose p;
   dv_ode_read_pose(e->body, &p);
-  if (!ode_pose_finite(&p))
-    return ode_failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
-  const double energy = dv_pose_energy(&e->disk, &p);
-  const double limit = e->e_max;
-  if (!(energy <= limit))
-    return ode_failed(e, DV_FAILURE_ENERGY, err,
-                      "runaway energy at t = %g s: %g J > %g J (E0 = %g J)", t, energy, limit,
-                      e->e0);
-  const double height = p.pos[2] + dv_geometry_contact_height(&e->geom, p.R);
-  if (height < -SUNK_DEPTH * e->disk.r)
-    return ode_failed(e, DV_FAILURE_SANK, err, "sank %g m into the ground at t = %g s", -height, t);
-  e->airborne = height > AIR_HEIGHT * e->disk.r ? e->airborne + (e->k - e->k_checked) * dt : 0.0;
-  if (e->airborne > AIR_TIME)
-    return ode_failed(e, DV_FAILURE_LOST_CONTACT, err,
-                      "lowest point %g m above the ground for %g s at t = %g s", height,
-                      e->airborne, t);
-  e->k_checked = e->k;
-  return DV_OK;
+  char why[160];
+  const dv_failure fault = dv_engine_watch_check(&e->watch, &e->disk, &e->geom, &p, e->k,
+                                                 e->set.timestep, why, sizeof why);
+  return fault ? ode_failed(e, fault, err, "%s", why) : DV_OK;
 }
 
 /* one step and its lying-down test (n.z = cos theta, like the references'
@@ -425,7 +395,7 @@ static int ode_step(ode_engine *e, dv_error *err) {
     e->status = DV_EVENT;
     return DV_EVENT;
   }
-  return e->k - e->k_checked < ODE_CHECK_STEPS ? DV_OK : ode_check_state(e, err);
+  return e->k - e->watch.checked < ODE_CHECK_STEPS ? DV_OK : ode_check_state(e, err);
 }
 
 typedef struct ode_target {
@@ -439,7 +409,7 @@ static int ode_run_to(ode_engine *e, void *arg, dv_error *err) {
   const double dt = e->set.timestep;
   int status = DV_OK;
   while (status == DV_OK && e->k * dt < g->t - 0.5 * dt) status = ode_step(e, err);
-  if (status == DV_OK && e->k > e->k_checked) status = ode_check_state(e, err);
+  if (status == DV_OK && e->k > e->watch.checked) status = ode_check_state(e, err);
   if (status < 0) return status;
   dv_pose p;
   dv_ode_read_pose(e->body, &p);
