@@ -16,8 +16,9 @@
 
 #define DEPTH 1e-6 /* m */
 
-/* Measured with DV_TEST_MEASURE=1 over the grid: the point 3.2e-16 m from the
- * closed form, the distance 3.2e-17 m from -DEPTH (double precision) */
+/* Measured with DV_TEST_MEASURE=1 over the grid (864 poses): the point 2.8e-16 m
+ * from the closed form, the distance 2.9e-17 m from -DEPTH (double precision);
+ * a grid of 2760 poses gave 3.2e-16 and 3.2e-17 at 3x the time (59 s under ASan) */
 #define POINT_TOL 1e-12
 #define DEPTH_TOL 1e-12
 
@@ -47,10 +48,10 @@ int main(void) {
   const double r = 0.1, halves[] = {0.0, 0.002, 0.02};
   int poses = 0;
   for (size_t k = 0; k < sizeof halves / sizeof halves[0]; k++)
-    for (int i = 1; i < 24; i++) {
+    for (int i = 1; i < 24; i += 2) {
       const double theta = M_PI * i / 24.0 + 0.013; /* never exactly upright */
       for (int j = 0; j < 8; j++)
-        for (int l = 0; l < 5; l++) {
+        for (int l = 0; l < 3; l++) {
           const double y[RED_NSTATE] = {theta,     0, 0, 0, 2 * M_PI * j / 8 + 0.1,
                                         1.3 * l, 0.2 * j - 0.7, 0.3 * l - 0.5};
           check_pose(r, halves[k], y, -DEPTH);
