@@ -5,9 +5,9 @@
  *   - order 1 to L = 0.01 (above the floor): converges elsewhere, e(0) = L
  *     to 1e-12, no uncertainty (the two orders agree exactly);
  *   - order 2 to L = 0.003: e(0) = L to 1e-12, order 2;
- *   - the issue's clean sequence 0.248, 0.127, 0.064, 0.032 (order 0.99,
- *     e(0) -6e-5 with the earlier levels giving -4.5e-3): converges, the
- *     uncertainty covering e(0);
+ *   - the issue's clean sequence 0.248, 0.127, 0.064, 0.032 (printed: order
+ *     0.977, e(0) -1.03e-3, uncertainty 3.4e-3 from the earlier levels):
+ *     converges, the uncertainty covering e(0);
  *   - errors that grow: does not converge; flat above the floor: elsewhere;
  *   - three levels (judge --step over 3 files) at ratios 2, 3 and unequal
  *     (1e-3, 4e-4, 1e-4), orders 1..4: e(0) = L and the order p to 1e-9, the
