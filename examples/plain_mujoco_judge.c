@@ -32,7 +32,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* the quaternion (w, x, y, z) of R = Rz(phi) Ry(theta) Rz(psi - pi/2) */
 static void quaternion(double theta, double phi, double psi, double q[4]) {
@@ -67,12 +66,29 @@ static void initial_qpos(const diskval_state *y, double r, double h, double *qpo
     qvel[3 + i] = R[i] * w[0] + R[3 + i] * w[1] + R[6 + i] * w[2];
 }
 
+/* compile the MJCF text xml (len bytes) from memory, as diskval's MuJoCo
+ * engine does: no file is written or removed; NULL on an error, said */
+static mjModel *load_mjcf(const char *xml, size_t len) {
+  mjVFS *vfs = calloc(1, sizeof *vfs); /* about 2 MB: not on the stack */
+  mjModel *m = NULL;
+  char error[1000] = "";
+  if (vfs) mj_defaultVFS(vfs);
+  if (vfs && xml && mj_makeEmptyFileVFS(vfs, "disk.xml", (int)len) == 0) {
+    memcpy(vfs->filedata[mj_findFileVFS(vfs, "disk.xml")], xml, len);
+    m = mj_loadXML("disk.xml", vfs, error, sizeof error);
+    mj_deleteVFS(vfs);
+  }
+  if (!m) fprintf(stderr, "MuJoCo: %s\n", error[0] ? error : "cannot hold the model in memory");
+  free(vfs);
+  return m;
+}
+
 /* the model: the scenario's cylinder on a plane, stiff contact, RK4 at 1e-4 s */
 static mjModel *load_model(double r, double h, double mass) {
-  char path[] = "/tmp/plain_mujoco_judge.XXXXXX";
-  const int fd = mkstemp(path);
-  if (fd < 0) return NULL;
-  FILE *fp = fdopen(fd, "w");
+  char *xml = NULL;
+  size_t len = 0;
+  FILE *fp = open_memstream(&xml, &len);
+  if (!fp) return NULL;
   fprintf(fp,
           "<mujoco><option timestep=\"1e-4\" integrator=\"RK4\"/><worldbody>"
           "<geom type=\"plane\" size=\"0 0 1\" friction=\"2 0 0\" solref=\"0.001 1\"/>"
@@ -80,10 +96,8 @@ static mjModel *load_model(double r, double h, double mass) {
           "friction=\"2 0 0\" solref=\"0.001 1\"/></body></worldbody></mujoco>\n",
           r, h, mass);
   fclose(fp);
-  char error[1000] = "";
-  mjModel *m = mj_loadXML(path, NULL, error, sizeof error);
-  unlink(path);
-  if (!m) fprintf(stderr, "MuJoCo: %s\n", error);
+  mjModel *m = load_mjcf(xml, len);
+  free(xml);
   return m;
 }
 
@@ -165,10 +179,10 @@ static const char *mj_name(const char *v) {
 
 /* the run's model: the MJCF diskval's MuJoCo engine writes (engine_mujoco.c) */
 static mjModel *load_run_model(const run_settings *s, const diskval_disk *k) {
-  char path[] = "/tmp/plain_mujoco_judge.XXXXXX";
-  const int fd = mkstemp(path);
-  if (fd < 0) return NULL;
-  FILE *fp = fdopen(fd, "w");
+  char *xml = NULL;
+  size_t len = 0;
+  FILE *fp = open_memstream(&xml, &len);
+  if (!fp) return NULL;
   fprintf(fp,
           "<mujoco model=\"diskval\">\n"
           "  <option timestep=\"%.17g\" gravity=\"0 0 %.17g\" integrator=\"%s\" cone=\"%s\"\n"
@@ -192,10 +206,8 @@ static mjModel *load_run_model(const run_settings *s, const diskval_disk *k) {
           s->solref[0], s->solref[1], s->solimp[0], s->solimp[1], s->solimp[2], k->mass, k->A, k->A,
           k->C, k->radius, s->half_thickness);
   fclose(fp);
-  char error[1000] = "";
-  mjModel *m = mj_loadXML(path, NULL, error, sizeof error);
-  unlink(path);
-  if (!m) fprintf(stderr, "MuJoCo: %s\n", error);
+  mjModel *m = load_mjcf(xml, len);
+  free(xml);
   return m;
 }
 
