@@ -39,6 +39,12 @@ void dv_engine_limit_detail(int lower, double theta_limit, double t, char *buf, 
     snprintf(buf + n, size - (size_t)n, " at t = %g s", t);
 }
 
+void dv_engine_lay_down(dv_engine_stats *stats, int lower, double theta_limit, double t) {
+  dv_engine_limit_detail(lower, theta_limit, t, stats->detail, sizeof stats->detail);
+  stats->outcome = DV_OUTCOME_EVENT;
+  stats->lay_down = lower ? -1 : 1;
+}
+
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {
   const dv_engine_contact *k = engine->contact;
   if (!k) return 0;

@@ -156,6 +156,11 @@ double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario 
  * theta > pi - theta_limit), then " at t = T s" when t is finite */
 void dv_engine_limit_detail(int lower, double theta_limit, double t, char *buf, size_t size);
 
+/* a run ends lying down at time t (lower: at theta_limit, else at pi -
+ * theta_limit): stats' outcome (an event), side and detail, in the words of
+ * dv_engine_limit_detail */
+void dv_engine_lay_down(dv_engine_stats *stats, int lower, double theta_limit, double t);
+
 /* does engine simulate a stand-in shape in sc, not the exact thin disk (0 for references) */
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc);
 

@@ -453,9 +453,7 @@ int step(bullet_engine *e, dv_error *err) {
   const double nz = axis_z(e);
   if (!(std::fabs(nz) <= e->cos_limit)) {
     if (std::isnan(nz)) return check_state(e, err);
-    dv_engine_limit_detail(nz > 0.0, e->theta_limit, e->k * dt, e->st.detail, sizeof e->st.detail);
-    e->st.outcome = DV_OUTCOME_EVENT;
-    e->st.lay_down = nz > 0.0 ? -1 : 1;
+    dv_engine_lay_down(&e->st, nz > 0.0, e->theta_limit, e->k * dt);
     e->status = DV_EVENT;
     return DV_EVENT;
   }

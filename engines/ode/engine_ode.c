@@ -389,9 +389,7 @@ static int ode_step(ode_engine *e, dv_error *err) {
   const double nz = dBodyGetRotation(e->body)[10];
   if (!(fabs(nz) <= e->cos_limit)) {
     if (isnan(nz)) return ode_check_state(e, err);
-    dv_engine_limit_detail(nz > 0.0, e->theta_limit, e->k * dt, e->st.detail, sizeof e->st.detail);
-    e->st.outcome = DV_OUTCOME_EVENT;
-    e->st.lay_down = nz > 0.0 ? -1 : 1;
+    dv_engine_lay_down(&e->st, nz > 0.0, e->theta_limit, e->k * dt);
     e->status = DV_EVENT;
     return DV_EVENT;
   }

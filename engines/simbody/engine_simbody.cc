@@ -434,9 +434,7 @@ int check_step(simbody_engine *e, dv_error *err) {
   const double rates = e->T->getU(s) + e->D->getU(s) + e->H->getU(s)[0];
   if (!std::isfinite(th + rates)) return failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
   if (th < e->theta_limit || th > M_PI - e->theta_limit) {
-    dv_engine_limit_detail(th < e->theta_limit, e->theta_limit, t, e->st.detail,
-                           sizeof e->st.detail);
-    e->st.lay_down = th < e->theta_limit ? -1 : 1;
+    dv_engine_lay_down(&e->st, th < e->theta_limit, e->theta_limit, t);
   } else {
     double F[3];
     contact_force(e, s, F);
