@@ -160,9 +160,7 @@ int dv_cli_judge(int argc, char **argv) {
   }
   for (size_t i = 0; code == DV_EXIT_OK && i < n; i++) {
     const char *path = a.args.items[i + 1];
-    if (junit && dv_io_same_file(junit, path))
-      code = dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit, path);
-    else if (dv_run_trajfile_read(path, &sc, &files[i], &err))
+    if (dv_run_trajfile_read(path, &sc, &files[i], &err))
       code = dv_cli_error("judge", "%s", err.msg);
     else
       dv_run_replay_init(&replays[nread++], &files[i], names[i]);
@@ -178,12 +176,14 @@ int dv_cli_judge(int argc, char **argv) {
     if (parse_steps(list_buf, n, steps, &err))
       code = dv_cli_error("judge", "the files' dt lines: %s", err.msg);
   }
-  if (code == DV_EXIT_OK && junit && dv_io_same_file(junit, a.args.items[0]))
-    code =
-        dv_cli_error("judge", "--junit '%s' is an input of this run (%s)", junit, a.args.items[0]);
+  /* no output over an input: the trajectories may not lie in the report the run replaces */
+  const char *const *trajs = (const char *const *)a.args.items + 1;
   if (code != DV_EXIT_OK) {
-  } else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
-             dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err)) {
+  } else if (dv_report_dir_check(out, &sc, 1, trajs, n, &err) ||
+             dv_report_dir_check_junit(junit, out, &sc, 1, trajs, n, &err) ||
+             dv_io_make_dirs(out, &err) || dv_io_lock_dir(out, &lock, &err) ||
+             dv_report_dir_check(out, &sc, 1, trajs, n, &err) ||
+             dv_report_dir_check_junit(junit, out, &sc, 1, trajs, n, &err)) {
     code = dv_cli_error("judge", "%s", err.msg);
   } else {
     code = dv_report_judge_run(&sc, replays, nread, out, junit, errors, &err);

@@ -61,9 +61,10 @@ typedef struct map {
   const dv_engine_type *engines[DV_MAX_ENGINES + 2]; /* the reference, the engines, NULL */
   size_t nengines;
   double duration;
-  red_disk disk; /* C is set per cell */
-  char name[64]; /* the scenario's, or "" */
-  int c_log;     /* --c is a log range: a log axis */
+  red_disk disk;    /* C is set per cell */
+  char name[64];    /* the scenario's, or "" */
+  const char *path; /* the scenario's file, or NULL */
+  int c_log;        /* --c is a log range: a log axis */
 } map;
 
 static double value(const dv_vary *v, size_t i) {
@@ -265,6 +266,7 @@ static int read_disk(const dv_cli_args *a, map *mp) {
   const int status = dv_cli_load_scenario("map", a->args.items[0], &a->sets, sc, &err);
   if (!status) {
     mp->disk = sc->disk;
+    mp->path = a->args.items[0];
     snprintf(mp->name, sizeof mp->name, "%s", sc->name);
   }
   free(sc);
@@ -292,7 +294,15 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
     return dv_cli_error("map", "%s", err.msg);
   if (!engines) default_engines(mp);
   while (mp->engines[mp->nengines]) mp->nengines++;
-  if (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err)) /* a bad --out fails at once */
+  /* a bad --out fails at once; the scenario (map reads it first) is none of the outputs */
+  const char *outputs[DV_MAX_ENGINES + 3] = {"map.csv"};
+  char svg[DV_MAX_ENGINES + 1][96];
+  for (size_t e = 0; e < mp->nengines; e++) {
+    snprintf(svg[e], sizeof svg[e], "map_%s.svg", mp->engines[e]->name);
+    outputs[e + 1] = svg[e];
+  }
+  if (dv_io_check_inputs(out, outputs, (const char *const *)&mp->path, mp->path ? 1 : 0, &err) ||
+      (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err)))
     return dv_cli_error("map", "%s", err.msg);
   const size_t n = mp->nengines * mp->c->n * mp->spin->n;
   cell *cells = calloc(n, sizeof *cells);

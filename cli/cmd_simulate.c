@@ -24,6 +24,8 @@ static const char HELP[] =
     "  --set S.K=V     override key K of section S, e.g. --set engines.reduced.rtol=1e-10\n"
     "  --out FILE      write to FILE (default, or '-': stdout); written whole or not at all,\n"
     "                  with FILE.json beside it: engine, versions, settings, outcome, stats\n"
+    "                  (not beside a device or /dev/stdout; a FILE.json that is not\n"
+    "                  simulate's is refused); a symbolic link is written through\n"
     "  --forces FILE   the contact force along the run (references: the force rolling needs)\n"
     "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
     "  --timeout S     stop the run after S s of wall time (exit 2, nothing written); one\n"
@@ -62,8 +64,11 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
     return DV_EXIT_ERROR;
   }
   dv_io_file out, forces = {0};
-  if (dv_io_open(&out, out_path, &err) || (forces_path && dv_io_open(&forces, forces_path, &err))) {
+  /* metadata only beside a regular file, and never over a user's file */
+  if (dv_io_open(&out, out_path, &err) || (forces_path && dv_io_open(&forces, forces_path, &err)) ||
+      (out.fp != stdout && !out.direct && dv_run_meta_check_replaceable(meta_path, &err))) {
     dv_io_abort(&out);
+    dv_io_abort(&forces);
     fprintf(stderr, "diskval simulate: %s\n", err.msg);
     return DV_EXIT_ERROR;
   }

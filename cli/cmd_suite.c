@@ -106,8 +106,8 @@ static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenar
 }
 
 /* the files the suite writes into --out, besides the scenarios' directories */
-static const char *const suite_files[] = {"index.html", "summary.json",   "junit.xml",
-                                          "verify.md",  "verify.json",    "stability.html",
+static const char *const suite_files[] = {"index.html",   "summary.json",   "junit.xml",
+                                          "verify.md",    "verify.json",    "stability.html",
                                           "stability.md", "stability.json", NULL};
 
 /* before anything runs: --out may take the suite's files and directories
@@ -129,21 +129,8 @@ static int check_outputs(const suite_opts *o, const dv_cli_list *files, const dv
       return dv_fail(err, DV_EINPUT, "--junit '%s' is the suite's own %s", o->junit, path),
              DV_EXIT_ERROR;
   }
-  if (!o->junit || !strcmp(o->junit, "-")) return DV_EXIT_OK;
-  for (size_t i = 0; i < files->n; i++)
-    if (dv_io_same_file(o->junit, inputs[i]))
-      return dv_fail(err, DV_EINPUT, "--junit '%s' is an input of this run (%s)", o->junit,
-                     inputs[i]),
-             DV_EXIT_ERROR;
-  for (size_t i = 0; i < files->n; i++) {
-    char dir[1100];
-    if (dv_io_path(dir, sizeof dir, err, "%s/%s", o->out, scs[i].name)) return DV_EXIT_ERROR;
-    if (dv_io_within(o->junit, dir) || dv_io_same_file(o->junit, dir))
-      return dv_fail(err, DV_EINPUT, "--junit '%s' lies inside %s, which this run replaces",
-                     o->junit, dir),
-             DV_EXIT_ERROR;
-  }
-  return DV_EXIT_OK;
+  return dv_report_dir_check_junit(o->junit, o->out, scs, files->n, NULL, 0, err) ? DV_EXIT_ERROR
+                                                                                  : DV_EXIT_OK;
 }
 
 /* --verify: every scenario's engines refined; verify.md, verify.json, JUnit */

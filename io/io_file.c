@@ -22,6 +22,49 @@ int dv_io_path(char *buf, size_t size, dv_error *err, const char *fmt, ...) {
   return dv_fail(err, DV_EINPUT, "path too long: %.200s...", buf);
 }
 
+/* path is a symbolic link that leads, maybe through others, through /proc
+ * (/dev/stdout, /proc/self/fd/1, /dev/fd/3): a stream of a process, not a
+ * file's name, even when what is open there is a regular file */
+static int through_proc(const char *path) {
+  char cur[PATH_MAX], next[PATH_MAX], where[PATH_MAX + 256];
+  snprintf(cur, sizeof cur, "%s", path);
+  for (int hop = 0; hop < 40; hop++) { /* the kernel's own limit on a chain */
+    struct stat st;
+    if (lstat(cur, &st) || !S_ISLNK(st.st_mode)) return 0;
+    if (dv_io_canonical(cur, where, sizeof where)) return 0;
+    if (!strncmp(where, "/proc/", 6)) return 1;
+    const ssize_t n = readlink(cur, next, sizeof next - 1);
+    if (n < 0) return 0;
+    next[n] = '\0';
+    char *slash = strrchr(where, '/');
+    slash[1] = '\0'; /* a relative link is read from the link's own directory */
+    if (next[0] != '/' && (strlen(where) + strlen(next) >= sizeof cur)) return 0;
+    snprintf(cur, sizeof cur, "%s%s", next[0] == '/' ? "" : where, next);
+  }
+  return 0;
+}
+
+/* a device or a pipe (/dev/null, a FIFO, a terminal), or a regular file
+ * reached through /proc: written where it is (appended to, for a file: the
+ * stream's own position is not ours to rewind), never replaced */
+static int open_in_place(dv_io_file *out, const char *path, int regular, dv_error *err) {
+  if (!(out->fp = fopen(path, regular ? "a" : "w")))
+    return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
+  out->direct = 1;
+  return DV_OK;
+}
+
+int dv_io_check_output(const char *path, dv_error *err) {
+  struct stat st;
+  if (!path || !strcmp(path, "-") || lstat(path, &st)) return DV_OK;
+  if (S_ISLNK(st.st_mode) && stat(path, &st))
+    return dv_fail(err, DV_EINPUT,
+                   "%s: a symbolic link to nothing (%s); nothing was written: make the file it "
+                   "names, or give another path",
+                   path, errno == ELOOP ? "a loop" : "its target does not exist");
+  if (S_ISDIR(st.st_mode)) return dv_fail(err, DV_EINPUT, "%s: is a directory", path);
+  return DV_OK;
+}
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   memset(out, 0, sizeof *out);
@@ -31,14 +74,19 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   }
   if (strlen(path) >= sizeof out->path)
     return dv_fail(err, DV_EINPUT, "path too long: %.200s...", path);
-  struct stat st;
-  if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-    /* a device or a pipe (/dev/null, a FIFO): written directly, never replaced */
-    if (S_ISDIR(st.st_mode)) return dv_fail(err, DV_ESYSTEM, "%s: is a directory", path);
-    if (!(out->fp = fopen(path, "w")))
-      return dv_fail(err, DV_ESYSTEM, "%s: cannot open: %s", path, strerror(errno));
-    out->direct = 1;
-    return DV_OK;
+  if (dv_io_check_output(path, err)) return DV_EINPUT;
+  struct stat lst, st;
+  const int link = lstat(path, &lst) == 0 && S_ISLNK(lst.st_mode);
+  if (stat(path, &st)) st.st_mode = S_IFREG; /* a new file */
+  if (!S_ISREG(st.st_mode)) return open_in_place(out, path, 0, err);
+  if (link && through_proc(path)) return open_in_place(out, path, 1, err);
+  char real[PATH_MAX];
+  if (link) { /* written through: the file the link names is replaced, the link stays */
+    if (!realpath(path, real))
+      return dv_fail(err, DV_ESYSTEM, "%s: cannot resolve: %s", path, strerror(errno));
+    if (strlen(real) >= sizeof out->path)
+      return dv_fail(err, DV_EINPUT, "path too long: %.200s...", real);
+    path = real;
   }
   snprintf(out->path, sizeof out->path, "%s", path);
   char dir[sizeof out->path];

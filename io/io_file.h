@@ -5,6 +5,10 @@
  * dv_io_temp_clean_on_signals) remove it, and opening a path removes the
  * temporaries dead runs left in its directory (io_temp.h). "-" means stdout; an
  * existing device or pipe (/dev/null) is written in place, never replaced.
+ * A symbolic link is written through: the regular file it ends at is
+ * replaced (its temporary beside that file) and the link stays; one that
+ * leads through /proc (/dev/stdout, /proc/self/fd/1) is a stream, written in
+ * place; one to nothing (dangling, a loop) is refused.
  * A path that does not fit its buffer is an error, never cut short.
  */
 #ifndef DV_OUTPUT_H
@@ -23,6 +27,10 @@ typedef struct dv_io_file {
 } dv_io_file;
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err);
+
+/* path may be given to dv_io_open (checked there too, and by commands before
+ * any work): not a directory, nor a symbolic link to nothing; else DV_EINPUT */
+int dv_io_check_output(const char *path, dv_error *err);
 int dv_io_commit(dv_io_file *out, dv_error *err); /* flush, close, rename */
 void dv_io_abort(dv_io_file *out);                /* NULL-safe, idempotent */
 

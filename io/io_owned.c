@@ -32,12 +32,83 @@ int dv_io_mark(const char *dir, dv_error *err) {
   return dv_io_write_text(dir, DV_IO_MARK, DV_IO_MARK_TEXT, err);
 }
 
+/* the mark of the complete directory dir: the format, then "files:" and the
+ * name of every file diskval put in it, one a line, so that anything added
+ * later is known for another's */
+static int mark_listing(const char *dir, dv_error *err) {
+  struct dirent **names;
+  const int n = scandir(dir, &names, NULL, alphasort);
+  if (n < 0) return dv_fail(err, DV_ESYSTEM, "%s: %s", dir, strerror(errno));
+  size_t size = sizeof DV_IO_MARK_TEXT + sizeof DV_IO_MARK_FILES;
+  for (int i = 0; i < n; i++) size += strlen(names[i]->d_name) + 1;
+  char *text = malloc(size);
+  if (text) {
+    char *p = text + sprintf(text, "%s", DV_IO_MARK_TEXT DV_IO_MARK_FILES);
+    for (int i = 0; i < n; i++) {
+      const char *name = names[i]->d_name;
+      if (strcmp(name, ".") && strcmp(name, "..") && strcmp(name, DV_IO_MARK) &&
+          !strchr(name, '\n'))
+        p += sprintf(p, "%s\n", name);
+    }
+  }
+  for (int i = 0; i < n; i++) free(names[i]);
+  free(names);
+  const int status = text ? dv_io_write_text(dir, DV_IO_MARK, text, err)
+                          : dv_fail(err, DV_ESYSTEM, "out of memory");
+  free(text);
+  return status;
+}
+
+/* name may be in a report whose mark lists no files (one diskval made before
+ * marks listed them): what a report then held */
+static int legacy_name(const char *name) {
+  const size_t len = strlen(name);
+  return !strcmp(name, "report.json") || !strcmp(name, "report.md") ||
+         (len > 4 && (!strcmp(name + len - 4, ".csv") || !strcmp(name + len - 4, ".svg")));
+}
+
+/* the first entry of the marked directory path that diskval did not put
+ * there (not a regular file it listed in the mark), into name; 1, else 0 */
+static int foreign(const char *path, char *name, size_t size) {
+  char mark[4096], *text = NULL;
+  if (snprintf(mark, sizeof mark, "%s/" DV_IO_MARK, path) >= (int)sizeof mark) return 0;
+  FILE *f = fopen(mark, "r");
+  long len = 0;
+  if (f && (text = malloc(1 << 20))) len = (long)fread(text, 1, (1 << 20) - 1, f);
+  if (f) fclose(f);
+  if (text) text[len] = '\0';
+  const char *list = text ? strstr(text, "\n" DV_IO_MARK_FILES) : NULL;
+  if (list) list += strlen(DV_IO_MARK_FILES); /* "\nNAME\n" for every name */
+  DIR *d = opendir(path);
+  int found = 0;
+  for (struct dirent *e; d && !found && (e = readdir(d));) {
+    char entry[4096], needle[300];
+    struct stat st;
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || !strcmp(e->d_name, DV_IO_MARK))
+      continue;
+    snprintf(needle, sizeof needle, "\n%s\n", e->d_name);
+    found = snprintf(entry, sizeof entry, "%s/%s", path, e->d_name) >= (int)sizeof entry ||
+            lstat(entry, &st) || !S_ISREG(st.st_mode) ||
+            !(list ? strstr(list, needle) != NULL : legacy_name(e->d_name));
+    if (found) snprintf(name, size, "%s", entry);
+  }
+  if (d) closedir(d);
+  free(text);
+  return found;
+}
+
 int dv_io_check_replaceable(const char *path, dv_error *err) {
   struct stat st;
+  char other[4200];
   if (lstat(path, &st)) {
     if (errno == ENOENT) return DV_OK;
     return dv_fail(err, DV_EINPUT, "%s: cannot look at it: %s", path, strerror(errno));
   }
+  if (dv_io_owned(path) && foreign(path, other, sizeof other))
+    return dv_fail(err, DV_EINPUT,
+                   "%s: diskval did not make it, and the run would replace the report it is "
+                   "in; nothing was written: move it, or choose another --out or scenario name",
+                   other);
   if (dv_io_owned(path)) return DV_OK;
   return dv_fail(err, DV_EINPUT,
                  "%s: a %s that diskval did not make is in the way (it has no " DV_IO_MARK
@@ -51,8 +122,7 @@ static int empty(const char *dir) {
   if (!d) return 0;
   int any = 0;
   for (struct dirent *e; !any && (e = readdir(d));)
-    any = strcmp(e->d_name, ".") && strcmp(e->d_name, "..") &&
-          strcmp(e->d_name, DV_IO_LOCK_NAME) &&
+    any = strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, DV_IO_LOCK_NAME) &&
           strncmp(e->d_name, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX));
   closedir(d);
   return !any;
@@ -69,11 +139,58 @@ int dv_io_own_dir(const char *dir, dv_error *err) {
   return dv_io_mark(dir, err);
 }
 
-int dv_io_within(const char *path, const char *dir) {
-  char p[PATH_MAX + 256], d[PATH_MAX];
-  if (!realpath(dir, d) || (!realpath(path, p) && dv_io_canonical(path, p, sizeof p))) return 0;
+/* path resolved as far as it exists (symbolic links, ".", ".."), the rest
+ * of it appended as given: 0, or -1 */
+static int resolve(const char *path, char *out, size_t size) {
+  char head[PATH_MAX], tail[PATH_MAX] = "", real[PATH_MAX], rest[PATH_MAX];
+  if (snprintf(head, sizeof head, "%s", path) >= (int)sizeof head) return -1;
+  for (int depth = 0; depth < 256; depth++) {
+    if (realpath(head[0] ? head : ".", real)) {
+      const int len = snprintf(out, size, "%s%s", strcmp(real, "/") ? real : "", tail);
+      return len >= 0 && (size_t)len < size ? 0 : -1;
+    }
+    char *slash = strrchr(head, '/');
+    const char *last = slash ? slash + 1 : head;
+    if (snprintf(rest, sizeof rest, "%s%s%s", *last ? "/" : "", last, tail) >= (int)sizeof rest)
+      return -1;
+    memcpy(tail, rest, sizeof tail);
+    if (!slash)
+      head[0] = '\0';
+    else if (slash == head)
+      head[1] = '\0'; /* "/x": the root */
+    else
+      *slash = '\0';
+  }
+  return -1;
+}
+
+/* p (resolved) is d or lies under it */
+static int under(const char *p, const char *d) {
   const size_t n = strlen(d);
-  return !strncmp(p, d, n) && (p[n] == '/' || p[n] == '\0');
+  return !strncmp(p, d, n) && (p[n] == '/' || p[n] == '\0' || !strcmp(d, "/"));
+}
+
+int dv_io_within(const char *path, const char *dir) {
+  char p[PATH_MAX + 256], d[PATH_MAX + 256];
+  if (resolve(dir, d, sizeof d)) return 0;
+  /* where the name is, and where it leads when it is a symbolic link */
+  if (!dv_io_canonical(path, p, sizeof p) && under(p, d)) return 1;
+  return !resolve(path, p, sizeof p) && under(p, d);
+}
+
+int dv_io_check_inputs(const char *dir, const char *const *names, const char *const *inputs,
+                       size_t n, dv_error *err) {
+  for (const char *const *f = names; *f; f++) {
+    char path[4096];
+    if (dv_io_path(path, sizeof path, err, "%s/%s", dir, *f)) return DV_EINPUT;
+    for (size_t i = 0; i < n; i++)
+      if (inputs[i] && dv_io_same_file(inputs[i], path))
+        return dv_fail(err, DV_EINPUT,
+                       "%s: an input of this run is its output %s; nothing was written: move "
+                       "it, or choose another --out",
+                       inputs[i], path);
+  }
+  return DV_OK;
 }
 
 int dv_io_dir_begin(char *tmp, size_t size, const char *parent, dv_error *err) {
@@ -108,6 +225,10 @@ int dv_io_dir_install(const char *tmp, const char *final, const char *parent, dv
   if (dv_io_check_replaceable(final, err)) {
     dv_io_dir_discard(tmp);
     return DV_EINPUT;
+  }
+  if (mark_listing(tmp, err)) {
+    dv_io_dir_discard(tmp);
+    return DV_ESYSTEM;
   }
   const int had_old = set_aside(final, parent, old, sizeof old) == 0;
   if (rename(tmp, final)) {

@@ -17,6 +17,10 @@
 
 #define DV_IO_MARK ".diskval-report"
 #define DV_IO_MARK_TEXT "diskval output directory, format 1\n"
+/* in the mark of a report directory put in place (dv_io_dir_install), after
+ * the text: the names of its files, one a line; any other file found there
+ * is a user's, and the directory is not replaced */
+#define DV_IO_MARK_FILES "files:\n"
 
 /* path is a directory holding the mark */
 int dv_io_owned(const char *path);
@@ -25,7 +29,9 @@ int dv_io_owned(const char *path);
 int dv_io_mark(const char *dir, dv_error *err);
 
 /* path may be made or replaced: it does not exist, or it is a directory
- * holding the mark; else DV_EINPUT, err naming path and what is there */
+ * holding the mark and nothing but the files its mark lists (a mark that
+ * lists none: report.json, report.md, *.csv, *.svg); else DV_EINPUT, err
+ * naming path and what is there, or the file diskval did not make */
 int dv_io_check_replaceable(const char *path, dv_error *err);
 
 /* make dir (mkdir -p) for a command's fixed-name outputs, or take an
@@ -33,7 +39,13 @@ int dv_io_check_replaceable(const char *path, dv_error *err);
  * marked; the mark is put in; else DV_EINPUT naming dir */
 int dv_io_own_dir(const char *dir, dv_error *err);
 
-/* path lies inside dir (both resolved; dir need not exist: then no) */
+/* none of inputs[0..n) is the file dir/<one of names> (NULL-ended), an
+ * output of the run; else DV_EINPUT naming both */
+int dv_io_check_inputs(const char *dir, const char *const *names, const char *const *inputs,
+                       size_t n, dv_error *err);
+
+/* path is dir or lies inside it (both resolved as far as they exist, so
+ * neither need exist yet): where path's name is, or where it leads */
 int dv_io_within(const char *path, const char *dir);
 
 /* a new temporary directory of parent (stale ones removed first), marked

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "io_file.h"
+#include "io_lock.h"
 #include "io_owned.h"
 #include "io_temp.h"
 
@@ -60,6 +61,30 @@ int dv_report_dir_check(const char *out_dir, const dv_scenario *scs, size_t n,
   return DV_OK;
 }
 
+int dv_report_dir_check_junit(const char *junit, const char *out_dir, const dv_scenario *scs,
+                              size_t n, const char *const *inputs, size_t ninputs, dv_error *err) {
+  if (!junit || !strcmp(junit, "-")) return DV_OK;
+  if (dv_io_check_output(junit, err)) return DV_EINPUT;
+  const char *base = strrchr(junit, '/') ? strrchr(junit, '/') + 1 : junit;
+  if (!strcmp(base, DV_IO_MARK) || !strcmp(base, DV_IO_LOCK_NAME) ||
+      !strncmp(base, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX)))
+    return dv_fail(err, DV_EINPUT, "--junit '%s': %s is the name of diskval's own files", junit,
+                   base);
+  for (size_t i = 0; i < n + ninputs; i++) {
+    const char *in = i < n ? scs[i].path : inputs[i - n];
+    if (dv_io_same_file(junit, in))
+      return dv_fail(err, DV_EINPUT, "--junit '%s' is an input of this run (%s)", junit, in);
+  }
+  for (size_t i = 0; i < n; i++) {
+    char dir[1200];
+    if (dv_io_path(dir, sizeof dir, err, "%s/%s", out_dir, scs[i].name)) return DV_EINPUT;
+    if (dv_io_within(junit, dir))
+      return dv_fail(err, DV_EINPUT, "--junit '%s' lies inside %s, which this run replaces", junit,
+                     dir);
+  }
+  return DV_OK;
+}
+
 /* report.json and report.md of a scenario that failed, into dir */
 static int write_error_files(const char *dir, const dv_scenario *sc, const char *cause,
                              dv_error *err) {
@@ -92,7 +117,7 @@ int dv_report_dir_write_error(const char *out_dir, const dv_scenario *sc, const 
   if (!status) status = dv_report_dir_install(tmp, out_dir, sc->name, err);
   /* no error report: at least no earlier report (of diskval's) that says something else */
   if (status && !dv_io_path(final, sizeof final, NULL, "%s/%s", out_dir, sc->name) &&
-      dv_io_owned(final))
+      dv_io_owned(final) && !dv_io_check_replaceable(final, NULL))
     dv_io_remove_tree(final);
   return status;
 }

@@ -39,6 +39,14 @@ int dv_report_dir_install(const char *tmp, const char *out_dir, const char *name
 int dv_report_dir_check(const char *out_dir, const dv_scenario *scs, size_t n,
                         const char *const *inputs, size_t ninputs, dv_error *err);
 
+/* before anything runs: the JUnit file junit (NULL or "-": none) is not
+ * named as diskval's own files are (the mark, the lock, a temporary), is none
+ * of the run's inputs (the scenarios' files and inputs[0..ninputs)), and
+ * lies in none of the reports the run replaces (out_dir/<each name>, even
+ * one not made yet, and through a symbolic link); else DV_EINPUT naming it */
+int dv_report_dir_check_junit(const char *junit, const char *out_dir, const dv_scenario *scs,
+                              size_t n, const char *const *inputs, size_t ninputs, dv_error *err);
+
 /* replace out_dir/<sc's name> by an error report saying cause; when even
  * that cannot be written, the old report is removed */
 int dv_report_dir_write_error(const char *out_dir, const dv_scenario *sc, const char *cause,

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "io_file.h"
 #include "io_json.h"
@@ -86,4 +87,23 @@ int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_s
   cJSON_AddNumberToObject(s, "contacts_max", st->contacts_max);
   cJSON_AddNumberToObject(s, "warnings", (double)st->warnings);
   return dv_io_json_write(path, NULL, o, err);
+}
+
+int dv_run_meta_check_replaceable(const char *path, dv_error *err) {
+  struct stat st;
+  if (dv_io_check_output(path, err)) return DV_EINPUT;
+  if (stat(path, &st) || !S_ISREG(st.st_mode))
+    return DV_OK; /* new, or a device: written in place */
+  cJSON *o = dv_io_json_read(path, 1L << 20, NULL, 0);
+  const int ours = cJSON_IsString(cJSON_GetObjectItem(o, "scenario")) &&
+                   cJSON_IsString(cJSON_GetObjectItem(o, "engine")) &&
+                   cJSON_IsObject(cJSON_GetObjectItem(o, "settings")) &&
+                   cJSON_IsObject(cJSON_GetObjectItem(o, "run"));
+  cJSON_Delete(o);
+  return ours ? DV_OK
+              : dv_fail(err, DV_EINPUT,
+                        "%s: a file that is not simulate's metadata is in the way of the one "
+                        "--out writes beside it; nothing was written: move it, or choose "
+                        "another --out",
+                        path);
 }

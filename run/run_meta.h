@@ -22,4 +22,9 @@ int dv_io_json_write(const char *dir, const char *name, void *json, dv_error *er
 int dv_run_meta_write(const char *path, const dv_engine_type *engine, const dv_scenario *sc,
                       const dv_engine_stats *stats, dv_error *err);
 
+/* path may take a run's metadata: it does not exist, is a device, or holds
+ * metadata dv_run_meta_write wrote (its scenario, engine, settings and run);
+ * a user's file there is DV_EINPUT, err naming it */
+int dv_run_meta_check_replaceable(const char *path, dv_error *err);
+
 #endif

@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# check_user_files2.sh DISKVAL SCENARIO_DIR: nothing a user owns is lost, the
+# second pass (links, inputs in the way of outputs, foreign files). Every case
+# checks the user's files byte for byte (sha256) and that a link stays a link:
+#   - an output that is a symbolic link is written through: the file it names
+#     gets the output, the link stays; a link through /proc (a stream) is
+#     written in place; a link to nothing or a loop is refused;
+#   - simulate's FILE.json replaces only simulate's own metadata;
+#   - judge refuses a trajectory inside the report it would replace;
+#   - sweep and map refuse a scenario that is one of their outputs;
+#   - --junit onto another output of the run is refused;
+#   - a report directory holding a user's file is not replaced;
+#   - judge's names obey the scenario names' rules, and a long file name
+#     gets a default name that does.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+export LC_ALL=C
+dv=${1:?usage: check_user_files2.sh DISKVAL SCENARIO_DIR}
+sc=${2:?usage: check_user_files2.sh DISKVAL SCENARIO_DIR}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+
+# scenario NAME FILE: the falling disk, 0.3 s, named NAME, into FILE
+scenario() { sed -e "s/^name = .*/name = $1/" -e "s/^duration = .*/duration = 0.3/" \
+  "$sc/falling.ini" >"$2"; }
+# refused WHAT REGEX CMD...: exit 2, one stderr line matching REGEX
+refused() {
+  local what=$1 regex=$2
+  shift 2
+  "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$?
+  check '[ $code -eq 2 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -Eq -e "$regex" "$work/stderr"' \
+    "$what: exit $code, want 2 and one line matching '$regex': $(cat "$work/stderr")"
+}
+# same FILE SUM: FILE's sha256 is SUM
+same() { [ "$(sha256sum <"$1")" = "$2" ]; }
+header='^t,theta,phi,psi,x,y,contact_x,contact_y'
+scenario fast sc.ini
+
+# 1. outputs through symbolic links
+mkdir archive
+echo old >archive/run1.csv
+ln -s archive/run1.csv latest.csv
+"$dv" simulate sc.ini --engine reduced --out latest.csv 2>/dev/null
+check '[ -L latest.csv ] && [ "$(readlink latest.csv)" = archive/run1.csv ]' \
+  "simulate --out LINK: the link was replaced"
+check 'grep -Eq "$header" archive/run1.csv' "simulate --out LINK: its file did not get the CSV"
+check '[ -f latest.csv.json ] && [ ! -e archive/run1.csv.json ]' \
+  "simulate --out LINK: the metadata is not beside the name given"
+echo old >archive/forces.csv
+ln -s archive/forces.csv forces.csv
+"$dv" simulate sc.ini --engine reduced --out run.csv --forces forces.csv 2>/dev/null
+check '[ -L forces.csv ] && grep -q "^t,force_x" archive/forces.csv' "simulate --forces LINK: the link was replaced"
+ln -s /proc/self/fd/1 mystdout
+"$dv" simulate sc.ini --engine reduced --out mystdout >cap.txt 2>/dev/null
+check '[ -L mystdout ] && grep -Eq "$header" cap.txt && [ ! -e mystdout.json ]' \
+  "simulate --out LINK-TO-STDOUT: link kept $([ -L mystdout ] && echo yes), $(wc -l <cap.txt) lines captured, mystdout.json made $([ -e mystdout.json ] && echo yes)"
+ln -s nowhere/x.csv dangling.csv
+ln -s loop1 loop2
+ln -s loop2 loop1
+refused "simulate --out a dangling link" "dangling.csv: a symbolic link to nothing" \
+  "$dv" simulate sc.ini --engine reduced --out dangling.csv
+refused "simulate --out a link loop" "loop1: a symbolic link to nothing \(a loop\)" \
+  "$dv" simulate sc.ini --engine reduced --out loop1
+check '[ -L dangling.csv ] && [ ! -e nowhere ] && [ -L loop1 ] && [ -L loop2 ] && [ ! -e dangling.csv.json ]' \
+  "a refused link was touched"
+sum=$(sha256sum <sc.ini)
+ln -s sc.ini to_input.csv
+refused "simulate --out a link to its scenario" "is the scenario file" \
+  "$dv" simulate sc.ini --engine reduced --out to_input.csv
+check 'same sc.ini "$sum" && [ -L to_input.csv ]' "simulate --out a link to its scenario: changed"
+echo '<testsuites/>' >archive/junit.xml
+ln -s archive/junit.xml junit-link.xml
+"$dv" suite sc.ini --engines ode --out out --junit junit-link.xml >/dev/null 2>&1
+check '[ -L junit-link.xml ] && grep -q "testsuite name" archive/junit.xml' "suite --junit LINK: the link was replaced"
+# 5. simulate's FILE.json: only simulate's own metadata is replaced
+echo '{"mine": true}' >mine.csv.json
+sum=$(sha256sum <mine.csv.json)
+refused "simulate --out X over a user's X.json" "mine.csv.json: a file that is not simulate's metadata" \
+  "$dv" simulate sc.ini --engine reduced --out mine.csv
+check 'same mine.csv.json "$sum" && [ ! -e mine.csv ]' "a user's X.json was replaced, or X written"
+"$dv" simulate sc.ini --engine reduced --out again.csv 2>/dev/null
+"$dv" simulate sc.ini --engine reduced --out again.csv 2>/dev/null
+check '[ $? -eq 0 ]' "simulate's own X.json was not replaced"
+
+
+# 2. judge: a trajectory inside the report the run replaces
+"$dv" simulate sc.ini --engine ode --out ode_run.csv 2>/dev/null
+"$dv" judge sc.ini ode_run.csv --out r >/dev/null 2>&1
+check '[ -f r/fast/ode_run.csv ]' "judge wrote no report to test with"
+sum=$(sha256sum <r/fast/ode_run.csv)
+refused "judge of a trajectory in its own report" "r/fast/ode_run.csv: an input of this run lies inside" \
+  "$dv" judge sc.ini r/fast/ode_run.csv --out r
+refused "judge --name of a trajectory in its own report" "r/fast/ode_run.csv: an input of this run lies inside" \
+  "$dv" judge sc.ini r/fast/ode_run.csv --name other --out r
+check 'same r/fast/ode_run.csv "$sum"' "judge: its input inside the report was lost or rewritten"
+
+# 3. sweep and map: a scenario in the marked --out under an output's name
+for f in sweep.csv work_precision.svg; do
+  mkdir -p "sw-$f"
+  echo "diskval output directory, format 1" >"sw-$f/.diskval-report"
+  cp sc.ini "sw-$f/$f"
+  refused "sweep of a scenario named $f in its --out" "sw-$f/$f: an input of this run is its output" \
+    "$dv" sweep "sw-$f/$f" --engine ode --vary timestep=1e-3,2e-3 --out "sw-$f"
+  check 'cmp -s sc.ini "sw-$f/$f"' "sweep overwrote its scenario $f"
+done
+mkdir -p mp
+echo "diskval output directory, format 1" >mp/.diskval-report
+cp sc.ini mp/map.csv
+refused "map of a scenario named map.csv in its --out" "mp/map.csv: an input of this run is its output" \
+  "$dv" map mp/map.csv --engines ode --c 0.2..0.4:2 --spin 5..6:2 --duration 0.1 --out mp
+check 'cmp -s sc.ini mp/map.csv' "map overwrote its scenario"
+
+# 4. --junit onto another output of the run (out/ and r/ are from above)
+for f in out/.diskval-report out/fast/report.md out/fast/report.json out/fresh/junit.xml; do
+  [ -e "$f" ] && sum=$(sha256sum <"$f")
+  scenario fresh fresh.ini
+  refused "suite --junit $f" "--junit '$f'" \
+    "$dv" suite sc.ini fresh.ini --engines ode --out out --junit "$f"
+  [ -e "$f" ] && check 'same "$f" "$sum"' "suite --junit $f: changed"
+done
+check '[ ! -e out/fresh ]' "a refused suite wrote a report"
+sum=$(sha256sum <r/fast/report.md)
+refused "judge --junit onto its report.md" "--junit 'r/fast/report.md' lies inside" \
+  "$dv" judge sc.ini ode_run.csv --out r --junit r/fast/report.md
+check 'same r/fast/report.md "$sum"' "judge --junit: its report.md changed"
+"$dv" suite sc.ini --engines ode --out out --junit out/junit.xml >/dev/null 2>&1
+check '[ $? -ne 2 ] && grep -q "testsuite name" out/junit.xml' "suite --junit OUT/junit.xml was refused"
+
+# 5. a user's file inside a report directory diskval made
+echo keep >out/fast/notes.txt
+sum=$(sha256sum <out/fast/notes.txt)
+refused "suite over a report holding a user's file" "out/fast/notes.txt: diskval did not make it" \
+  "$dv" suite sc.ini --engines ode --out out
+refused "compare over a report holding a user's file" "out/fast/notes.txt: diskval did not make it" \
+  "$dv" compare sc.ini --engines ode --out out
+check 'same out/fast/notes.txt "$sum"' "a user's file in a report was lost"
+rm out/fast/notes.txt
+# a report made before marks listed its files is still replaced; a user's file in it is not
+echo "diskval output directory, format 1" >out/fast/.diskval-report
+echo keep >out/fast/notes.txt
+refused "a report with an old mark holding a user's file" "out/fast/notes.txt: diskval did not make it" \
+  "$dv" compare sc.ini --engines ode --out out
+rm out/fast/notes.txt
+"$dv" compare sc.ini --engines ode --out out >/dev/null 2>&1
+check '[ $? -ne 2 ] && grep -q "^report.json$" out/fast/.diskval-report' "a report with an old mark was not replaced"
+
+[ $fail -eq 0 ] && echo "user files (second pass): none lost"
+exit $fail
