@@ -26,7 +26,9 @@ static const char HELP[] =
     "report), and the JUnit XML to FILE. A TRAJECTORY is a CSV in the state form\n"
     "(t,theta[,phi,psi,x,y][,contact_x,contact_y][,theta_dot,phi_dot,psi_dot][,energy]) or the\n"
     "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
-    "--name: each trajectory's name in the report (default: its file name without extension).\n"
+    "--name: each trajectory's name in the report: 1 to 40 letters, digits, '_-.+', not\n"
+    "starting with '.' (as a scenario's). Default: its file name without extension, cut to 40\n"
+    "characters, and where that is no such name, every character but those '_'.\n"
     "--step H1,H2,H3[,...]: the time step of each of 3 to 8 trajectories of one engine, each\n"
     "smaller than the one before (halving, as verify refines, or any ratio of at least 1.1):\n"
     "their theta errors give the order and the extrapolated discrepancy, as verify does (exit 1\n"
@@ -35,14 +37,21 @@ static const char HELP[] =
     "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
     "(a bad file: one line naming its file, line and column) or error.\n";
 
-/* a name a report can carry: letters, digits, '_', '-', '.', not a linked engine's */
+#define MAX_NAME 40 /* a report's column */
+
+/* a name a report can carry: letters, digits, '_', '-', '.', '+', not a linked
+ * engine's, and a file name as a scenario's name is (no leading '.') */
 static int check_name(const char *name, dv_error *err) {
-  if (!*name || strlen(name) > 40)
-    return dv_fail(err, DV_EINPUT, "name '%.60s': 1 to 40 characters", name);
+  if (!*name || strlen(name) > MAX_NAME)
+    return dv_fail(err, DV_EINPUT, "name '%.60s': 1 to %d characters", name, MAX_NAME);
   for (const char *p = name; *p; p++)
-    if (!isalnum((unsigned char)*p) && *p != '_' && *p != '-' && *p != '.')
+    if (!isalnum((unsigned char)*p) && !strchr("_-.+", *p))
       return dv_fail(err, DV_EINPUT,
-                     "name '%.60s': only letters, digits, '_', '-' and '.' (give --name)", name);
+                     "name '%.60s': only letters, digits, '_', '-', '.' and '+' (give --name)",
+                     name);
+  char what[200];
+  if (dv_scenario_check_name(name, what, sizeof what)) /* a file in the report, as a scenario's */
+    return dv_fail(err, DV_EINPUT, "name %s (give --name)", what);
   if (dv_engine_find(name))
     return dv_fail(err, DV_EINPUT,
                    "name '%s' is a linked engine's: its report would carry that engine's "
@@ -98,6 +107,15 @@ static int print_convergence(const double *steps, const double *errors, size_t n
   return v.verdict != DV_CONVERGES;
 }
 
+/* a file's name (no more than MAX_NAME characters) made one a report can
+ * carry when it is not: every other character '_' */
+static void default_name(char *name) {
+  if (!check_name(name, NULL)) return;
+  for (char *p = name; *p; p++)
+    if (!isalnum((unsigned char)*p) && *p != '-' && *p != '+') *p = '_';
+  if (!*name) snprintf(name, 64, "trajectory");
+}
+
 /* each file's name: from --name, else its file name without its extension */
 static int make_names(const char *list, const dv_cli_list *files, char names[][64], dv_error *err) {
   const size_t n = files->n - 1;
@@ -114,7 +132,8 @@ static int make_names(const char *list, const dv_cli_list *files, char names[][6
       base = base ? base + 1 : path;
       const char *dot = strrchr(base, '.');
       const int len = dot && dot > base ? (int)(dot - base) : (int)strlen(base);
-      snprintf(names[i], 64, "%.*s", len > 63 ? 63 : len, base);
+      snprintf(names[i], 64, "%.*s", len > MAX_NAME ? MAX_NAME : len, base);
+      default_name(names[i]);
     }
   }
   for (size_t i = 0; i < n; i++) {

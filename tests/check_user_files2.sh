@@ -146,5 +146,17 @@ rm out/fast/notes.txt
 "$dv" compare sc.ini --engines ode --out out >/dev/null 2>&1
 check '[ $? -ne 2 ] && grep -q "^report.json$" out/fast/.diskval-report' "a report with an old mark was not replaced"
 
+# judge's names are file names as a scenario's are; a long file name gets a default that is one
+refused "judge --name .." "name '\.\.' is not a file name" "$dv" judge sc.ini ode_run.csv --name .. --out jn
+refused "judge --name .hidden" "name '\.hidden' starts with '\.'" \
+  "$dv" judge sc.ini ode_run.csv --name .hidden --out jn
+check '[ ! -e jn ]' "a refused judge wrote its report"
+long=a_trajectory_file_whose_name_runs_well_past_forty_characters
+cp ode_run.csv "$long.csv"
+cp ode_run.csv .hidden.csv
+"$dv" judge sc.ini "$long.csv" .hidden.csv --out jn >/dev/null 2>"$work/stderr"
+check '[ -f "jn/fast/${long:0:40}.csv" ] && [ -f jn/fast/_hidden.csv ]' \
+  "judge of a long or hidden file name: no report under a default name: $(cat "$work/stderr")"
+
 [ $fail -eq 0 ] && echo "user files (second pass): none lost"
 exit $fail
