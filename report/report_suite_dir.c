@@ -3,6 +3,7 @@
 
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,11 +69,15 @@ int dv_report_dir_check_junit(const char *junit, const char *out_dir, const dv_s
                               size_t n, const char *const *inputs, size_t ninputs, dv_error *err) {
   if (!junit || !strcmp(junit, "-")) return DV_OK;
   if (dv_io_check_output(junit, err)) return DV_EINPUT;
-  const char *base = strrchr(junit, '/') ? strrchr(junit, '/') + 1 : junit;
-  if (!strcmp(base, DV_IO_MARK) || !strcmp(base, DV_IO_LOCK_NAME) ||
-      !strncmp(base, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX)))
-    return dv_fail(err, DV_EINPUT, "--junit '%s': %s is the name of diskval's own files", junit,
-                   base);
+  char real[PATH_MAX];
+  for (int k = 0; k < 2; k++) { /* the name given, and the file a link leads to */
+    const char *path = k ? realpath(junit, real) : junit;
+    const char *base = path && strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    if (base && (!strcmp(base, DV_IO_MARK) || !strcmp(base, DV_IO_LOCK_NAME) ||
+                 !strncmp(base, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX))))
+      return dv_fail(err, DV_EINPUT, "--junit '%s': %s is the name of diskval's own files", junit,
+                     base);
+  }
   for (size_t i = 0; i < n + ninputs; i++) {
     const char *in = i < n ? scs[i].path : inputs[i - n];
     if (dv_io_same_file(junit, in))

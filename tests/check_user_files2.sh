@@ -120,6 +120,9 @@ for f in out/.diskval-report out/fast/report.md out/fast/report.json out/fresh/j
     "$dv" suite sc.ini fresh.ini --engines ode --out out --junit "$f"
   [ -e "$f" ] && check 'same "$f" "$sum"' "suite --junit $f: changed"
 done
+ln -s out/.diskval-report mark-link.xml
+refused "suite --junit a link to its mark" "diskval's own files" \
+  "$dv" suite sc.ini --engines ode --out out --junit mark-link.xml
 check '[ ! -e out/fresh ]' "a refused suite wrote a report"
 sum=$(sha256sum <r/fast/report.md)
 refused "judge --junit onto its report.md" "--junit 'r/fast/report.md' lies inside" \
