@@ -12,6 +12,7 @@
 
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "run_trajcheck.h"
 
 /* the columns either form may name, in DV_CSV_HEADER's order, then the pose form's */
 enum {
@@ -215,7 +216,8 @@ void dv_run_matrix_to_quat(const double R[9], double q[4]) {
 
 /* a pose-form row into its sample (rates zero when the file gives none: derived later) */
 static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
-                    const double v[NCOLS], long lineno, const double *prev, int vel, dv_sample *s) {
+                    const double v[NCOLS], long lineno, dv_trajfile *f, int vel, dv_sample *s) {
+  const double *prev = f->n ? f->s[f->n - 1].y : NULL;
   double q[4] = {v[C_QW], v[C_QX], v[C_QY], v[C_QZ]};
   const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (!(fabs(norm - 1.0) <= DV_TRAJ_QUAT_TOL))
@@ -230,6 +232,8 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
     p.omega[k] = v[C_WX + k];
   }
   dv_sample_from_pose(&sc->disk, geom, &p, v[C_T], prev, s);
+  f->line[f->n] = lineno;
+  dv_run_trajcheck_ground(f, sc, p.pos[2] + dv_geometry_contact_height(geom, p.R));
   if (!vel) s->slip = s->energy = NAN; /* without velocities: derived from the rates later */
   return DV_OK;
 }
@@ -361,7 +365,7 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
   memset(s, 0, sizeof *s);
   if (f->form == DV_TRAJ_POSE) {
     const int vel = f->has_rates;
-    if (pose_row(rd, sc, geom, v, lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s)) return DV_EINPUT;
+    if (pose_row(rd, sc, geom, v, lineno, f, vel, s)) return DV_EINPUT;
   } else {
     state_row(rd, v, s);
   }
@@ -422,6 +426,10 @@ static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *ge
     return fail_at(rd, lineno, 0, "%zu samples: at least %d needed to interpolate", f->n,
                    DV_TRAJ_MIN_SAMPLES);
   if (!f->has_rates && derive_rates(f, rd->err)) return DV_ESYSTEM;
+  if (f->form == DV_TRAJ_STATE && f->has_angles &&
+      dv_run_trajcheck_state(f, sc, rd->col[C_CX] + 1, rd->col[C_PH] + 1, rd->col[C_PS] + 1,
+                             rd->err))
+    return DV_EINPUT;
   const int contact = f->form == DV_TRAJ_STATE && rd->col[C_CX] < 0;
   const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd->col[C_E] < 0;
   complete(sc, geom, f, contact, energy);

@@ -52,6 +52,13 @@ typedef struct dv_trajfile {
   long *line;            /* each row's line in the file */
   double half_thickness; /* m: the disk the scenario describes */
   double step; /* s: the engine's time step from a "# dt = H" comment line, NAN when none */
+  /* the pose form's lowest point against the ground (run_trajcheck.h): the
+   * fault at row ground_row, DV_FAILURE_NONE when none */
+  dv_failure ground_fault;
+  size_t ground_row;
+  char ground_detail[240];
+  int airborne;     /* the lowest point is off the ground since air_since */
+  double air_since; /* s */
 } dv_trajfile;
 
 /* read path for sc into out: DV_OK, or DV_EINPUT / DV_ESYSTEM with err the

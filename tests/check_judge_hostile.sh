@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# check_judge_hostile.sh DISKVAL TO_POSE SCENARIO: files that must not pass.
+# ODE's run of SCENARIO (0.3 s) written by simulate, and in the pose form,
+# pass; these, made from them by awk, do not:
+#   - the pose 1 m above the ground: lost contact (run_trajcheck.h: the
+#     linked engines' limits, engine_watch.h);
+#   - the pose 0.5 m into the ground: diverged, "sank";
+#   - x, y 100 m from the contact point, or phi garbage: refused, "the
+#     contact point ... the columns disagree" (exit 2);
+#   - psi not turning while psi_dot says it does: refused, "psi turns by".
+set -u
+. "$(dirname "$0")/check_lib.sh"
+export LC_ALL=C
+dv=${1:?usage: check_judge_hostile.sh DISKVAL TO_POSE SCENARIO}
+to_pose=${2:?usage}
+sc=${3:?usage}
+command -v jq >/dev/null || { echo "SKIP: jq not installed"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+short=(--set scenario.duration=0.3)
+name=$(sed -n 's/^name *= *//p' "$sc" | head -1)
+r=$(sed -n 's/^radius *= *//p' "$sc" | head -1)
+"$dv" simulate "$sc" "${short[@]}" --engine ode --out "$work/run.csv" --quiet 2>/dev/null
+cd "$work" || exit 2
+"$to_pose" "$r" 0 <run.csv >pose.csv
+awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
+awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
+awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
+awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
+awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
+# judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
+# exit 2, the error line) and a failure saying FRAGMENT
+judge() {
+  local file=$1 want=$2 verdict=$3 fragment=$4
+  "$dv" judge "$sc" "${short[@]}" "$file.csv" --out "out_$file" --quiet >"$file.out" 2>"$file.err"
+  local code=$? report=out_$file/$name/report.json
+  check '[ $code -eq $want ]' "$file: exit status $code, not $want ($(head -1 "$file.err"))"
+  if [ "$want" -eq 2 ]; then
+    check '[ "$(wc -l <"$file.err")" -eq 1 ] && grep -q -- "$fragment" "$file.err"' \
+      "$file: not one line saying '$fragment': $(cat "$file.err")"
+    check '[ ! -e "$report" ]' "$file: a report for a refused file"
+    echo "$file: $(head -1 "$file.err" | cut -c1-200)"
+    return
+  fi
+  local outcome failures
+  outcome=$(jq -r ".engines.$file.outcome" "$report")
+  failures=$(jq -r ".engines.$file.failures[]" "$report")
+  check '[ "$outcome" = "$verdict" ]' "$file: $outcome, not $verdict"
+  check '[[ "$failures" == *"$fragment"* ]]' "$file: no failure says '$fragment': $failures"
+  echo "$file: $outcome; $(echo "$failures" | head -1 | cut -c1-200)"
+}
+judge run 0 agrees ""
+judge pose 0 agrees ""
+judge hover 1 "lost contact" "above the ground for"
+judge sunk 1 diverged "sank 0.5 m into the ground"
+judge far 2 "" "the columns disagree"
+judge phi_garbage 2 "" "the columns disagree"
+judge psi_still 2 "" "psi turns by"
+exit $fail
