@@ -70,8 +70,9 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
   for (int m = 0; m < DV_NMETRICS; m++)
     if (isnan(r->vs_ref.value[m]) && !isnan(r->tolerance[m]))
       not_judged(r, m,
-                 m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
-                                      : "no phi, psi, x, y in the file to compute it from");
+                 r->traj.n < 2          ? "the run ended at its first sample: nothing measured"
+                 : m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
+                                        : "no phi, psi, x, y in the file to compute it from");
   const double end = window_end(c, r);
   if (rp->ends_early && rp->t_end < end - 0.5 * c->sc->output_dt)
     snprintf(r->not_judged, sizeof r->not_judged,

@@ -165,6 +165,8 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
   const double t_ref = fmin(ref_end, ref->n ? ref->s[ref->n - 1].t : 0.0);
   const double t_eng = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   r->verdict = DV_VERDICT_AGREES;
+  if (r->vs_ref.n_window < 2) /* nothing compared past the shared start: measured nothing, not 0 */
+    for (int m = 0; m < DV_NMETRICS; m++) r->vs_ref.value[m] = r->vs_thin.value[m] = NAN;
   const double t0 = ref->n ? ref->s[0].t : 0.0, t_run = ref->n ? ref->s[ref->n - 1].t : 0.0;
   r->window_fraction = t_run > t0 ? (r->vs_ref.t_window - t0) / (t_run - t0) : 0.0;
   char why[160];
@@ -206,12 +208,18 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
   }
   const int judged =
       r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
-  for (int m = 0; m < DV_NMETRICS && judged; m++)
-    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) == DV_LIMIT_OVER) {
+  for (int m = 0; m < DV_NMETRICS && judged; m++) {
+    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) != DV_LIMIT_OVER) continue;
+    if (!isnan(r->vs_ref.value[m]))
       add_failure(r, "%s: %s: %s = %.6g > %.6g (%s)", sc->name, name, dv_metric_names[m],
                   r->vs_ref.value[m], r->tolerance[m], r->limit_why[m]);
-      if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
-    }
+    else if (r->verdict == DV_VERDICT_AGREES || r->verdict == DV_VERDICT_EXCEEDS)
+      add_failure(r, "%s: %s: %s not measured, which never passes its limit %.6g (%s)", sc->name,
+                  name, dv_metric_names[m], r->tolerance[m], r->limit_why[m]);
+    else /* the run's own failure says why: a failed run measures nothing more */
+      continue;
+    if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
+  }
   if (r->verdict == DV_VERDICT_AGREES && r->stats.outcome == DV_OUTCOME_EVENT &&
       t_eng < t_ref - 0.5 * sc->output_dt)
     r->verdict = DV_VERDICT_ENDED_BY_EVENT;

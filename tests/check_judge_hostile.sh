@@ -8,6 +8,9 @@
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
 #   - psi not turning while psi_dot says it does: refused, "psi turns by".
+# A run that failed at its first sample measured nothing: its metrics are
+# "not measured" on stdout and in report.md, null in report.json, never 0,
+# and no failure line compares a NaN with a limit.
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
@@ -56,4 +59,13 @@ judge sunk 1 diverged "sank 0.5 m into the ground"
 judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
+for file in sunk hover; do
+  check '! grep -qi "nan" "$file.out" out_$file/$name/report.md' \
+    "$file: a NaN printed: $(grep -hi nan "$file.out" out_$file/$name/report.md | head -3)"
+done
+check 'grep -q "theta not measured  path not measured" sunk.out' "sunk: $(head -1 sunk.out)"
+check '! grep -q "0.00e+00" sunk.out' "sunk: an unmeasured error printed as 0: $(head -1 sunk.out)"
+check '[ "$(jq .engines.sunk.theta_max_err out_sunk/$name/report.json)" = null ]' \
+  "sunk: theta_max_err $(jq .engines.sunk.theta_max_err out_sunk/$name/report.json), not null"
+check 'grep -q "| theta_max_err | not measured |" out_sunk/$name/report.md' "sunk: report.md"
 exit $fail
