@@ -158,6 +158,23 @@ static void judge_event(const dv_comparison *c, const dv_traj *ref, const dv_eng
   add_failure(r, "%s: %s: %s: %s", c->sc->name, r->engine->name, r->event.why, r->event.note);
 }
 
+/* every sample of eng equal to ref's, at the same times (NaN: a column eng
+ * lacks; the contact point where eng has no whole state): the reference's
+ * own output, under another name */
+static int same_samples(const dv_traj *eng, const dv_traj *ref) {
+  if (eng->n != ref->n || eng->n < 2) return 0;
+  for (size_t i = 0; i < eng->n; i++) {
+    const dv_sample *a = &eng->s[i], *b = &ref->s[i];
+    if (fabs(a->t - b->t) > 1e-9 * fmax(1.0, fabs(b->t))) return 0;
+    for (int k = 0; k < RED_NSTATE; k++)
+      if (!isnan(a->y[k]) && a->y[k] != b->y[k]) return 0;
+    /* the contact point follows from a whole state (the C API computes its own) */
+    for (int k = 0; isnan(a->y[RED_PH]) && k < 2; k++)
+      if (!isnan(a->contact[k]) && a->contact[k] != b->contact[k]) return 0;
+  }
+  return 1;
+}
+
 static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_stats *ref_st,
                   double ref_end, int itself, dv_engine_result *r) {
   const dv_scenario *sc = c->sc;
@@ -176,6 +193,12 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 "%s: %s: not judged: %s is the reference it would be compared with (the same "
                 "engine on the same scenario): its errors are zero and measure nothing",
                 sc->name, name, name);
+  } else if (same_samples(&r->traj, ref)) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r,
+                "%s: %s: not judged: its every sample is the reference's, exactly (the "
+                "reference's own output): its errors are zero and measure nothing",
+                sc->name, name);
   } else if (r->not_judged[0]) {
     r->verdict = DV_VERDICT_NOT_JUDGED;
     add_failure(r, "%s: %s: not judged: %s", sc->name, name, r->not_judged);

@@ -7,7 +7,9 @@
 #   - the pose 0.5 m into the ground: diverged, "sank";
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
-#   - psi not turning while psi_dot says it does: refused, "psi turns by".
+#   - psi not turning while psi_dot says it does: refused, "psi turns by";
+#   - the reference's own output (simulate --engine reduced): not judged;
+#     so is a sweep point of the reference at its tighter reference's settings.
 # A run that failed at its first sample measured nothing: its metrics are
 # "not measured" on stdout and in report.md, null in report.json, never 0,
 # and no failure line compares a NaN with a limit.
@@ -25,6 +27,7 @@ name=$(sed -n 's/^name *= *//p' "$sc" | head -1)
 r=$(sed -n 's/^radius *= *//p' "$sc" | head -1)
 "$dv" simulate "$sc" "${short[@]}" --engine ode --out "$work/run.csv" --quiet 2>/dev/null
 cd "$work" || exit 2
+"$dv" simulate "$sc" "${short[@]}" --engine reduced --out ref.csv --quiet 2>/dev/null
 "$to_pose" "$r" 0 <run.csv >pose.csv
 awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
 awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
@@ -59,6 +62,14 @@ judge sunk 1 diverged "sank 0.5 m into the ground"
 judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
+judge ref 1 "not judged" "the reference's own output"
+# a sweep point of the reference at the settings of the tighter reference it
+# is measured against is that reference: not judged, not ok, no Pareto star
+"$dv" sweep "$sc" "${short[@]}" --engine reduced --vary integrator=gsl-rk8pd-stepped \
+  --vary rtol=1e-14 --vary atol=1e-16 --out sweep --quiet >sweep.out 2>&1
+check 'grep -q "^reduced,gsl-rk8pd-stepped,1e-14,1e-16,.*,not judged,0$" sweep/sweep.csv' \
+  "sweep: the tighter reference's own settings: $(tail -1 sweep/sweep.csv)"
+check '[ "$(jq ".points[0].ok" sweep/sweep.json)" = false ]' "sweep: the point is ok"
 for file in sunk hover; do
   check '! grep -qi "nan" "$file.out" out_$file/$name/report.md' \
     "$file: a NaN printed: $(grep -hi nan "$file.out" out_$file/$name/report.md | head -3)"

@@ -7,7 +7,8 @@
  * disk's in that state, not MuJoCo's own: 1.3% apart); pushed as poses without velocities, the same
  * verdict and theta_max_err within 1e-9 (measured 4.2e-12 in the CLI's
  * equivalence test: the quaternion's round trip). Bad samples are refused
- * naming the sample. Re-measure: the test prints the differences (ctest -V -R api_judge). */
+ * naming the sample. The reference's own run pushed as states is not judged
+ * (never a pass). Re-measure: the test prints the differences (ctest -V -R api_judge). */
 #include <diskval/diskval.h>
 #include <math.h>
 #include <stdio.h>
@@ -77,6 +78,21 @@ int main(int argc, char **argv) {
   CHECK(th <= 1e-9, "poses: theta_max_err %.3g apart", th);
   printf("states: every metric within %.3g of compare's; poses: theta_max_err within %.3g\n", worst,
          th);
+  /* the reference's own run pushed as states is the reference: not judged, never a pass */
+  diskval_trajectory *ref = NULL, *mine = NULL;
+  diskval_comparison self;
+  CHECK(diskval_run(sc, "reduced", &ref, &err) >= 0, "run reduced: %s", err.msg);
+  CHECK(diskval_trajectory_new(sc, "mine", &mine, &err) == 0, "new: %s", err.msg);
+  for (size_t i = 0; ref && i < diskval_trajectory_size(ref); i++) {
+    diskval_sample x;
+    diskval_trajectory_sample(ref, i, &x);
+    diskval_trajectory_push(mine, x.t, &x.state, &err);
+  }
+  CHECK(diskval_judge(sc, mine, &self, &err) == 0, "judge the reference: %s", err.msg);
+  CHECK(!self.pass && !strcmp(self.verdict, "not judged"), "the reference's own run: %s, pass %d",
+        self.verdict, self.pass);
+  diskval_trajectory_free(ref);
+  diskval_trajectory_free(mine);
   /* the errors of a bad sample name it */
   diskval_state bad = {.theta = NAN};
   CHECK(diskval_trajectory_push(states, 10.0, &bad, &err) == -1 && strstr(err.msg, "states:"),
