@@ -9,7 +9,9 @@
 #     contact point ... the columns disagree" (exit 2);
 #   - psi not turning while psi_dot says it does: refused, "psi turns by";
 #   - the reference's own output (simulate --engine reduced): not judged;
-#     so is a sweep point of the reference at its tighter reference's settings.
+#     so is a sweep point of the reference at its tighter reference's settings;
+#   - a convergence study (--step) of one file given three times, or of errors
+#     that do not fall: not judged, exit 1, never "converges to the reference".
 # A run that failed at its first sample measured nothing: its metrics are
 # "not measured" on stdout and in report.md, null in report.json, never 0,
 # and no failure line compares a NaN with a limit.
@@ -29,11 +31,11 @@ r=$(sed -n 's/^radius *= *//p' "$sc" | head -1)
 cd "$work" || exit 2
 "$dv" simulate "$sc" "${short[@]}" --engine reduced --out ref.csv --quiet 2>/dev/null
 "$to_pose" "$r" 0 <run.csv >pose.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -63,6 +65,25 @@ judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
 judge ref 1 "not judged" "the reference's own output"
+# a convergence study of one file given three times, or of errors that do not
+# fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
+for k in 1 2 3; do
+  awk -F, -v OFS=, -v CONVFMT=%.17g -v k=$k 'NR > 1 && $1 > 0.1 { $2 += k * 1e-6 } 1' ref.csv |
+    cut -d, -f1,2,7-12 >near$k.csv
+done
+cp near1.csv again1.csv && cp near1.csv again2.csv
+steps=(--step 1e-3,5e-4,2.5e-4)
+"$dv" judge "$sc" "${short[@]}" near1.csv again1.csv again2.csv "${steps[@]}" --out same --quiet \
+  >same.out 2>&1
+code=$?
+check '[ $code -eq 1 ] && grep -q "not judged: the trajectories at dt 0.001 and 0.0005 have the same" same.out' \
+  "one file three times: exit status $code: $(grep -A1 convergence same.out)"
+"$dv" judge "$sc" "${short[@]}" near1.csv near2.csv near3.csv "${steps[@]}" --out flat --quiet \
+  >flat.out 2>&1
+code=$?
+check '[ $code -eq 1 ] && grep -q "not judged: the errors do not fall" flat.out' \
+  "errors that do not fall: exit status $code: $(grep -A1 convergence flat.out)"
+check '! grep -q "converges to the reference" same.out flat.out' "a study that shows nothing converges"
 # a sweep point of the reference at the settings of the tighter reference it
 # is measured against is that reference: not judged, not ok, no Pareto star
 "$dv" sweep "$sc" "${short[@]}" --engine reduced --vary integrator=gsl-rk8pd-stepped \

@@ -36,7 +36,7 @@ cut -d, -f1,2,7,8 run.csv >minimal.csv
 # put the contact point where the file does is refused: run_trajcheck.h)
 cut -d, -f1,2,7-12 run.csv >no_pose.csv
 awk -F, -v OFS=, 'NR > 1 && $1 > 1 { $2 += 0.05 } 1' no_pose.csv >theta_shift.csv
-awk -F, -v OFS=, -v OFMT=%.17g 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
 awk -F, 'NR == 1 || $1 <= 1.5' run.csv >half.csv
 awk -F, -v OFS=, 'NR == 1 { print; next }
   $1 > 2 { $2 = 1 - 2 * ($1 - 2); if ($2 <= 0.01) { $2 = 0.01; print; exit } } { print }' \
