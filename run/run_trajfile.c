@@ -348,8 +348,16 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
 /* append the row v (by column) read at lineno */
 static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom, dv_trajfile *f,
                    const double v[NCOLS], long lineno) {
+  const size_t max_rows = dv_run_trajfile_max_rows(sc);
+  if (f->n == max_rows)
+    return fail_at(rd, lineno, 0,
+                   "more than %zu rows: judged with the comparison they need more than "
+                   "memory_budget = %g GiB (%d bytes a row; raise it with --set "
+                   "scenario.memory_budget=GIB)",
+                   f->n, sc->memory_budget, DV_TRAJ_ROW_BYTES);
   if (f->n == f->cap) {
-    const size_t cap = f->cap ? 2 * f->cap : 1024;
+    size_t cap = f->cap ? 2 * f->cap : 1024;
+    if (cap > max_rows) cap = max_rows; /* reading takes no more than judging may */
     dv_sample *s = realloc(f->s, cap * sizeof *s);
     long *l = s ? realloc(f->line, cap * sizeof *l) : NULL;
     if (s) f->s = s;
@@ -400,6 +408,7 @@ static int comment_step(const reader *rd, const char *line, long lineno, double 
 static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geometry *geom,
                      dv_trajfile *f, long *lineno) {
   char line[MAX_LINE + 2];
+  int past = 0; /* rows read past the scenario's duration */
   while (fgets(line, sizeof line, fp)) {
     ++*lineno;
     size_t len = strlen(line);
@@ -413,6 +422,7 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     if (!len) return fail_at(rd, *lineno, 0, "an empty line");
     double v[NCOLS];
     if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
+    if (f->s[f->n - 1].t > sc->duration && ++past == DV_TRAJ_ROWS_PAST) break; /* not judged */
   }
   if (ferror(fp))
     return dv_fail(rd->err, DV_ESYSTEM, "%s: cannot read: %s", rd->path, strerror(errno));
@@ -476,6 +486,12 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
   if (!status) status = finish(&rd, sc, &geom, f, lineno + 1);
   if (status) dv_run_trajfile_free(f);
   return status;
+}
+
+size_t dv_run_trajfile_max_rows(const dv_scenario *sc) {
+  double samples;
+  const double left = sc->memory_budget - dv_scenario_memory_gib(sc, &samples);
+  return left > 0.0 ? (size_t)(left * 1024.0 * 1024.0 * 1024.0 / DV_TRAJ_ROW_BYTES) : 0;
 }
 
 void dv_run_trajfile_free(dv_trajfile *f) {
