@@ -8,7 +8,10 @@
  * verdict and theta_max_err within 1e-9 (measured 4.2e-12 in the CLI's
  * equivalence test: the quaternion's round trip). Bad samples are refused
  * naming the sample. The reference's own run pushed as states is not judged
- * (never a pass). Re-measure: the test prints the differences (ctest -V -R api_judge). */
+ * (never a pass). An error leaves its out safe to read; pushed samples
+ * compare as a run; diskval_scenario_new needs a name and names C for C's
+ * error when A = 0 (the uniform disk's). Re-measure: the test prints the differences (ctest -V -R
+ * api_judge). */
 #include <diskval/diskval.h>
 #include <math.h>
 #include <stdio.h>
@@ -111,7 +114,36 @@ int main(int argc, char **argv) {
   diskval_trajectory_push(few, 0.0, &x0.state, &err);
   CHECK(diskval_judge(sc, few, &got, &err) == -1 && strstr(err.msg, "at least 5"), "few: %s",
         err.msg);
+  /* an error leaves out safe to read: no metric, NAN by name */
+  CHECK(got.metrics.n == 0 && isnan(diskval_metric(&got.metrics, "theta_max_err")) && !got.pass,
+        "judge's out after an error: n %zu, pass %d", got.metrics.n, got.pass);
+  diskval_metrics m;
+  m.n = 7; /* as uninitialised memory might hold */
+  CHECK(diskval_compare_trajectories(few, NULL, &m, &err) == -1 && m.n == 0 &&
+            isnan(diskval_metric(&m, "theta_max_err")),
+        "compare_trajectories' out after an error: n %zu", m.n);
+  /* pushed samples are a trajectory of their own: compared, not "empty" */
+  CHECK(diskval_compare_trajectories(states, run, &m, &err) == 0 &&
+            diskval_metric(&m, "theta_max_err") == 0.0,
+        "pushed states against their run: %s, theta_max_err %g", err.msg,
+        diskval_metric(&m, "theta_max_err"));
   diskval_trajectory_free(few);
+  /* a scenario needs a name; with A = 0 (the uniform disk's) an error in C names C */
+  diskval_scenario *made = NULL;
+  diskval_state s0;
+  diskval_scenario_initial(sc, &s0);
+  CHECK(diskval_scenario_new(NULL, &disk, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "NULL name"),
+        "NULL name: %s", err.msg);
+  diskval_disk bad_c = disk;
+  bad_c.A = 0.0, bad_c.C = -1.0;
+  CHECK(diskval_scenario_new("c", &bad_c, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "disk.C"),
+        "A = 0, C = -1: %s", err.msg);
+  bad_c.C = 3.0 * disk.A; /* over 2A */
+  CHECK(diskval_scenario_new("c", &bad_c, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "disk.C"),
+        "A = 0, C = 3A: %s", err.msg);
   diskval_trajectory_free(run);
   diskval_trajectory_free(states);
   diskval_trajectory_free(poses);
