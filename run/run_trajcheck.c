@@ -42,8 +42,8 @@ static double contact_off(const dv_sample *s, const dv_geometry *geom, double *t
   return hypot(s->contact[0] - pt[0], s->contact[1] - pt[1]);
 }
 
-int dv_run_trajcheck_state(const dv_trajfile *f, const dv_scenario *sc, int ccol, int phcol,
-                           int pscol, dv_error *err) {
+int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int ccol,
+                             const int col[3], dv_error *err) {
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
   double rate_scale = sqrt(sc->disk.g / sc->disk.r);
   for (int k = RED_VTH; k <= RED_VPS; k++) rate_scale = fmax(rate_scale, fabs(sc->initial[k]));
@@ -59,8 +59,11 @@ int dv_run_trajcheck_state(const dv_trajfile *f, const dv_scenario *sc, int ccol
     if (!i || !f->has_rates) continue;
     const dv_sample *a = s - 1;
     const double dt = s->t - a->t;
-    static const int angle[2] = {RED_PH, RED_PS}, rate[2] = {RED_VPH, RED_VPS};
-    for (int k = 0; k < 2; k++) {
+    static const int angle[3] = {RED_TH, RED_PH, RED_PS}, rate[3] = {RED_VTH, RED_VPH, RED_VPS};
+    static const char *const name[3] = {"theta", "phi", "psi"};
+    if (f->form == DV_TRAJ_POSE && s->y[RED_TH] < 1e-3)
+      continue; /* phi, psi undefined lying flat */
+    for (int k = 0; k < 3; k++) {
       const double step = 0.5 * dt * (a->y[rate[k]] + s->y[rate[k]]);
       const double d = fabs(remainder(s->y[angle[k]] - a->y[angle[k]] - step, 2.0 * M_PI));
       const double scale = dt * fmax(rate_scale, fmax(fabs(a->y[rate[k]]), fabs(s->y[rate[k]])));
@@ -69,7 +72,7 @@ int dv_run_trajcheck_state(const dv_trajfile *f, const dv_scenario *sc, int ccol
                        "%.400s:%ld:%d: %s turns by %.6g rad from the line before, its rate by "
                        "%.6g rad (off by %.3g rad, more than %g of the step times the rate scale "
                        "%.3g rad/s): the columns disagree",
-                       f->path, f->line[i], k ? pscol : phcol, k ? "psi" : "phi",
+                       f->path, f->line[i], col[k], name[k],
                        remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI), step, d,
                        DV_TRAJ_RATE_TOL, rate_scale);
     }

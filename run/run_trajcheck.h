@@ -22,14 +22,17 @@
  * scene (steady_circle_cylinder: MuJoCo, ODE, Bullet), 0.0716 r = h sin theta
  * for a thin stand-in of a thick coin (quarter_spun: DART, Simbody). 100 m
  * away or a phi off by 1 rad at theta = 1 is 0.8 r and more.
- * With rates as well, each angle's step from row to row must match the
- * trapezoid of its rate within DV_TRAJ_RATE_TOL of the step times the larger
- * of the two rates and the scene's rate scale (mod 2 pi: wrapped angles are
- * fine). Measured on simulate of the reference and ODE on every scenario of
- * scenarios/ (output_dt as given): at most 0.057 (c_zero, phi_dot growing
- * near the ground), 0.0024 the thick coin model, 8e-6 MuJoCo's steady circle
- * sampled every 0.1 s; a psi that does not turn while psi_dot = -15 rad/s scores 1.
- * Re-measure: print d / scale in dv_run_trajcheck_state and judge those files.
+ * With rates as well (given, or the pose form's angular velocity), each of
+ * theta, phi and psi's step from row to row must match the trapezoid of its
+ * rate within DV_TRAJ_RATE_TOL of the step times the larger of the two rates
+ * and the scene's rate scale (mod 2 pi: wrapped angles are fine; a pose lying
+ * flat, theta < 1e-3, has no phi or psi). Measured on simulate of the
+ * reference, ODE and MuJoCo on every scenario of scenarios/ and
+ * quarter_spun, as written and in the pose form: at most 0.057 (c_zero, phi
+ * near the ground), theta 0.023 (separatrix); 0.0012 the thick coin model,
+ * MuJoCo's own poses (check_judge_mujoco_pose.sh) less. A psi that does not
+ * turn while psi_dot = -15 rad/s scores 1.
+ * Re-measure: print d / scale in dv_run_trajcheck_columns and judge those files.
  */
 #ifndef DV_RUN_TRAJCHECK_H
 #define DV_RUN_TRAJCHECK_H
@@ -46,11 +49,12 @@
  * above the ground: the first fault into f->ground_* */
 void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double height);
 
-/* the state form's columns against each other (contact: the file gives the
- * contact point, rates: the rates; ccol, rcol the 1-based columns of
- * contact_x and phi_dot for the message): DV_OK, or DV_EINPUT with err
- * "PATH:LINE:COLUMN: what" */
-int dv_run_trajcheck_state(const dv_trajfile *f, const dv_scenario *sc, int ccol, int phcol,
-                           int pscol, dv_error *err);
+/* the columns against each other: the contact point given (ccol, its 1-based
+ * column; 0: none) against the state's, and with rates (given, or the pose
+ * form's angular velocity) each angle's step against its rate (col: the
+ * 1-based columns of theta, phi, psi for the message): DV_OK, or DV_EINPUT
+ * with err "PATH:LINE:COLUMN: what" */
+int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int ccol,
+                             const int col[3], dv_error *err);
 
 #endif

@@ -436,14 +436,16 @@ static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *ge
     return fail_at(rd, lineno, 0, "%zu samples: at least %d needed to interpolate", f->n,
                    DV_TRAJ_MIN_SAMPLES);
   if (!f->has_rates && derive_rates(f, rd->err)) return DV_ESYSTEM;
-  if (f->form == DV_TRAJ_STATE && f->has_angles &&
-      dv_run_trajcheck_state(f, sc, rd->col[C_CX] + 1, rd->col[C_PH] + 1, rd->col[C_PS] + 1,
-                             rd->err))
-    return DV_EINPUT;
   const int contact = f->form == DV_TRAJ_STATE && rd->col[C_CX] < 0;
   const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd->col[C_E] < 0;
   complete(sc, geom, f, contact, energy);
-  return check_start(rd, sc, f);
+  if (check_start(rd, sc, f)) return DV_EINPUT;
+  const int pose = f->form == DV_TRAJ_POSE;
+  const int cols[3] = {rd->col[pose ? C_QW : C_TH] + 1, rd->col[pose ? C_QW : C_PH] + 1,
+                       rd->col[pose ? C_QW : C_PS] + 1};
+  if (f->has_angles && dv_run_trajcheck_columns(f, sc, pose ? 0 : rd->col[C_CX] + 1, cols, rd->err))
+    return DV_EINPUT;
+  return DV_OK;
 }
 
 int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f, dv_error *err) {

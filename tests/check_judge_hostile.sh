@@ -7,7 +7,8 @@
 #   - the pose 0.5 m into the ground: diverged, "sank";
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
-#   - psi not turning while psi_dot says it does: refused, "psi turns by";
+#   - psi not turning while psi_dot says it does, a theta_dot 20 rad/s off
+#     theta's, a pose whose velocities are all 0: refused, "turns by";
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
@@ -36,6 +37,8 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $9 += 20 } 1' run.csv >theta_dot_off.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { for (k = 9; k <= 14; k++) $k = 0 } 1' pose.csv >still_pose.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -64,6 +67,8 @@ judge sunk 1 diverged "sank 0.5 m into the ground"
 judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
+judge theta_dot_off 2 "" "theta turns by"
+judge still_pose 2 "" "turns by"
 judge ref 1 "not judged" "the reference's own output"
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
