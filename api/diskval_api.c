@@ -61,11 +61,18 @@ static int scenario_load(const char *path, const char *const *overrides, size_t 
 static int scenario_new(const char *name, const diskval_disk *disk, const diskval_state *initial,
                         double duration, double output_dt, diskval_scenario **out,
                         diskval_error *err) {
-  if (!disk || !initial || !out)
-    return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_new: NULL argument");
-  const char *nm = name && name[0] ? name : "scenario";
-  if (strlen(nm) >= sizeof((dv_scenario *)0)->name)
-    return dv_fail(as_dv(err), DV_EINPUT, "scenario.name: '%s' is too long", nm);
+  if (!name || !disk || !initial || !out)
+    return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_new: NULL %s",
+                   !name      ? "name"
+                   : !disk    ? "disk"
+                   : !initial ? "initial state"
+                              : "out");
+  char what[160];
+  if (strlen(name) >= sizeof((dv_scenario *)0)->name)
+    return dv_fail(as_dv(err), DV_EINPUT, "scenario.name: '%.60s...' is too long", name);
+  if (dv_scenario_check_name(name, what, sizeof what))
+    return dv_fail(as_dv(err), DV_EINPUT, "scenario.name: '%s': %s", name, what);
+  const char *nm = name;
   diskval_scenario *s = calloc(1, sizeof *s);
   if (!s) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario");
   dv_scenario *sc = &s->sc;
@@ -93,11 +100,14 @@ static int scenario_new(const char *name, const diskval_disk *disk, const diskva
       {"initial", "x", initial->x},
       {"initial", "y", initial->y},
   };
-  const int uniform = disk->A == 0.0 && disk->C == 0.0; /* the header's convention */
+  /* the header's convention: A = 0, the uniform disk's A (no body has A = 0), so an
+   * error about the C given names C; both 0, both the uniform disk's (C = 0 with
+   * an A given is a C of 0) */
+  const int derive_a = disk->A == 0.0, derive_c = derive_a && disk->C == 0.0;
   int status = DV_OK;
   for (size_t i = 0; i < sizeof keys / sizeof keys[0] && !status; i++)
-    if (!(uniform && !strcmp(keys[i].section, "disk") &&
-          (keys[i].key[0] == 'A' || keys[i].key[0] == 'C')))
+    if (!(!strcmp(keys[i].section, "disk") &&
+          ((keys[i].key[0] == 'A' && derive_a) || (keys[i].key[0] == 'C' && derive_c))))
       status = dv_scenario_set_core(sc, keys[i].section, keys[i].key, keys[i].v, as_dv(err));
   if (!status) status = dv_scenario_check_core(sc, as_dv(err));
   if (!status) status = dv_engine_derive_settings(sc, as_dv(err)); /* as a load derives them */
@@ -234,18 +244,63 @@ static void metrics_out(const dv_metrics *m, diskval_metrics *out) {
   out->t_window = m->t_window;
 }
 
+/* metrics that hold nothing: no names, every value NAN (diskval_metric gives NAN) */
+static void metrics_none(diskval_metrics *out) {
+  memset(out, 0, sizeof *out);
+  for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++) out->value[i] = NAN;
+  out->t_window = NAN;
+}
+
+/* tr's samples as a run: a run's own, or those pushed (diskval_trajectory_new),
+ * ended on a copy (what they do not give derived, the start checked) into *copy */
+static int as_run(const diskval_trajectory *tr, dv_trajfile *copy, dv_traj *view,
+                  diskval_error *err) {
+  memset(copy, 0, sizeof *copy);
+  if (!tr->sc) {
+    *view = tr->traj;
+    return DV_OK;
+  }
+  *copy = tr->file;
+  copy->s = malloc((copy->n ? copy->n : 1) * sizeof *copy->s);
+  copy->line = malloc((copy->n ? copy->n : 1) * sizeof *copy->line);
+  if (!copy->s || !copy->line) {
+    dv_run_trajfile_free(copy);
+    return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory");
+  }
+  memcpy(copy->s, tr->file.s, copy->n * sizeof *copy->s);
+  memcpy(copy->line, tr->file.line, copy->n * sizeof *copy->line);
+  copy->cap = copy->n;
+  const int status = dv_run_trajfile_end(copy, tr->sc, as_dv(err));
+  if (status) return dv_run_trajfile_free(copy), status;
+  memset(view, 0, sizeof *view);
+  view->s = copy->s;
+  view->n = copy->n;
+  return DV_OK;
+}
+
 /* metrics of one trajectory against another */
 int diskval_compare_trajectories(const diskval_trajectory *engine,
                                  const diskval_trajectory *reference, diskval_metrics *out,
                                  diskval_error *err) {
+  if (out) metrics_none(out); /* safe to read whatever happens */
   if (!engine || !reference || !out)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_compare_trajectories: NULL argument");
-  if (engine->traj.n == 0 || reference->traj.n == 0)
-    return dv_fail(as_dv(err), DV_EINPUT, "an empty trajectory");
-  dv_metrics m;
-  dv_run_compare(&engine->traj, &reference->traj, INFINITY, &m);
-  metrics_out(&m, out);
-  return DV_OK;
+  if (!diskval_trajectory_size(engine) || !diskval_trajectory_size(reference))
+    return dv_fail(as_dv(err), DV_EINPUT,
+                   "diskval_compare_trajectories: the %s trajectory is empty",
+                   diskval_trajectory_size(engine) ? "reference" : "engine");
+  dv_trajfile ce, cr;
+  dv_traj e, r;
+  int status = as_run(engine, &ce, &e, err);
+  if (!status) status = as_run(reference, &cr, &r, err);
+  if (!status) {
+    dv_metrics m;
+    dv_run_compare(&e, &r, INFINITY, &m);
+    metrics_out(&m, out);
+    dv_run_trajfile_free(&cr);
+  }
+  dv_run_trajfile_free(&ce);
+  return status;
 }
 
 /* a comparison's result for engine result r in the public layout */
@@ -274,8 +329,9 @@ int diskval_trajectory_new(const diskval_scenario *sc, const char *name, diskval
 int diskval_trajectory_push(diskval_trajectory *tr, double t, const diskval_state *s,
                             diskval_error *err) {
   if (!tr || !s || !tr->sc)
-    return dv_fail(as_dv(err), DV_EINPUT,
-                   "diskval_trajectory_push: NULL, or a trajectory not from diskval_trajectory_new");
+    return dv_fail(
+        as_dv(err), DV_EINPUT,
+        "diskval_trajectory_push: NULL, or a trajectory not from diskval_trajectory_new");
   double y[RED_NSTATE];
   y[RED_TH] = s->theta, y[RED_VTH] = s->theta_dot, y[RED_VPH] = s->phi_dot;
   y[RED_VPS] = s->psi_dot, y[RED_PH] = s->phi, y[RED_PS] = s->psi, y[RED_X] = s->x, y[RED_Y] = s->y;
@@ -293,9 +349,18 @@ int diskval_trajectory_push_pose(diskval_trajectory *tr, double t, const diskval
                                    as_dv(err));
 }
 
+/* a comparison that holds nothing: not judged, no metrics (an error's out) */
+static void comparison_none(diskval_comparison *out) {
+  memset(out, 0, sizeof *out);
+  snprintf(out->verdict, sizeof out->verdict, "%s", dv_run_verdict_name(DV_VERDICT_NOT_JUDGED));
+  metrics_none(&out->metrics);
+  for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++) out->limit[i] = NAN;
+}
+
 /* judge the caller's samples as diskval judge judges a file */
 static int judge(const diskval_scenario *sc, const diskval_trajectory *tr, diskval_comparison *out,
                  diskval_error *err) {
+  if (out) comparison_none(out);
   if (!sc || !tr || !out || !tr->sc)
     return dv_fail(as_dv(err), DV_EINPUT,
                    "diskval_judge: NULL, or a trajectory not from diskval_trajectory_new");
@@ -323,8 +388,8 @@ static int judge(const diskval_scenario *sc, const diskval_trajectory *tr, diskv
   return status < 0 ? status : DV_OK;
 }
 
-int diskval_judge(const diskval_scenario *sc, const diskval_trajectory *tr,
-                  diskval_comparison *out, diskval_error *err) {
+int diskval_judge(const diskval_scenario *sc, const diskval_trajectory *tr, diskval_comparison *out,
+                  diskval_error *err) {
   gsl_error_handler_t *handler = gsl_set_error_handler_off();
   const int status = judge(sc, tr, out, err);
   gsl_set_error_handler(handler);
@@ -334,6 +399,7 @@ int diskval_judge(const diskval_scenario *sc, const diskval_trajectory *tr,
 /* run engine on sc and judge it against its reference */
 static int compare(const diskval_scenario *sc, const char *engine, diskval_comparison *out,
                    diskval_error *err) {
+  if (out) comparison_none(out);
   if (!sc || !out) return dv_fail(as_dv(err), DV_EINPUT, "diskval_compare: NULL argument");
   const dv_engine_type *e[2] = {find_engine(engine, err), NULL};
   if (!e[0]) return DV_EINPUT;

@@ -32,8 +32,9 @@ static const char HELP[] =
     "--step H1,H2,H3[,...]: the time step of each of 3 to 8 trajectories of one engine, each\n"
     "smaller than the one before (halving, as verify refines, or any ratio of at least 1.1):\n"
     "their theta errors give the order and the extrapolated discrepancy, as verify does (exit 1\n"
-    "unless it converges to the reference). Without --step: the files' own \"# dt = H\" comment\n"
-    "lines, when 3 or more files all give one.\n"
+    "unless it converges to the reference; errors that do not fall, or two the same: not\n"
+    "judged). Without --step: the files' own \"# dt = H\" comment lines, when 3 or more files\n"
+    "all give one.\n"
     "Exit status: 0 all pass, 1 a tolerance failed or nothing could be judged, 2 bad input\n"
     "(a bad file: one line naming its file, line and column) or error.\n";
 
@@ -100,6 +101,20 @@ static int print_convergence(const double *steps, const double *errors, size_t n
   if (v.uncertainty > 0.0)
     printf(", uncertainty %.2e%s", v.uncertainty,
            n == DV_CONVERGE_MIN_LEVELS ? " (grid convergence index, 3 levels)" : "");
+  /* errors that do not change at all come from one run given twice, and
+   * errors that do not fall show no convergence, whatever their size */
+  for (size_t i = 1; i < n; i++)
+    if (errors[i] == errors[i - 1]) {
+      printf(
+          "): not judged: the trajectories at dt %.3g and %.3g have the same theta error "
+          "exactly (one run given twice?): errors that do not change cannot show convergence\n",
+          steps[i - 1], steps[i]);
+      return 1;
+    }
+  if (isnan(v.order) && v.verdict == DV_CONVERGES) {
+    printf("): not judged: the errors do not fall with the step: no convergence shown\n");
+    return 1;
+  }
   printf("): %s%s\n", dv_search_convergence_name(v.verdict),
          v.verdict == DV_CONVERGES_ELSEWHERE
              ? " (no cause: recorded trajectories cannot be re-run with their knobs turned)"

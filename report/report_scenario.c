@@ -18,6 +18,13 @@
 #include "red_invariants.h"
 #include "red_potential.h"
 
+/* v in fmt, or "not measured" for a NaN: a quantity nothing measured is never a number */
+static const char *measured(char *buf, size_t size, const char *fmt, double v) {
+  if (isnan(v)) return snprintf(buf, size, "not measured"), buf;
+  snprintf(buf, size, fmt, v);
+  return buf;
+}
+
 /* the trajectory tr as dir/name */
 static int write_csv(const char *dir, const char *name, const dv_traj *tr, dv_error *err) {
   dv_io_file out;
@@ -275,10 +282,15 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     char rate[32] = "n/a"; /* the run simulated less than one output interval */
     const double per_sim_s = dv_run_cost_rate(r->wall_s, sim, sc->output_dt);
     if (!isnan(per_sim_s)) snprintf(rate, sizeof rate, "%.3g", per_sim_s);
-    fprintf(fp, "| %s | %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %s |\n",
-            r->engine->name, dv_run_verdict_name(r->verdict), ref, v[DV_THETA_MAX_ERR],
-            v[DV_THETA_RMS_ERR], v[DV_PATH_MAX_ERR], v[DV_PATH_RMS_ERR], v[DV_PATH_HAUSDORFF],
-            v[DV_ENERGY_DRIFT], v[DV_SLIP_MAX], r->vs_thin.value[DV_THETA_MAX_ERR], rate);
+    static const dv_metric_id cols[] = {DV_THETA_MAX_ERR, DV_THETA_RMS_ERR,  DV_PATH_MAX_ERR,
+                                        DV_PATH_RMS_ERR,  DV_PATH_HAUSDORFF, DV_ENERGY_DRIFT,
+                                        DV_SLIP_MAX};
+    fprintf(fp, "| %s | %s | %s |", r->engine->name, dv_run_verdict_name(r->verdict), ref);
+    char cell[32];
+    for (size_t k = 0; k < sizeof cols / sizeof *cols; k++)
+      fprintf(fp, " %s |", measured(cell, sizeof cell, "%.3g", v[cols[k]]));
+    fprintf(fp, " %s | %s |\n",
+            measured(cell, sizeof cell, "%.3g", r->vs_thin.value[DV_THETA_MAX_ERR]), rate);
   }
   for (size_t i = 0; i < c->n; i++) { /* what decided: each metric against its limit */
     const dv_engine_result *r = &c->r[i];
@@ -311,9 +323,15 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     fprintf(fp,
             "| metric | value | limit | margin (value / limit) | limit from |\n"
             "|---|---|---|---|---|\n");
-    for (int m = 0; m < DV_NMETRICS; m++)
-      fprintf(fp, "| %s | %.3g | %.3g | %.3g | %s |\n", dv_metric_names[m], r->vs_ref.value[m],
-              r->tolerance[m], r->vs_ref.value[m] / r->tolerance[m], r->limit_why[m]);
+    for (int m = 0; m < DV_NMETRICS; m++) {
+      char val[32], lim[32], margin[32];
+      measured(val, sizeof val, "%.3g", r->vs_ref.value[m]);
+      measured(lim, sizeof lim, "%.3g", r->tolerance[m]);
+      measured(margin, sizeof margin, "%.3g", r->vs_ref.value[m] / r->tolerance[m]);
+      fprintf(fp, "| %s | %s | %s | %s | %s |\n", dv_metric_names[m], val,
+              isnan(r->tolerance[m]) ? "none" : lim,
+              isnan(r->vs_ref.value[m] / r->tolerance[m]) ? "-" : margin, r->limit_why[m]);
+    }
   }
   for (size_t i = 0; i < c->n; i++)
     for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);
@@ -453,9 +471,12 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
 void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
   for (size_t i = 0; i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
-    fprintf(fp, "%-24s %-8s %-18s theta %.2e rad  path %.2e m  %s\n", c->sc->name, r->engine->name,
-            dv_run_verdict_name(r->verdict), r->vs_ref.value[DV_THETA_MAX_ERR],
-            r->vs_ref.value[DV_PATH_MAX_ERR], r->pass ? "pass" : "FAIL");
+    char th[32], path[32];
+    fprintf(fp, "%-24s %-8s %-18s theta %s  path %s  %s\n", c->sc->name, r->engine->name,
+            dv_run_verdict_name(r->verdict),
+            measured(th, sizeof th, "%.2e rad", r->vs_ref.value[DV_THETA_MAX_ERR]),
+            measured(path, sizeof path, "%.2e m", r->vs_ref.value[DV_PATH_MAX_ERR]),
+            r->pass ? "pass" : "FAIL");
     fprintf(fp, "    decided by %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);
     if (r->event.judged && r->event.agrees) fprintf(fp, "    lies down: %s\n", r->event.note);

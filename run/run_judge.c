@@ -70,8 +70,9 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
   for (int m = 0; m < DV_NMETRICS; m++)
     if (isnan(r->vs_ref.value[m]) && !isnan(r->tolerance[m]))
       not_judged(r, m,
-                 m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
-                                      : "no phi, psi, x, y in the file to compute it from");
+                 r->traj.n < 2          ? "the run ended at its first sample: nothing measured"
+                 : m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
+                                        : "no phi, psi, x, y in the file to compute it from");
   const double end = window_end(c, r);
   if (rp->ends_early && rp->t_end < end - 0.5 * c->sc->output_dt)
     snprintf(r->not_judged, sizeof r->not_judged,
@@ -86,7 +87,14 @@ int dv_run_judge(const dv_scenario *sc, dv_replay *replays, size_t n, dv_compari
   const dv_engine_type *types[DV_MAX_ENGINES];
   if (n > DV_MAX_ENGINES)
     return dv_fail(err, DV_EINPUT, "at most %d trajectories at a time", DV_MAX_ENGINES);
-  for (size_t i = 0; i < n; i++) types[i] = &replays[i].type;
+  size_t rows = 0;
+  for (size_t i = 0; i < n; i++) types[i] = &replays[i].type, rows += replays[i].file->n;
+  if (rows > dv_run_trajfile_max_rows(sc))
+    return dv_fail(err, DV_EINPUT,
+                   "%zu rows in %zu trajectories: judged with the comparison they need more than "
+                   "memory_budget = %g GiB (%d bytes a row; raise it with --set "
+                   "scenario.memory_budget=GIB)",
+                   rows, n, sc->memory_budget, DV_TRAJ_ROW_BYTES);
   judge_ctx ctx = {0, {{0}}};
   const dv_run_hook hook = {before_verdict, &ctx};
   const int status = dv_run_scenario_hooked(sc, NULL, types, n, &hook, c, err);

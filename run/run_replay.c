@@ -191,7 +191,6 @@ static void interpolate(replay_run *r, double t, size_t below, dv_sample *out) {
 }
 
 static int replay_advance(void *p, double t, dv_sample *out, dv_error *err) {
-  (void)err;
   replay_run *r = p;
   const double t_end = r->t[r->n - 1], tol = 1e-9 * fmax(1.0, fabs(t));
   /* a file reaching the duration to 1e-6 of it covers it: times summed step
@@ -199,6 +198,15 @@ static int replay_advance(void *p, double t, dv_sample *out, dv_error *err) {
   const int short_file = !r->lay_down && t_end < r->duration * (1.0 - 1e-6) - 1e-9;
   size_t below;
   r->rp->t_end = fmax(r->rp->t_end, fmin(t, t_end));
+  const dv_trajfile *f = r->f;
+  if (f->ground_fault && f->ground_row < r->n && t >= f->s[f->ground_row].t - tol) {
+    /* the pose left the ground or sank, as a linked engine's watch would see it */
+    r->stats.outcome = dv_failure_outcome(f->ground_fault);
+    r->stats.failure = f->ground_fault;
+    snprintf(r->stats.detail, sizeof r->stats.detail, "%s", f->ground_detail);
+    r->stats.steps = (long)f->ground_row + 1;
+    return dv_fail(err, DV_ENUMERIC, "%s", f->ground_detail);
+  }
   if (t >= t_end - tol && (r->lay_down || short_file)) { /* the run ends with the file */
     *out = r->f->s[r->n - 1];
     r->stats.outcome = DV_OUTCOME_EVENT;

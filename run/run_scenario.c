@@ -158,6 +158,23 @@ static void judge_event(const dv_comparison *c, const dv_traj *ref, const dv_eng
   add_failure(r, "%s: %s: %s: %s", c->sc->name, r->engine->name, r->event.why, r->event.note);
 }
 
+/* every sample of eng equal to ref's, at the same times (NaN: a column eng
+ * lacks; the contact point where eng has no whole state): the reference's
+ * own output, under another name */
+static int same_samples(const dv_traj *eng, const dv_traj *ref) {
+  if (eng->n != ref->n || eng->n < 2) return 0;
+  for (size_t i = 0; i < eng->n; i++) {
+    const dv_sample *a = &eng->s[i], *b = &ref->s[i];
+    if (fabs(a->t - b->t) > 1e-9 * fmax(1.0, fabs(b->t))) return 0;
+    for (int k = 0; k < RED_NSTATE; k++)
+      if (!isnan(a->y[k]) && a->y[k] != b->y[k]) return 0;
+    /* the contact point follows from a whole state (the C API computes its own) */
+    for (int k = 0; isnan(a->y[RED_PH]) && k < 2; k++)
+      if (!isnan(a->contact[k]) && a->contact[k] != b->contact[k]) return 0;
+  }
+  return 1;
+}
+
 static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_stats *ref_st,
                   double ref_end, int itself, dv_engine_result *r) {
   const dv_scenario *sc = c->sc;
@@ -165,6 +182,8 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
   const double t_ref = fmin(ref_end, ref->n ? ref->s[ref->n - 1].t : 0.0);
   const double t_eng = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   r->verdict = DV_VERDICT_AGREES;
+  if (r->vs_ref.n_window < 2) /* nothing compared past the shared start: measured nothing, not 0 */
+    for (int m = 0; m < DV_NMETRICS; m++) r->vs_ref.value[m] = r->vs_thin.value[m] = NAN;
   const double t0 = ref->n ? ref->s[0].t : 0.0, t_run = ref->n ? ref->s[ref->n - 1].t : 0.0;
   r->window_fraction = t_run > t0 ? (r->vs_ref.t_window - t0) / (t_run - t0) : 0.0;
   char why[160];
@@ -174,6 +193,12 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 "%s: %s: not judged: %s is the reference it would be compared with (the same "
                 "engine on the same scenario): its errors are zero and measure nothing",
                 sc->name, name, name);
+  } else if (same_samples(&r->traj, ref)) {
+    r->verdict = DV_VERDICT_NOT_JUDGED;
+    add_failure(r,
+                "%s: %s: not judged: its every sample is the reference's, exactly (the "
+                "reference's own output): its errors are zero and measure nothing",
+                sc->name, name);
   } else if (r->not_judged[0]) {
     r->verdict = DV_VERDICT_NOT_JUDGED;
     add_failure(r, "%s: %s: not judged: %s", sc->name, name, r->not_judged);
@@ -206,12 +231,18 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
   }
   const int judged =
       r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
-  for (int m = 0; m < DV_NMETRICS && judged; m++)
-    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) == DV_LIMIT_OVER) {
+  for (int m = 0; m < DV_NMETRICS && judged; m++) {
+    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) != DV_LIMIT_OVER) continue;
+    if (!isnan(r->vs_ref.value[m]))
       add_failure(r, "%s: %s: %s = %.6g > %.6g (%s)", sc->name, name, dv_metric_names[m],
                   r->vs_ref.value[m], r->tolerance[m], r->limit_why[m]);
-      if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
-    }
+    else if (r->verdict == DV_VERDICT_AGREES || r->verdict == DV_VERDICT_EXCEEDS)
+      add_failure(r, "%s: %s: %s not measured, which never passes its limit %.6g (%s)", sc->name,
+                  name, dv_metric_names[m], r->tolerance[m], r->limit_why[m]);
+    else /* the run's own failure says why: a failed run measures nothing more */
+      continue;
+    if (r->verdict == DV_VERDICT_AGREES) r->verdict = DV_VERDICT_EXCEEDS;
+  }
   if (r->verdict == DV_VERDICT_AGREES && r->stats.outcome == DV_OUTCOME_EVENT &&
       t_eng < t_ref - 0.5 * sc->output_dt)
     r->verdict = DV_VERDICT_ENDED_BY_EVENT;

@@ -12,6 +12,7 @@
 
 #include "dv_pose.h"
 #include "dv_reference.h"
+#include "run_trajcheck.h"
 
 /* the columns either form may name, in DV_CSV_HEADER's order, then the pose form's */
 enum {
@@ -215,7 +216,8 @@ void dv_run_matrix_to_quat(const double R[9], double q[4]) {
 
 /* a pose-form row into its sample (rates zero when the file gives none: derived later) */
 static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom,
-                    const double v[NCOLS], long lineno, const double *prev, int vel, dv_sample *s) {
+                    const double v[NCOLS], long lineno, dv_trajfile *f, int vel, dv_sample *s) {
+  const double *prev = f->n ? f->s[f->n - 1].y : NULL;
   double q[4] = {v[C_QW], v[C_QX], v[C_QY], v[C_QZ]};
   const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (!(fabs(norm - 1.0) <= DV_TRAJ_QUAT_TOL))
@@ -230,6 +232,8 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
     p.omega[k] = v[C_WX + k];
   }
   dv_sample_from_pose(&sc->disk, geom, &p, v[C_T], prev, s);
+  f->line[f->n] = lineno;
+  dv_run_trajcheck_ground(f, sc, p.pos[2] + dv_geometry_contact_height(geom, p.R));
   if (!vel) s->slip = s->energy = NAN; /* without velocities: derived from the rates later */
   return DV_OK;
 }
@@ -344,8 +348,16 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
 /* append the row v (by column) read at lineno */
 static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom, dv_trajfile *f,
                    const double v[NCOLS], long lineno) {
+  const size_t max_rows = dv_run_trajfile_max_rows(sc);
+  if (f->n == max_rows)
+    return fail_at(rd, lineno, 0,
+                   "more than %zu rows: judged with the comparison they need more than "
+                   "memory_budget = %g GiB (%d bytes a row; raise it with --set "
+                   "scenario.memory_budget=GIB)",
+                   f->n, sc->memory_budget, DV_TRAJ_ROW_BYTES);
   if (f->n == f->cap) {
-    const size_t cap = f->cap ? 2 * f->cap : 1024;
+    size_t cap = f->cap ? 2 * f->cap : 1024;
+    if (cap > max_rows) cap = max_rows; /* reading takes no more than judging may */
     dv_sample *s = realloc(f->s, cap * sizeof *s);
     long *l = s ? realloc(f->line, cap * sizeof *l) : NULL;
     if (s) f->s = s;
@@ -361,7 +373,7 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
   memset(s, 0, sizeof *s);
   if (f->form == DV_TRAJ_POSE) {
     const int vel = f->has_rates;
-    if (pose_row(rd, sc, geom, v, lineno, f->n ? f->s[f->n - 1].y : NULL, vel, s)) return DV_EINPUT;
+    if (pose_row(rd, sc, geom, v, lineno, f, vel, s)) return DV_EINPUT;
   } else {
     state_row(rd, v, s);
   }
@@ -396,6 +408,7 @@ static int comment_step(const reader *rd, const char *line, long lineno, double 
 static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geometry *geom,
                      dv_trajfile *f, long *lineno) {
   char line[MAX_LINE + 2];
+  int past = 0; /* rows read past the scenario's duration */
   while (fgets(line, sizeof line, fp)) {
     ++*lineno;
     size_t len = strlen(line);
@@ -409,6 +422,7 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     if (!len) return fail_at(rd, *lineno, 0, "an empty line");
     double v[NCOLS];
     if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
+    if (f->s[f->n - 1].t > sc->duration && ++past == DV_TRAJ_ROWS_PAST) break; /* not judged */
   }
   if (ferror(fp))
     return dv_fail(rd->err, DV_ESYSTEM, "%s: cannot read: %s", rd->path, strerror(errno));
@@ -425,7 +439,13 @@ static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *ge
   const int contact = f->form == DV_TRAJ_STATE && rd->col[C_CX] < 0;
   const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd->col[C_E] < 0;
   complete(sc, geom, f, contact, energy);
-  return check_start(rd, sc, f);
+  if (check_start(rd, sc, f)) return DV_EINPUT;
+  const int pose = f->form == DV_TRAJ_POSE;
+  const int cols[3] = {rd->col[pose ? C_QW : C_TH] + 1, rd->col[pose ? C_QW : C_PH] + 1,
+                       rd->col[pose ? C_QW : C_PS] + 1};
+  if (f->has_angles && dv_run_trajcheck_columns(f, sc, pose ? 0 : rd->col[C_CX] + 1, cols, rd->err))
+    return DV_EINPUT;
+  return DV_OK;
 }
 
 int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f, dv_error *err) {
@@ -468,6 +488,12 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
   if (!status) status = finish(&rd, sc, &geom, f, lineno + 1);
   if (status) dv_run_trajfile_free(f);
   return status;
+}
+
+size_t dv_run_trajfile_max_rows(const dv_scenario *sc) {
+  double samples;
+  const double left = sc->memory_budget - dv_scenario_memory_gib(sc, &samples);
+  return left > 0.0 ? (size_t)(left * 1024.0 * 1024.0 * 1024.0 / DV_TRAJ_ROW_BYTES) : 0;
 }
 
 void dv_run_trajfile_free(dv_trajfile *f) {

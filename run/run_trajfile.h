@@ -35,6 +35,15 @@
 #define DV_TRAJ_START_TOL 1e-6
 /* a quaternion's norm must be 1 to this (float32 storage rounds to 6e-8) */
 #define DV_TRAJ_QUAT_TOL 1e-6
+/* a row judged takes this many bytes: read, replayed and interpolated
+ * (Akima and Steffen, every column). Measured: the slope of judge's peak RSS
+ * over 1e5 and 3e5 rows of the state form with every column on
+ * tests/data/short_circle.ini, 1046 bytes a row (re-run: /usr/bin/time -v
+ * diskval judge on such files, generated as tests/check_judge_memory.sh does) */
+#define DV_TRAJ_ROW_BYTES 1100
+/* rows past the scenario's duration kept for the interpolant (Akima uses two
+ * on either side); the rest of a file is not read */
+#define DV_TRAJ_ROWS_PAST 3
 /* fewer samples than this cannot be interpolated (gsl_interp_akima's minimum) */
 #define DV_TRAJ_MIN_SAMPLES 5
 
@@ -52,6 +61,13 @@ typedef struct dv_trajfile {
   long *line;            /* each row's line in the file */
   double half_thickness; /* m: the disk the scenario describes */
   double step; /* s: the engine's time step from a "# dt = H" comment line, NAN when none */
+  /* the pose form's lowest point against the ground (run_trajcheck.h): the
+   * fault at row ground_row, DV_FAILURE_NONE when none */
+  dv_failure ground_fault;
+  size_t ground_row;
+  char ground_detail[240];
+  int airborne;     /* the lowest point is off the ground since air_since */
+  double air_since; /* s */
 } dv_trajfile;
 
 /* read path for sc into out: DV_OK, or DV_EINPUT / DV_ESYSTEM with err the
@@ -59,6 +75,9 @@ typedef struct dv_trajfile {
 int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *out, dv_error *err);
 
 void dv_run_trajfile_free(dv_trajfile *f);
+
+/* the most rows (every file's) judged with sc's comparison within its memory_budget */
+size_t dv_run_trajfile_max_rows(const dv_scenario *sc);
 
 /* a trajectory built in code (the C API), checked as a file is: begin with
  * the label its errors name in place of the file ("LABEL:N:COLUMN: ...", N

@@ -1,7 +1,6 @@
 /* scenario_number: a number, or a multiple of pi, as a scenario value. */
 #include "scenario_number.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,9 +12,10 @@ static const char *skip_blanks(const char *p) {
 /* a finite number at *p, then blanks; -1 when there is none */
 static int number_at(const char **p, double *out) {
   char *end;
-  errno = 0;
+  /* an overflow is inf, refused; an underflow (a subnormal, or 0) is a number,
+   * as the trajectory reader takes it: ERANGE alone refuses nothing */
   *out = strtod(*p, &end);
-  if (end == *p || errno == ERANGE || !isfinite(*out)) return -1;
+  if (end == *p || !isfinite(*out)) return -1;
   *p = skip_blanks(end);
   return 0;
 }

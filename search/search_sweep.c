@@ -207,10 +207,13 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
   pt->wall_per_sim_s = dv_run_cost_rate(wall, sim, sc->output_dt);
   pt->steps = r->stats.steps;
-  pt->ok = !dv_run_verdict_failed(r->verdict);
+  /* a point not judged (its run is its reference's) measured nothing: never a pass */
+  const int judged = r->verdict != DV_VERDICT_NOT_JUDGED;
+  pt->ok = !dv_run_verdict_failed(r->verdict) && judged;
   pt->verdict = r->verdict;
   pt->failure = r->stats.failure;
-  snprintf(pt->detail, sizeof pt->detail, "%.191s", r->stats.detail);
+  snprintf(pt->detail, sizeof pt->detail, "%.191s",
+           judged || !r->nfailures ? r->stats.detail : r->failures[0]);
   dv_run_comparison_free(c);
 cleanup:
   free(sc);

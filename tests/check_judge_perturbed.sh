@@ -32,12 +32,15 @@ cd "$work" || exit 2
 awk 'NR <= 2 || NR % 3 != 0' run.csv >irregular.csv
 "$to_pose" 0.1 0 --no-velocity <run.csv >pose_only.csv
 cut -d, -f1,2,7,8 run.csv >minimal.csv
-awk -F, -v OFS=, 'NR > 1 && $1 > 1 { $2 += 0.05 } 1' run.csv >theta_shift.csv
-awk -F, -v OFS=, 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
+# theta alone perturbed: without phi, psi, x, y (with them, a theta that does not
+# put the contact point where the file does is refused: run_trajcheck.h)
+cut -d, -f1,2,7-12 run.csv >no_pose.csv
+awk -F, -v OFS=, 'NR > 1 && $1 > 1 { $2 += 0.05 } 1' no_pose.csv >theta_shift.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
 awk -F, 'NR == 1 || $1 <= 1.5' run.csv >half.csv
 awk -F, -v OFS=, 'NR == 1 { print; next }
   $1 > 2 { $2 = 1 - 2 * ($1 - 2); if ($2 <= 0.01) { $2 = 0.01; print; exit } } { print }' \
-  run.csv >lies_down.csv
+  no_pose.csv >lies_down.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome, a failure saying FRAGMENT
 judge() {
   local file=$1 want=$2 verdict=$3 fragment=$4

@@ -47,7 +47,8 @@ typedef struct diskval_scenario diskval_scenario;
 typedef struct diskval_trajectory diskval_trajectory;
 
 /* the disk: radius (m), mass (kg), moments A about a diameter and C about the
- * axis (kg m^2; both 0: a uniform disk of that thickness), gravity (m/s^2),
+ * axis (kg m^2; both 0: a uniform disk of that thickness; A alone 0: its A),
+ * gravity (m/s^2),
  * full thickness (m, less than the diameter; 0: the thin disk). Checked as
  * a scenario file's [disk] (e.g. C <= 2A) */
 typedef struct diskval_disk {
@@ -97,7 +98,8 @@ DISKVAL_API int diskval_scenario_load(const char *path, const char *const *overr
                                       diskval_scenario **out, diskval_error *err);
 
 /* a scenario from code, every value checked and engine settings derived as a load
- * would (errors name the file's key: "disk.C: ..."); 0 < output_dt <= duration (s) */
+ * would (errors name the file's key: "disk.C: ..."); name as a file's (not NULL);
+ * 0 < output_dt <= duration (s); disk A = 0: the uniform disk's A */
 DISKVAL_API int diskval_scenario_new(const char *name, const diskval_disk *disk,
                                      const diskval_state *initial, double duration,
                                      double output_dt, diskval_scenario **out, diskval_error *err);
@@ -138,13 +140,15 @@ DISKVAL_API int diskval_trajectory_sample(const diskval_trajectory *tr, size_t i
 /* free a trajectory (NULL-safe) */
 DISKVAL_API void diskval_trajectory_free(diskval_trajectory *tr);
 
-/* metrics of engine against reference at equal times, over the window both cover */
+/* metrics of engine against reference at equal times, over the window both cover
+ * (runs, or samples pushed: ended as diskval_judge ends them); on error out
+ * holds no metric (n 0: diskval_metric gives NAN) */
 DISKVAL_API int diskval_compare_trajectories(const diskval_trajectory *engine,
                                              const diskval_trajectory *reference,
                                              diskval_metrics *out, diskval_error *err);
 
 /* run engine on sc and judge it against its reference, as `diskval compare` does: 0 (see out->pass)
- * or < 0 */
+ * or < 0 (out then "not judged", pass 0, no metric; so for diskval_judge) */
 DISKVAL_API int diskval_compare(const diskval_scenario *sc, const char *engine,
                                 diskval_comparison *out, diskval_error *err);
 
@@ -167,8 +171,8 @@ DISKVAL_API int diskval_trajectory_new(const diskval_scenario *sc, const char *n
  * samples). All of a trajectory's samples are states, or all poses. Checked
  * as `diskval judge` checks a file's rows ("NAME:N:COLUMN: ...", N the
  * sample from 1): finite, times increasing, a unit quaternion within 1e-6 */
-DISKVAL_API int diskval_trajectory_push(diskval_trajectory *tr, double t, const diskval_state *state,
-                                        diskval_error *err);
+DISKVAL_API int diskval_trajectory_push(diskval_trajectory *tr, double t,
+                                        const diskval_state *state, diskval_error *err);
 DISKVAL_API int diskval_trajectory_push_pose(diskval_trajectory *tr, double t,
                                              const diskval_pose *pose, int with_velocity,
                                              diskval_error *err);

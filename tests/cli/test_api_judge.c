@@ -7,7 +7,11 @@
  * disk's in that state, not MuJoCo's own: 1.3% apart); pushed as poses without velocities, the same
  * verdict and theta_max_err within 1e-9 (measured 4.2e-12 in the CLI's
  * equivalence test: the quaternion's round trip). Bad samples are refused
- * naming the sample. Re-measure: the test prints the differences (ctest -V -R api_judge). */
+ * naming the sample. The reference's own run pushed as states is not judged
+ * (never a pass). An error leaves its out safe to read; pushed samples
+ * compare as a run; diskval_scenario_new needs a name and names C for C's
+ * error when A = 0 (the uniform disk's). Re-measure: the test prints the differences (ctest -V -R
+ * api_judge). */
 #include <diskval/diskval.h>
 #include <math.h>
 #include <stdio.h>
@@ -77,6 +81,21 @@ int main(int argc, char **argv) {
   CHECK(th <= 1e-9, "poses: theta_max_err %.3g apart", th);
   printf("states: every metric within %.3g of compare's; poses: theta_max_err within %.3g\n", worst,
          th);
+  /* the reference's own run pushed as states is the reference: not judged, never a pass */
+  diskval_trajectory *ref = NULL, *mine = NULL;
+  diskval_comparison self;
+  CHECK(diskval_run(sc, "reduced", &ref, &err) >= 0, "run reduced: %s", err.msg);
+  CHECK(diskval_trajectory_new(sc, "mine", &mine, &err) == 0, "new: %s", err.msg);
+  for (size_t i = 0; ref && i < diskval_trajectory_size(ref); i++) {
+    diskval_sample x;
+    diskval_trajectory_sample(ref, i, &x);
+    diskval_trajectory_push(mine, x.t, &x.state, &err);
+  }
+  CHECK(diskval_judge(sc, mine, &self, &err) == 0, "judge the reference: %s", err.msg);
+  CHECK(!self.pass && !strcmp(self.verdict, "not judged"), "the reference's own run: %s, pass %d",
+        self.verdict, self.pass);
+  diskval_trajectory_free(ref);
+  diskval_trajectory_free(mine);
   /* the errors of a bad sample name it */
   diskval_state bad = {.theta = NAN};
   CHECK(diskval_trajectory_push(states, 10.0, &bad, &err) == -1 && strstr(err.msg, "states:"),
@@ -95,7 +114,36 @@ int main(int argc, char **argv) {
   diskval_trajectory_push(few, 0.0, &x0.state, &err);
   CHECK(diskval_judge(sc, few, &got, &err) == -1 && strstr(err.msg, "at least 5"), "few: %s",
         err.msg);
+  /* an error leaves out safe to read: no metric, NAN by name */
+  CHECK(got.metrics.n == 0 && isnan(diskval_metric(&got.metrics, "theta_max_err")) && !got.pass,
+        "judge's out after an error: n %zu, pass %d", got.metrics.n, got.pass);
+  diskval_metrics m;
+  m.n = 7; /* as uninitialised memory might hold */
+  CHECK(diskval_compare_trajectories(few, NULL, &m, &err) == -1 && m.n == 0 &&
+            isnan(diskval_metric(&m, "theta_max_err")),
+        "compare_trajectories' out after an error: n %zu", m.n);
+  /* pushed samples are a trajectory of their own: compared, not "empty" */
+  CHECK(diskval_compare_trajectories(states, run, &m, &err) == 0 &&
+            diskval_metric(&m, "theta_max_err") == 0.0,
+        "pushed states against their run: %s, theta_max_err %g", err.msg,
+        diskval_metric(&m, "theta_max_err"));
   diskval_trajectory_free(few);
+  /* a scenario needs a name; with A = 0 (the uniform disk's) an error in C names C */
+  diskval_scenario *made = NULL;
+  diskval_state s0;
+  diskval_scenario_initial(sc, &s0);
+  CHECK(diskval_scenario_new(NULL, &disk, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "NULL name"),
+        "NULL name: %s", err.msg);
+  diskval_disk bad_c = disk;
+  bad_c.A = 0.0, bad_c.C = -1.0;
+  CHECK(diskval_scenario_new("c", &bad_c, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "disk.C"),
+        "A = 0, C = -1: %s", err.msg);
+  bad_c.C = 3.0 * disk.A; /* over 2A */
+  CHECK(diskval_scenario_new("c", &bad_c, &s0, 0.3, 0.01, &made, &err) == -1 &&
+            strstr(err.msg, "disk.C"),
+        "A = 0, C = 3A: %s", err.msg);
   diskval_trajectory_free(run);
   diskval_trajectory_free(states);
   diskval_trajectory_free(poses);

@@ -39,6 +39,11 @@ int main(void) {
   check_value("0.5 * pi", 0.5 * M_PI);
   check_value("+pi/2", M_PI / 2);
   check_value(" pi/6 ", M_PI / 6);
+  /* a subnormal is a number (the trajectory reader's strtod takes it too); an
+   * underflow to 0 is 0, judged by the range */
+  check_value("4.9e-324", 4.9e-324);
+  check_value("1e-310", 1e-310);
+  check_refused("1e-400", "0 is outside (0, 3.141592653589793)");
   const char *bad[] = {"2pi", "pi2", "pi*2",  "pi/2/2", "(pi)/2", "pi/2x", "sin(pi)", "pie",
                        "pi/", "*pi", "2**pi", "pi pi",  "PI/2",   "e",     "x",       ""};
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) check_refused(bad[i], "not a number");

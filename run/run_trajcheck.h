@@ -1,0 +1,60 @@
+/* run_trajcheck: what a trajectory's columns say about each other and about
+ * the ground (run_trajfile.h reads them; README "Judge your own engine").
+ *
+ * The pose form gives the body's height: its lowest point is watched as a
+ * linked engine's is (engine_watch.h, the same limits): deeper than
+ * DV_WATCH_SUNK radii below the ground the run has sunk (diverged), higher
+ * than DV_WATCH_AIR radii for longer than DV_WATCH_AIR_TIME it has lost
+ * contact; the replay fails there (run_replay.h). Measured on correct pose
+ * files, the lowest point's height over the radius: MuJoCo's soft contact
+ * (examples/plain_mujoco_judge, tests/check_judge_mujoco_pose.sh) -4.4e-6 ..
+ * 4.1e-4, the thick coin model (check_judge_thick_model.sh) -1.3e-15 ..
+ * 2.7e-13, a state file rewritten as poses (check_judge_perturbed.sh) 4e-16:
+ * 24 times under the air limit, 10^4 under the sinking one.
+ *
+ * The state form with both the contact point and phi, psi, x, y gives the
+ * contact point twice: given, and where theta, phi and the centre put it on
+ * the scene's disk. They must agree to DV_TRAJ_CONTACT_TOL radii plus the
+ * scene's half-thickness plus DV_TRAJ_ROUND of the coordinates. Measured
+ * (simulate of every contact engine on the scenarios/ steady circles,
+ * hard/euler_disk and tests/data/quarter_spun): 1.6e-15 r where the engine
+ * simulates the scene's disk; 0.0169 r for a 2 mm cylinder stand-in of a thin
+ * scene (steady_circle_cylinder: MuJoCo, ODE, Bullet), 0.0716 r = h sin theta
+ * for a thin stand-in of a thick coin (quarter_spun: DART, Simbody). 100 m
+ * away or a phi off by 1 rad at theta = 1 is 0.8 r and more.
+ * With rates as well (given, or the pose form's angular velocity), each of
+ * theta, phi and psi's step from row to row must match the trapezoid of its
+ * rate within DV_TRAJ_RATE_TOL of the step times the larger of the two rates
+ * and the scene's rate scale (mod 2 pi: wrapped angles are fine; a pose lying
+ * flat, theta < 1e-3, has no phi or psi). Measured on simulate of the
+ * reference, ODE and MuJoCo on every scenario of scenarios/ and
+ * quarter_spun, as written and in the pose form: at most 0.057 (c_zero, phi
+ * near the ground), theta 0.023 (separatrix); 0.0012 the thick coin model,
+ * MuJoCo's own poses (check_judge_mujoco_pose.sh) less. A psi that does not
+ * turn while psi_dot = -15 rad/s scores 1.
+ * Re-measure: print d / scale in dv_run_trajcheck_columns and judge those files.
+ */
+#ifndef DV_RUN_TRAJCHECK_H
+#define DV_RUN_TRAJCHECK_H
+
+#include "dv_error.h"
+#include "dv_pose.h"
+#include "run_trajfile.h"
+
+#define DV_TRAJ_CONTACT_TOL 0.1 /* of the radius */
+#define DV_TRAJ_ROUND 1e-5      /* of the coordinates: 6 printed digits round at 5e-7 */
+#define DV_TRAJ_RATE_TOL 0.3
+
+/* the pose-form row f->s[f->n] (not yet counted), its lowest point height m
+ * above the ground: the first fault into f->ground_* */
+void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double height);
+
+/* the columns against each other: the contact point given (ccol, its 1-based
+ * column; 0: none) against the state's, and with rates (given, or the pose
+ * form's angular velocity) each angle's step against its rate (col: the
+ * 1-based columns of theta, phi, psi for the message): DV_OK, or DV_EINPUT
+ * with err "PATH:LINE:COLUMN: what" */
+int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int ccol,
+                             const int col[3], dv_error *err);
+
+#endif

@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# check_judge_hostile.sh DISKVAL TO_POSE SCENARIO: files that must not pass.
+# ODE's run of SCENARIO (0.3 s) written by simulate, and in the pose form,
+# pass; these, made from them by awk, do not:
+#   - the pose 1 m above the ground: lost contact (run_trajcheck.h: the
+#     linked engines' limits, engine_watch.h);
+#   - the pose 0.5 m into the ground: diverged, "sank";
+#   - x, y 100 m from the contact point, or phi garbage: refused, "the
+#     contact point ... the columns disagree" (exit 2);
+#   - psi not turning while psi_dot says it does, a theta_dot 20 rad/s off
+#     theta's, a pose whose velocities are all 0: refused, "turns by";
+#   - the reference's own output (simulate --engine reduced): not judged;
+#     so is a sweep point of the reference at its tighter reference's settings;
+#   - a convergence study (--step) of one file given three times, or of errors
+#     that do not fall: not judged, exit 1, never "converges to the reference".
+# A run that failed at its first sample measured nothing: its metrics are
+# "not measured" on stdout and in report.md, null in report.json, never 0,
+# and no failure line compares a NaN with a limit.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+export LC_ALL=C
+dv=${1:?usage: check_judge_hostile.sh DISKVAL TO_POSE SCENARIO}
+to_pose=${2:?usage}
+sc=${3:?usage}
+command -v jq >/dev/null || { echo "SKIP: jq not installed"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+short=(--set scenario.duration=0.3)
+name=$(sed -n 's/^name *= *//p' "$sc" | head -1)
+r=$(sed -n 's/^radius *= *//p' "$sc" | head -1)
+"$dv" simulate "$sc" "${short[@]}" --engine ode --out "$work/run.csv" --quiet 2>/dev/null
+cd "$work" || exit 2
+"$dv" simulate "$sc" "${short[@]}" --engine reduced --out ref.csv --quiet 2>/dev/null
+"$to_pose" "$r" 0 <run.csv >pose.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $9 += 20 } 1' run.csv >theta_dot_off.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { for (k = 9; k <= 14; k++) $k = 0 } 1' pose.csv >still_pose.csv
+# judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
+# exit 2, the error line) and a failure saying FRAGMENT
+judge() {
+  local file=$1 want=$2 verdict=$3 fragment=$4
+  "$dv" judge "$sc" "${short[@]}" "$file.csv" --out "out_$file" --quiet >"$file.out" 2>"$file.err"
+  local code=$? report=out_$file/$name/report.json
+  check '[ $code -eq $want ]' "$file: exit status $code, not $want ($(head -1 "$file.err"))"
+  if [ "$want" -eq 2 ]; then
+    check '[ "$(wc -l <"$file.err")" -eq 1 ] && grep -q -- "$fragment" "$file.err"' \
+      "$file: not one line saying '$fragment': $(cat "$file.err")"
+    check '[ ! -e "$report" ]' "$file: a report for a refused file"
+    echo "$file: $(head -1 "$file.err" | cut -c1-200)"
+    return
+  fi
+  local outcome failures
+  outcome=$(jq -r ".engines.$file.outcome" "$report")
+  failures=$(jq -r ".engines.$file.failures[]" "$report")
+  check '[ "$outcome" = "$verdict" ]' "$file: $outcome, not $verdict"
+  check '[[ "$failures" == *"$fragment"* ]]' "$file: no failure says '$fragment': $failures"
+  echo "$file: $outcome; $(echo "$failures" | head -1 | cut -c1-200)"
+}
+judge run 0 agrees ""
+judge pose 0 agrees ""
+judge hover 1 "lost contact" "above the ground for"
+judge sunk 1 diverged "sank 0.5 m into the ground"
+judge far 2 "" "the columns disagree"
+judge phi_garbage 2 "" "the columns disagree"
+judge psi_still 2 "" "psi turns by"
+judge theta_dot_off 2 "" "theta turns by"
+judge still_pose 2 "" "turns by"
+judge ref 1 "not judged" "the reference's own output"
+# a convergence study of one file given three times, or of errors that do not
+# fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
+for k in 1 2 3; do
+  awk -F, -v OFS=, -v CONVFMT=%.17g -v k=$k 'NR > 1 && $1 > 0.1 { $2 += k * 1e-6 } 1' ref.csv |
+    cut -d, -f1,2,7-12 >near$k.csv
+done
+cp near1.csv again1.csv && cp near1.csv again2.csv
+steps=(--step 1e-3,5e-4,2.5e-4)
+"$dv" judge "$sc" "${short[@]}" near1.csv again1.csv again2.csv "${steps[@]}" --out same --quiet \
+  >same.out 2>&1
+code=$?
+check '[ $code -eq 1 ] && grep -q "not judged: the trajectories at dt 0.001 and 0.0005 have the same" same.out' \
+  "one file three times: exit status $code: $(grep -A1 convergence same.out)"
+"$dv" judge "$sc" "${short[@]}" near1.csv near2.csv near3.csv "${steps[@]}" --out flat --quiet \
+  >flat.out 2>&1
+code=$?
+check '[ $code -eq 1 ] && grep -q "not judged: the errors do not fall" flat.out' \
+  "errors that do not fall: exit status $code: $(grep -A1 convergence flat.out)"
+check '! grep -q "converges to the reference" same.out flat.out' "a study that shows nothing converges"
+# a sweep point of the reference at the settings of the tighter reference it
+# is measured against is that reference: not judged, not ok, no Pareto star
+"$dv" sweep "$sc" "${short[@]}" --engine reduced --vary integrator=gsl-rk8pd-stepped \
+  --vary rtol=1e-14 --vary atol=1e-16 --out sweep --quiet >sweep.out 2>&1
+check 'grep -q "^reduced,gsl-rk8pd-stepped,1e-14,1e-16,.*,not judged,0$" sweep/sweep.csv' \
+  "sweep: the tighter reference's own settings: $(tail -1 sweep/sweep.csv)"
+check '[ "$(jq ".points[0].ok" sweep/sweep.json)" = false ]' "sweep: the point is ok"
+for file in sunk hover; do
+  check '! grep -qi "nan" "$file.out" out_$file/$name/report.md' \
+    "$file: a NaN printed: $(grep -hi nan "$file.out" out_$file/$name/report.md | head -3)"
+done
+check 'grep -q "theta not measured  path not measured" sunk.out' "sunk: $(head -1 sunk.out)"
+check '! grep -q "0.00e+00" sunk.out' "sunk: an unmeasured error printed as 0: $(head -1 sunk.out)"
+check '[ "$(jq .engines.sunk.theta_max_err out_sunk/$name/report.json)" = null ]' \
+  "sunk: theta_max_err $(jq .engines.sunk.theta_max_err out_sunk/$name/report.json), not null"
+check 'grep -q "| theta_max_err | not measured |" out_sunk/$name/report.md' "sunk: report.md"
+exit $fail
