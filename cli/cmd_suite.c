@@ -39,7 +39,8 @@ static const char HELP[] =
     "above it: DIR/stability.html, .md and .json, linked from index.html.\n"
     "--verify instead refines each contact engine's step and contact softness on every\n"
     "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
-    "a failure wherever an engine does not converge to the reference.\n"
+    "a failure wherever an engine does not converge to the reference. One of the two:\n"
+    "both together are refused.\n"
     "--quiet: no progress line on a terminal (scenarios done, time left), no warning\n"
     "before a suite longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
@@ -268,6 +269,10 @@ int dv_cli_suite(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  if (o.stability && o.verify) { /* two different runs: one would be dropped */
+    dv_cli_args_free(&cmd, &a);
+    return dv_cli_usage_error("suite", "--stability and --verify: one at a time, not both");
+  }
   if ((o.junit && !o.junit[0]) || !o.out[0]) {
     dv_cli_args_free(&cmd, &a);
     return dv_cli_usage_error("suite", "%s needs a %s", o.out[0] ? "--junit" : "--out",
