@@ -66,7 +66,9 @@ static int take(const dv_cli_command *cmd, const dv_cli_option *o, const char *t
 int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *out) {
   memset(out, 0, sizeof *out);
   struct option *longs = calloc(cmd->noptions + 4, sizeof *longs);
-  if (!longs) return dv_cli_usage_error(cmd->name, "out of memory");
+  unsigned char *given = calloc(cmd->noptions + 1, 1); /* a value already taken */
+  if (!longs || !given)
+    return free(longs), free(given), dv_cli_usage_error(cmd->name, "out of memory");
   for (size_t i = 0; i < cmd->noptions; i++)
     longs[i] = (struct option){
         cmd->options[i].name, cmd->options[i].kind == DV_CLI_FLAG ? no_argument : required_argument,
@@ -95,11 +97,16 @@ int dv_cli_parse(const dv_cli_command *cmd, int argc, char **argv, dv_cli_args *
       status = dv_cli_usage_error(cmd->name, "%s needs a value", argv[optind - 1]);
     } else if (c == '?') {
       status = dv_cli_usage_error(cmd->name, "unknown option '%s'", argv[optind - 1]);
+    } else if (cmd->options[c].kind != DV_CLI_FLAG && cmd->options[c].kind != DV_CLI_LIST &&
+               given[c]++) {
+      /* one value: a second would silently replace the first */
+      status = dv_cli_usage_error(cmd->name, "--%s given twice", cmd->options[c].name);
     } else if (take(cmd, &cmd->options[c], optarg)) {
       status = DV_EXIT_ERROR;
     }
   }
   free(longs);
+  free(given);
   /* getopt_long has moved the positional arguments to the end */
   for (; status == DV_CLI_RUN && optind < argc; optind++)
     if (dv_cli_list_push(&out->args, argv[optind]))

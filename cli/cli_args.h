@@ -4,7 +4,8 @@
  * variables, takes --help, --set and --quiet for every command, and refuses
  * with one line on stderr and exit status 2: an unknown option, a missing value, a
  * number that is not wholly a finite number in range ("1e-3x", "nan", ""),
- * and more or fewer positional arguments than the command takes.
+ * an option of one value given twice (--out a --out b), and more or fewer
+ * positional arguments than the command takes.
  */
 #ifndef DV_CLI_ARGS_H
 #define DV_CLI_ARGS_H

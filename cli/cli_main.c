@@ -63,7 +63,7 @@ int dv_cli_unknown_engine(const char *command, const char *name) {
 }
 
 int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_error *err) {
-  if (list && list[0]) {
+  if (list) { /* given, even empty: '' is no engine, not every engine */
     const int status = dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, err);
     if (status == DV_OK) dv_engine_choose_only(engines); /* probe only the engines run */
     return status;

@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "exec_mpi.h"
+#include "exec_pool.h"
 #include "io_json.h"
 #include "io_lock.h"
 #include "io_owned.h"
@@ -39,7 +40,8 @@ static const char HELP[] =
     "above it: DIR/stability.html, .md and .json, linked from index.html.\n"
     "--verify instead refines each contact engine's step and contact softness on every\n"
     "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
-    "a failure wherever an engine does not converge to the reference.\n"
+    "a failure wherever an engine does not converge to the reference. One of the two:\n"
+    "both together are refused.\n"
     "--quiet: no progress line on a terminal (scenarios done, time left), no warning\n"
     "before a suite longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
@@ -241,6 +243,9 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
 }
 
 int dv_cli_suite(int argc, char **argv) {
+  /* a stop before the scenarios run ends the suite as one while they run:
+   * exit 130 and a line, never a silent death of the signal */
+  dv_exec_hold_stops();
   suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0, 600.0};
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &o.out, 0, 0},
@@ -255,6 +260,10 @@ int dv_cli_suite(int argc, char **argv) {
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  if (o.stability && o.verify) { /* two different runs: one would be dropped */
+    dv_cli_args_free(&cmd, &a);
+    return dv_cli_usage_error("suite", "--stability and --verify: one at a time, not both");
+  }
   if ((o.junit && !o.junit[0]) || !o.out[0]) {
     dv_cli_args_free(&cmd, &a);
     return dv_cli_usage_error("suite", "%s needs a %s", o.out[0] ? "--junit" : "--out",
@@ -277,6 +286,10 @@ int dv_cli_suite(int argc, char **argv) {
     code = dv_cli_error("suite", "out of memory");
   if (!code) code = load_all(&files, &a.sets, scs);
   if (!code && check_outputs(&o, &files, scs, &err)) code = dv_cli_error("suite", "%s", err.msg);
+  if (!code && dv_exec_take_stop()) { /* nothing of this run to report yet */
+    dv_cli_error("suite", "interrupted before any scenario ran: nothing written");
+    code = 130;
+  }
   /* one run at a time in --out: it removes what dead runs left there (under
    * mpirun, rank 0 holds the lock for all the ranks); checked again once held */
   if (!code && (dv_io_own_dir(o.out, &err) ||
@@ -287,6 +300,10 @@ int dv_cli_suite(int argc, char **argv) {
     code = verify(&o, &files, &a.sets, engines, scs);
   else if (!code)
     code = run(&o, &a.sets, engines, scs, files.n, codes, causes);
+  if ((code == DV_EXIT_OK || code == DV_EXIT_FAIL) && dv_exec_take_stop()) {
+    dv_cli_error("suite", "interrupted as it ended: the reports of this run are complete");
+    code = 130;
+  }
   dv_io_unlock_dir(o.out, lock);
   for (size_t i = 0; i < files.n; i++) free((char *)files.items[i]);
   free(files.items);

@@ -84,6 +84,11 @@ static int master(size_t n, size_t size, void *results, unsigned char *done,
   sigaction(SIGTERM, &sa, &old_term);
   sigaction(SIGINT, &sa, &old_int);
   stop_requested = 0;
+  sigset_t stops, old_mask; /* held by the caller (dv_exec_hold_stops): taken here */
+  sigemptyset(&stops);
+  sigaddset(&stops, SIGTERM);
+  sigaddset(&stops, SIGINT);
+  sigprocmask(SIG_UNBLOCK, &stops, &old_mask);
   while (pending > 0 && !stop_requested) {
     int flag = 0;
     MPI_Status st;
@@ -103,6 +108,7 @@ static int master(size_t n, size_t size, void *results, unsigned char *done,
     MPI_Send(&task, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, TAG_TASK, MPI_COMM_WORLD);
     if (task != STOP) pending++;
   }
+  sigprocmask(SIG_SETMASK, &old_mask, NULL);
   sigaction(SIGTERM, &old_term, NULL);
   sigaction(SIGINT, &old_int, NULL);
   free(buf);

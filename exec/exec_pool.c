@@ -27,10 +27,50 @@ typedef struct pool {
   unsigned char *timed_out; /* task k was killed at the time limit */
   const dv_exec_options *opt;
   sigset_t caller_mask; /* restored in every task's process and at the end */
+  sigset_t stops;       /* the signals that stop it (stop_signals) */
   int running;
 } pool;
 
-/* never called: SIGINT and SIGTERM stay blocked and are taken with
+/* the signal that stopped the last pool, or 0 */
+static int last_stop;
+
+static const int stop_list[] = {SIGINT, SIGTERM, SIGHUP};
+enum { NSTOPS = sizeof stop_list / sizeof *stop_list };
+
+/* SIGINT, SIGTERM and SIGHUP, but not a SIGHUP ignored (nohup: the run
+ * outlives its terminal) */
+static void stop_signals(sigset_t *set) {
+  struct sigaction hup;
+  sigemptyset(set);
+  sigaddset(set, SIGINT);
+  sigaddset(set, SIGTERM);
+  if (sigaction(SIGHUP, NULL, &hup) || hup.sa_handler != SIG_IGN) sigaddset(set, SIGHUP);
+}
+
+/* a stop signal already pending (held), taken: its number, or 0 */
+static int take_pending(const sigset_t *stops) {
+  const struct timespec now = {0, 0};
+  const int sig = sigtimedwait(stops, NULL, &now);
+  return sig > 0 ? sig : 0;
+}
+
+void dv_exec_hold_stops(void) {
+  sigset_t stops;
+  stop_signals(&stops);
+  sigprocmask(SIG_BLOCK, &stops, NULL);
+}
+
+int dv_exec_take_stop(void) {
+  sigset_t stops;
+  stop_signals(&stops);
+  return take_pending(&stops);
+}
+
+int dv_exec_stopped_by(void) {
+  return last_stop;
+}
+
+/* never called: the stop signals stay blocked and are taken with
  * sigwaitinfo, but an ignored signal (a background job's SIGINT) would be
  * discarded, so the pool puts a handler of its own in place */
 static void on_stop(int sig) {
@@ -41,9 +81,13 @@ static void on_stop(int sig) {
 static void run_child(const pool *p, size_t k, pid_t parent) {
   prctl(PR_SET_PDEATHSIG, SIGKILL); /* a task outlives no parent, not even a SIGKILLed one */
   if (getppid() != parent) _exit(1);
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
-  sigprocmask(SIG_SETMASK, &p->caller_mask, NULL); /* a pending stop ends it here */
+  sigset_t mask = p->caller_mask;
+  for (int i = 0; i < NSTOPS; i++)
+    if (sigismember(&p->stops, stop_list[i])) {
+      signal(stop_list[i], SIG_DFL);
+      sigdelset(&mask, stop_list[i]); /* a caller's hold (dv_exec_hold_stops) is not the task's */
+    }
+  sigprocmask(SIG_SETMASK, &mask, NULL); /* a pending stop ends it here */
   p->work(k, p->slots + k * p->size, p->ctx);
   fflush(NULL);
   _exit(0);
@@ -107,21 +151,22 @@ static int wait_signal(const sigset_t *wanted, double seconds) {
 static int run_forked(pool *p) {
   const int jobs = p->opt->jobs > 0 ? p->opt->jobs : 1;
   sigset_t wanted;
-  sigemptyset(&wanted);
-  sigaddset(&wanted, SIGINT);
-  sigaddset(&wanted, SIGTERM);
+  stop_signals(&p->stops);
+  wanted = p->stops;
   sigaddset(&wanted, SIGCHLD); /* blocked, so that a task's end is never missed */
-  struct sigaction sa, old_int, old_term;
+  struct sigaction sa, old[NSTOPS];
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_stop;
   sigemptyset(&sa.sa_mask);
   sigprocmask(SIG_BLOCK, &wanted, &p->caller_mask);
-  sigaction(SIGINT, &sa, &old_int);
-  sigaction(SIGTERM, &sa, &old_term);
+  for (int i = 0; i < NSTOPS; i++)
+    if (sigismember(&p->stops, stop_list[i])) sigaction(stop_list[i], &sa, &old[i]);
   int stop = 0;
   size_t next = 0;
   for (;;) {
     reap(p);
+    /* a stop that came before (held by the caller) starts no task */
+    if (!stop && (stop = take_pending(&p->stops))) forward(p, stop);
     while (!stop && p->running < jobs && next < p->n) {
       fflush(NULL); /* nothing buffered (by on_result too) is written twice */
       const pid_t self = getpid(), pid = fork();
@@ -139,18 +184,17 @@ static int run_forked(pool *p) {
     if (p->running == 0) break; /* all ended, or stopped */
     /* a task's end, a stop, or the next time limit */
     const int sig = wait_signal(&wanted, enforce_timeout(p));
-    if (sig == SIGINT || sig == SIGTERM) {
+    if (sig > 0 && sig != SIGCHLD) {
       stop = sig;
       forward(p, sig);
     }
   }
   /* a stop that came after the last task ended still counts */
-  const struct timespec now = {0, 0};
-  sigdelset(&wanted, SIGCHLD);
-  for (int sig; (sig = sigtimedwait(&wanted, NULL, &now)) > 0;) stop = sig;
-  sigaction(SIGINT, &old_int, NULL);
-  sigaction(SIGTERM, &old_term, NULL);
+  for (int sig; (sig = take_pending(&p->stops));) stop = sig;
+  for (int i = 0; i < NSTOPS; i++)
+    if (sigismember(&p->stops, stop_list[i])) sigaction(stop_list[i], &old[i], NULL);
   sigprocmask(SIG_SETMASK, &p->caller_mask, NULL);
+  last_stop = stop;
   return stop ? DV_EXEC_INTERRUPTED : DV_EXEC_DONE;
 }
 

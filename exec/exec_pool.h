@@ -7,10 +7,12 @@
  * initialises results to say "not run". Engines' error handlers and other
  * process-wide state never outlive a task.
  *
- * SIGINT or SIGTERM received by the pool's process while it runs stop it:
- * no task is started after that, the signal is passed on to the running
- * tasks' processes (a kill may reach only the parent), and the pool returns
- * DV_EXEC_INTERRUPTED once they have ended; done[] says which finished.
+ * SIGINT, SIGTERM or SIGHUP (unless ignored, as under nohup) received by
+ * the pool's process while it runs, or held before it (dv_exec_hold_stops),
+ * stop it: no task is started after that, the signal is passed on to the
+ * running tasks' processes (a kill may reach only the parent), and the pool
+ * returns DV_EXEC_INTERRUPTED once they have ended; done[] says which
+ * finished.
  *
  * With a timeout, a task's process that runs longer is killed (SIGKILL) and
  * its done[k] says DV_EXEC_TIMED_OUT; the others go on. Under MPI there is
@@ -28,7 +30,7 @@ typedef enum dv_exec_status {
   DV_EXEC_NOMEM = -1,      /* no memory for the pool: nothing ran */
   DV_EXEC_DONE = 0,        /* every task ended (some may have died: see ran and done) */
   DV_EXEC_WORKER = 1,      /* an MPI worker rank: rank 0 has the results */
-  DV_EXEC_INTERRUPTED = 2, /* stopped by SIGINT or SIGTERM; results not arrived untouched */
+  DV_EXEC_INTERRUPTED = 2, /* stopped by a signal; results not arrived untouched */
 } dv_exec_status;
 
 /* how task k ended, in done[k] */
@@ -48,6 +50,19 @@ typedef struct dv_exec_options {
 /* run tasks 0..n-1; results[k * size] receives task k's result. A dv_exec_status. */
 int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
                  const dv_exec_options *opt);
+
+/* the signal that stopped the last pool of this process (DV_EXEC_INTERRUPTED), or 0 */
+int dv_exec_stopped_by(void);
+
+/* from now on SIGINT, SIGTERM and SIGHUP (unless ignored) are held
+ * (blocked): one that comes before a pool runs stops that pool before its
+ * first task, so that a command that reports its interruption is never
+ * ended by one without a word; a stop held outside a pool is taken with
+ * dv_exec_take_stop */
+void dv_exec_hold_stops(void);
+
+/* a held stop signal that came, taken: its number, or 0 */
+int dv_exec_take_stop(void);
 
 /* dv_exec_pool with jobs and on_result only */
 int dv_exec_pool_run(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,

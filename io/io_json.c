@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "dv_format.h"
+#include "dv_input.h"
 
 /* the text of dv_format_json as a raw item: cJSON prints it as it is */
 void *dv_io_json_double(double v) {
@@ -20,7 +21,7 @@ void *dv_io_json_double(double v) {
 void *dv_io_json_read(const char *path, long max_bytes, char *why, size_t why_size) {
   char ignored[8];
   if (!why) why = ignored, why_size = sizeof ignored;
-  FILE *fp = fopen(path, "rb");
+  FILE *fp = dv_input_open(path);
   struct stat st;
   char *buf = NULL;
   cJSON *json = NULL;

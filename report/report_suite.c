@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include <sys/stat.h>
 
+#include "dv_input.h"
 #include "io_file.h"
 #include "report_escape.h"
 #include "report_suite_internal.h"
@@ -59,7 +60,7 @@ static void load_entry(const char *out_dir, const char *dir, entry *e) {
     unusable(e, "path too long", "");
     goto cleanup;
   }
-  if (!(fp = fopen(path, "rb"))) {
+  if (!(fp = dv_input_open(path))) {
     unusable(e, "cannot open: ", strerror(errno));
     goto cleanup;
   }

@@ -145,8 +145,12 @@ int dv_report_suite_run_all(const dv_scenario *scs, size_t n, const dv_engine_ty
                : pool == DV_EXEC_INTERRUPTED                      ? DV_SUITE_NOT_ENDED
                                                                   : DV_SUITE_ERROR;
     causes[i] = results[i].cause;
-    if (codes[i] == DV_SUITE_NOT_ENDED)
+    if (codes[i] == DV_SUITE_NOT_ENDED) {
       dv_fail(&causes[i], DV_EVENT, "did not end: the suite was interrupted");
+      /* not an earlier run's report beside this run's summary (it may say pass) */
+      dv_error ignored;
+      dv_report_dir_write_error(out_dir, &scs[i], causes[i].msg, &ignored);
+    }
     finished += done[i] == DV_EXEC_ARRIVED && codes[i] != DV_SUITE_ERROR;
   }
   /* the temporaries of the scenarios stopped or killed at their time limit */

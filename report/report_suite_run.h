@@ -50,12 +50,12 @@ int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *
  * N s") or whose process died gets its error report too. The caller holds
  * out_dir's lock (io_lock.h): temporaries that dead runs left there are
  * removed first, those of the scenarios ended early at the end. Progress
- * is counted on the progress line (run_progress.h). SIGINT or SIGTERM
- * stops it: running scenarios are ended, their temporary directories
- * removed, finished
- * reports kept; the others' codes[] are DV_SUITE_NOT_ENDED (their
- * directories hold an earlier run's report, or none); returns DV_EVENT then
- * (err says how many finished), else DV_OK, or DV_SUITE_RUN_WORKER. */
+ * is counted on the progress line (run_progress.h). SIGINT, SIGTERM or
+ * SIGHUP stops it (exec_pool.h): running scenarios are ended, their
+ * temporary directories removed, finished reports kept; the others' codes[]
+ * are DV_SUITE_NOT_ENDED and their directories an error report saying so
+ * (never an earlier run's); returns DV_EVENT then (err says how many
+ * finished), else DV_OK, or DV_SUITE_RUN_WORKER. */
 int dv_report_suite_run_all(const dv_scenario *scenarios, size_t n,
                             const dv_engine_type *const *engines, const char *out_dir, int jobs,
                             double timeout, const dv_report_explain *explain, int *codes,

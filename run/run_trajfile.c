@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dv_input.h"
 #include "dv_pose.h"
 #include "dv_reference.h"
 #include "run_trajcheck.h"
@@ -452,7 +453,7 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
   memset(f, 0, sizeof *f);
   snprintf(f->path, sizeof f->path, "%s", path);
   reader rd = {path, err, {0}, 0};
-  FILE *fp = fopen(path, "r");
+  FILE *fp = dv_input_open(path); /* a FIFO with no writer is not waited for */
   if (!fp) return dv_fail(err, DV_EINPUT, "%s: cannot open: %s", path, strerror(errno));
   char line[MAX_LINE + 2];
   long lineno = 0;

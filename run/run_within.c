@@ -46,6 +46,7 @@ int dv_run_within_refuse(double estimate, double timeout, const char *whose, dv_
 }
 
 int dv_run_within_stop(dv_error *err) {
+  if (dv_exec_stopped_by()) raise(dv_exec_stopped_by()); /* SIGHUP too */
   raise(SIGINT);
   raise(SIGTERM);
   return dv_fail(err, DV_ESYSTEM, "interrupted by a signal");

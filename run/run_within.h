@@ -23,7 +23,7 @@ typedef enum dv_run_within_end {
   DV_RUN_WITHIN_DONE = 0,      /* result filled */
   DV_RUN_WITHIN_TIMED_OUT = 1, /* killed at the limit */
   DV_RUN_WITHIN_LOST = 2,      /* its process died without a result */
-  DV_RUN_WITHIN_STOPPED = 3,   /* SIGINT or SIGTERM stopped it */
+  DV_RUN_WITHIN_STOPPED = 3,   /* SIGINT, SIGTERM or SIGHUP stopped it */
 } dv_run_within_end;
 
 /* work(ctx, result) within timeout s of wall time (<= 0: no limit, here);
@@ -38,8 +38,9 @@ dv_run_within_end dv_run_within(double timeout, void (*work)(void *ctx, void *re
 int dv_run_within_refuse(double estimate, double timeout, const char *whose, dv_error *err);
 
 /* after DV_RUN_WITHIN_STOPPED: end this process as the stop would have
- * without a limit (its temporaries removed, io_temp.h), SIGINT, else (ignored
- * in a background job) SIGTERM; returns, with err set, only if both are ignored */
+ * without a limit (its temporaries removed, io_temp.h): the signal that
+ * stopped it, SIGINT, else (ignored in a background job) SIGTERM; returns,
+ * with err set, only if all are ignored */
 int dv_run_within_stop(dv_error *err);
 
 /* dv_run_write_csv(engine, sc, fp, forces) within timeout s, announced first

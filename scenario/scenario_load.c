@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "dv_input.h"
 #include "scenario.h"
 #include "scenario_core.h"
 
@@ -104,14 +105,15 @@ static char *read_line(char *buf, int size, void *stream) {
 }
 
 /* path read whole into c->data, refused past DV_SCENARIO_MAX_BYTES before
- * more is read: a scenario is a few KiB, and /dev/zero never ends. A file
- * that cannot be read has no line to point at. */
+ * more is read: a scenario is a few KiB, and /dev/zero never ends; a FIFO
+ * with no writer is not waited for (dv_input.h). A file that cannot be read
+ * has no line to point at. */
 static int read_file(parse_ctx *c, const char *path) {
   struct stat st;
   const double mib = DV_SCENARIO_MAX_BYTES / 1048576.0;
   if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
     return dv_fail(c->err, DV_EINPUT, "%s: is a directory, not a scenario file", path);
-  FILE *f = fopen(path, "rb");
+  FILE *f = dv_input_open(path);
   if (!f) return dv_fail(c->err, DV_EINPUT, "%s: cannot open: %s", path, strerror(errno));
   int status = DV_OK;
   char *buf = NULL;
@@ -131,6 +133,9 @@ static int read_file(parse_ctx *c, const char *path) {
   else if (got > DV_SCENARIO_MAX_BYTES)
     status =
         dv_fail(c->err, DV_EINPUT, "%s: more than the %g MiB a scenario file may have", path, mib);
+  else if (got == 0 && fstat(fileno(f), &st) == 0 && S_ISFIFO(st.st_mode))
+    status =
+        dv_fail(c->err, DV_EINPUT, "%s: a pipe with nothing to read (no writer has it open)", path);
   if (status) goto cleanup;
   buf[got] = '\0';
   c->data = buf, c->size = got, buf = NULL;

@@ -3,8 +3,9 @@
 # cleanly. Each case must exit 2, print exactly one line on stderr matching
 # its regex, print nothing on stdout and write nothing in the working
 # directory: strict numbers ("1e-3x", "2x", "nan", ""), unknown options,
-# missing values, surplus arguments, unknown engines, bad --vary, a --vary
-# key given twice, a map axis that does not increase.
+# missing values, surplus arguments, unknown engines, an empty engine list,
+# bad --vary, a --vary key given twice, an option of one value given twice,
+# suite --stability with --verify, a map axis that does not increase.
 set -u
 export LC_ALL=C
 dv=${1:?usage: check_cli_args.sh DISKVAL SCENARIO_DIR}
@@ -80,6 +81,18 @@ for cmd in compare suite verify; do
   expect "^diskval $cmd: engine 'ode' listed twice\$" $cmd "$sc" --engines ode,mujoco,ode
 done
 expect "^diskval map: engine 'mujoco' listed twice\$" map --engines mujoco,mujoco
+# an empty engine list is no engine, as ',' is (it ran all five)
+for cmd in compare suite verify map; do
+  expect "^diskval $cmd: no engine in ''\$" $cmd "$sc" --engines ''
+done
+# an option of one value given twice: the first was dropped without a word
+expect "^diskval compare: --engines given twice" compare "$sc" --engines ode --engines mujoco
+expect "^diskval simulate: --engine given twice" simulate "$sc" --engine reduced --engine mujoco
+expect "^diskval suite: --out given twice" suite "$sc" --out a --out b
+expect "^diskval best: --theta-tol given twice" best "$sc" --engine mujoco --theta-tol 1 \
+  --theta-tol 2
+# suite runs one kind at a time (--verify alone ran, --stability was dropped)
+expect "^diskval suite: --stability and --verify: one at a time" suite "$sc" --stability --verify
 # a file that cannot be opened has no line to name
 expect "^nosuch.ini: cannot open: No such file or directory\$" simulate nosuch.ini --engine reduced
 expect "--set 'radius=1': expected section.key=value" simulate "$sc" --engine reduced --set radius=1

@@ -5,7 +5,10 @@
 #     as larger than 1 MiB, with one line naming the file;
 #   - a 1 MiB line is refused as too long, at its line;
 #   - all of it under `ulimit -v` (1 GiB) and `timeout`, peak RSS below 64 MiB:
-#     a reader that grows a buffer to the line's length fails here.
+#     a reader that grows a buffer to the line's length fails here;
+#   - a FIFO with no writer (a scenario of analyze, simulate or a suite's
+#     directory, a trajectory of judge) is one line and exit 2 at once, never
+#     a wait for ever; a pipe with a writer (<(...)) is read as a file.
 set -u
 . "$(dirname "$0")/check_lib.sh"
 diskval=$1
@@ -46,4 +49,31 @@ check '[ "$rss" -lt 65536 ]' "a 1 MB line: peak RSS $rss KiB"
 # the same file within the limits still loads
 bounded "$scenarios/steady_circle.ini"
 check '[ $code -eq 0 ]' "steady_circle.ini: exit $code, want 0: $err"
+
+# FIFOs with no writer: refused at once (timeout's 124: it waited)
+mkdir "$work/fifos" && mkfifo "$work/fifos/a.ini" "$work/t.csv"
+cp "$scenarios/steady_circle.ini" "$work/fifos/b.ini"
+nowriter="$work/fifos/a.ini: a pipe with nothing to read (no writer has it open)"
+# fifo WHAT WANT_ERR COMMAND...: exit 2, stderr WANT_ERR (a line), nothing under out/
+fifo() {
+  local what=$1 want=$2
+  shift 2
+  (cd "$work" && exec timeout -k 2 10 "$diskval" "$@") >/dev/null 2>"$work/err"
+  code=$?
+  err=$(cat "$work/err")
+  check '[ $code -eq 2 ]' "$what: exit $code, want 2: $err"
+  check '[ "$err" = "$want" ]' "$what: got: $err"
+  check '[ ! -e "$work/out" ]' "$what: wrote $(ls "$work/out" 2>/dev/null)"
+}
+fifo "analyze of a FIFO" "$nowriter" analyze "$work/fifos/a.ini"
+fifo "simulate of a FIFO" "$nowriter" simulate "$work/fifos/a.ini" --engine reduced --out out/x.csv
+fifo "suite of a directory holding a FIFO" "$nowriter" suite "$work/fifos" --engines mujoco \
+  --out out --quiet
+fifo "judge of a FIFO" "diskval judge: $work/t.csv:1: an empty file: no header" \
+  judge "$scenarios/steady_circle.ini" "$work/t.csv" --out out
+# a pipe with a writer is read
+(exec timeout -k 2 10 "$diskval" analyze <(sleep 0.5; cat "$scenarios/steady_circle.ini")) \
+  >/dev/null 2>"$work/err"
+code=$?
+check '[ $code -eq 0 ]' "analyze <(cat steady_circle.ini): exit $code, want 0: $(cat "$work/err")"
 exit $fail

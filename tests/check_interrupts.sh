@@ -5,6 +5,14 @@
 #     its summary.json, junit.xml and index.html describe this run: the
 #     failure, and the scenario that did not end as an error saying so, never
 #     the previous run's pass;
+#     slow's own report (OUT/slow/report.json) says so too, never the
+#     previous run's pass;
+#   - SIGHUP stops a suite as SIGINT does (exit 130, no worker's temporary,
+#     summary.json of this run); it killed the suite (129), its workers'
+#     .diskval-tmp.* and the previous summary.json staying;
+#   - SIGTERM before any scenario ran (the suite still reading its scenario,
+#     a FIFO) exits 130 with a line, as later, and writes nothing: it died of
+#     the signal (143) without a word;
 #   - a sweep interrupted after its first point exits 130 and writes every
 #     point: the one that ran with its metrics, the others with their
 #     settings, NaN (null) metrics and steps, "missing".
@@ -67,6 +75,39 @@ check 'grep -q "<failure" out/junit.xml && grep -q "<error message=\"$why\"" out
 check 'grep -q "$why" out/index.html && grep -q "diskval suite: <span class=\"fail\">FAIL" out/index.html' \
   "suite: index.html does not describe this run"
 check '[ -z "$(find out -name ".diskval-tmp*" -o -name "*.tmp.*")" ]' "suite: temporaries remain"
+check '[ "$(jq -r .pass out/slow/report.json)" = false ] &&
+  [ "$(jq -r .error out/slow/report.json)" = "$why" ]' \
+  "suite: out/slow/report.json is not this run's: $(jq -c '{pass, error}' out/slow/report.json)"
+
+# SIGHUP while slow runs (its worker's temporary directory is there)
+"$dv" suite slow.ini --engines mujoco --out out --jobs 1 --quiet >stdout 2>stderr &
+pid=$!
+wait_for 'compgen -G "out/.diskval-tmp.*" >/dev/null'
+kill -HUP $pid
+wait $pid
+code=$?
+check '[ $code -eq 130 ]' "suite SIGHUP: exit $code, want 130: $(cat stderr)"
+check 'grep -q "interrupted" stderr' "suite SIGHUP: stderr does not say so: $(cat stderr)"
+check '[ -z "$(find out -name ".diskval-tmp*")" ]' "suite SIGHUP: temporaries remain: $(ls -A out)"
+check '[ "$(jq -c "[.scenarios[].scenario]" out/summary.json)" = "[\"slow\"]" ] &&
+  [ "$(summary error slow)" = "$why" ]' "suite SIGHUP: summary.json is not this run's: $(cat out/summary.json)"
+
+# SIGTERM while the suite still reads its scenario: a FIFO that this shell
+# holds open as a writer, fed once the signal is sent
+mkfifo early.ini
+exec 3<>early.ini
+"$dv" suite early.ini --engines mujoco --out early --quiet >stdout 2>stderr 3<&- &
+pid=$!
+wait_for 'readlink /proc/$pid/fd/* 2>/dev/null | grep -q "/early.ini$"'
+kill -TERM $pid
+cat fast.ini >&3
+exec 3>&-
+wait $pid
+code=$?
+check '[ $code -eq 130 ]' "suite SIGTERM early: exit $code, want 130: $(cat stderr)"
+check '[ "$(cat stderr)" = "diskval suite: interrupted before any scenario ran: nothing written" ]' \
+  "suite SIGTERM early: stderr: $(cat stderr)"
+check '[ ! -e early ]' "suite SIGTERM early: wrote $(ls -A early 2>/dev/null)"
 
 # a sweep: 2e-3 (0.01 s), then 1e-6 (about 7 s) and 5e-7 (14 s), one at a time
 "$dv" sweep "$data/short_circle.ini" --engine mujoco --vary timestep=2e-3,1e-6,5e-7 --jobs 1 \

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # check_signals_lock.sh DISKVAL SCENARIO_DIR: what a run leaves when it is stopped.
-#   - compare ended by SIGINT or SIGTERM dies of the signal and leaves
+#   - compare ended by SIGINT, SIGTERM or SIGHUP, with or without --timeout
+#     (its run in a process of its own), dies of that signal and leaves
 #     neither its temporary report directory nor the directory's lock file;
 #   - a suite killed with SIGKILL leaves no worker behind and no lock: the
 #     next run into the same --out goes ahead;
@@ -20,26 +21,29 @@ set -m # background runs get SIGINT like a foreground one (no job control: ignor
 
 # the 60 s scene in MuJoCo takes 20 s: still running when the signal comes
 long=$sc/hard/long_horizon.ini
-# wait_for GLOB: until a path matches (at most 10 s)
+# wait_for GLOB: until a path matches (at most 60 s: a busy machine)
 wait_for() {
-  for _ in $(seq 200); do
+  for _ in $(seq 1200); do
     compgen -G "$1" >/dev/null && return 0
     sleep 0.05
   done
   return 1
 }
 
-for sig in INT TERM; do
-  "$dv" compare "$long" --engines mujoco --out "c$sig" >/dev/null 2>&1 &
+for sig in INT TERM HUP INT/600 HUP/600; do
+  limit=${sig#*/} sig=${sig%/*}
+  [ "$limit" = "$sig" ] && limit=0
+  "$dv" compare "$long" --engines mujoco --out "c$sig" --timeout "$limit" >/dev/null 2>&1 &
   pid=$!
-  wait_for "c$sig/.*tmp.$pid.*" || echo "FAIL: compare made no temporary report directory"
+  wait_for "c$sig/.*tmp.*" || echo "FAIL: compare made no temporary report directory"
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?
   want=$((128 + $(kill -l "$sig")))
-  check '[ $code -eq $want ]' "compare SIG$sig: exit $code, want $want (died of the signal)"
+  check '[ $code -eq $want ]' "compare SIG$sig --timeout $limit: exit $code, want $want (died of the signal)"
   check '[ -z "$(ls -A "c$sig" | grep -v "^\.diskval-report$")" ]' \
-    "compare SIG$sig: left behind: $(ls -A "c$sig")"
+    "compare SIG$sig --timeout $limit: left behind: $(ls -A "c$sig")"
+  rm -rf "c$sig"
 done
 
 # a suite killed outright: its worker goes with it, and so does the lock

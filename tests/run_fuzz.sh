@@ -41,7 +41,7 @@ mapfile -t engine_c < <(find "$src/engines" -name '*.c' ! -name 'test_*' | sort)
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "${engine_c[@]}" \
-  "$src/common/dv_error.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c "$src"/reduced/*/*.c \
+  "$src/common/dv_error.c" "$src/common/dv_input.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c "$src"/reduced/*/*.c \
   -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode bullet-float64) -lmujoco $sundials \
   -lSimTKsimbody -lSimTKmath -lSimTKcommon -ldart -ldart-collision-ode -ldl -ldouble-conversion \
   -lstdc++ -lm -o "$work/fuzz" || exit 1
