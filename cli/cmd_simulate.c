@@ -84,9 +84,14 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
   /* the CSV and its metadata go into place together: another run writing the
    * same names waits, so the pair is always one run's */
   const int held = dv_io_hold_dir_of(out.path[0] ? out.path : ".");
-  int bad = dv_io_commit(&out, &err) || (forces_path && dv_io_commit(&forces, &err));
+  /* checked again now the directory is held: a user's file of that name may
+   * have come while the run went, and is never replaced */
+  const int meta = strcmp(out_path, "-") != 0 && !out.direct;
+  int bad = meta && dv_run_meta_check_replaceable(meta_path, &err);
+  if (bad) dv_io_abort(&out);
+  bad = bad || dv_io_commit(&out, &err) || (forces_path && dv_io_commit(&forces, &err));
   dv_io_abort(&forces);
-  if (!bad && strcmp(out_path, "-") != 0 && !out.direct) /* metadata beside a regular file */
+  if (!bad && meta) /* metadata beside a regular file */
     bad = dv_run_meta_write(meta_path, engine, &sc, &stats, &err);
   dv_io_release_dir(held);
   if (bad) {

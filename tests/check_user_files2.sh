@@ -83,6 +83,22 @@ check 'same mine.csv.json "$sum" && [ ! -e mine.csv ]' "a user's X.json was repl
 "$dv" simulate sc.ini --engine reduced --out again.csv 2>/dev/null
 "$dv" simulate sc.ini --engine reduced --out again.csv 2>/dev/null
 check '[ $? -eq 0 ]' "simulate's own X.json was not replaced"
+# a user's X.json that comes while the run goes is not replaced either
+sed -e "s/^duration = .*/duration = 5/" "$sc/steady_circle.ini" >slow.ini
+"$dv" simulate slow.ini --engine ode --out during.csv >/dev/null 2>"$work/stderr" &
+pid=$!
+for i in $(seq 1000); do
+  ls -A | grep -q '^\.diskval-tmp\.' && break
+  sleep 0.01
+done
+echo '{"mine": "made while the run went"}' >during.csv.json
+sum=$(sha256sum <during.csv.json)
+wait $pid
+code=$?
+check '[ $code -eq 2 ] && grep -q "during.csv.json: a file that is not simulate" "$work/stderr"' \
+  "simulate over a user's X.json made during the run: exit $code: $(cat "$work/stderr")"
+check 'same during.csv.json "$sum" && [ ! -e during.csv ]' \
+  "a user's X.json made during the run was replaced, or X written"
 
 
 # 2. judge: a trajectory inside the report the run replaces
