@@ -302,7 +302,7 @@ static int run_map(map *mp, const char *cspec, const char *sspec, const char *en
     outputs[e + 1] = svg[e];
   }
   if (dv_io_check_inputs(out, outputs, (const char *const *)&mp->path, mp->path ? 1 : 0, &err) ||
-      (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err)))
+      (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, outputs, &err)))
     return dv_cli_error("map", "%s", err.msg);
   const size_t n = mp->nengines * mp->c->n * mp->spin->n;
   cell *cells = calloc(n, sizeof *cells);

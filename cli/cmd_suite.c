@@ -292,7 +292,15 @@ int dv_cli_suite(int argc, char **argv) {
   }
   /* one run at a time in --out: it removes what dead runs left there (under
    * mpirun, rank 0 holds the lock for all the ranks); checked again once held */
-  if (!code && (dv_io_own_dir(o.out, &err) ||
+  /* the fixed names this run writes into --out, its main one first */
+  const char *names[8] = {0};
+  size_t nn = 0;
+  names[nn++] = o.verify ? "verify.json" : "summary.json";
+  names[nn++] = o.verify ? "verify.md" : "index.html";
+  if (!o.junit) names[nn++] = "junit.xml";
+  if (o.stability && !o.verify)
+    names[nn++] = "stability.html", names[nn++] = "stability.md", names[nn++] = "stability.json";
+  if (!code && (dv_io_own_dir(o.out, names, &err) ||
                 (dv_exec_mpi_rank() == 0 && dv_io_lock_dir(o.out, &lock, &err)) ||
                 check_outputs(&o, &files, scs, &err)))
     code = dv_cli_error("suite", "%s", err.msg);

@@ -149,7 +149,7 @@ static int sweep(const char *scenario, const dv_cli_list *sets, const char *engi
   static const char *const outputs[] = {"sweep.csv", "sweep.json", "work_precision.svg",
                                         "error_vs_timestep.svg", NULL};
   if (dv_io_check_inputs(out, outputs, &scenario, 1, &err) ||
-      (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, &err)))
+      (dv_exec_mpi_rank() == 0 && dv_io_own_dir(out, outputs, &err)))
     return dv_cli_error("sweep", "%s", err.msg);
   if (dv_exec_mpi_size() > 1) s->checkpoint_dir = out; /* rank 0 keeps the tables current */
   if (dv_search_sweep_run(sc, engine->name, vary, specs->n, jobs, s, &err) < 0)

@@ -67,29 +67,56 @@ static int legacy_name(const char *name) {
          (len > 4 && (!strcmp(name + len - 4, ".csv") || !strcmp(name + len - 4, ".svg")));
 }
 
-/* the first entry of the marked directory path that diskval did not put
- * there (not a regular file it listed in the mark), into name; 1, else 0 */
-static int foreign(const char *path, char *name, size_t size) {
-  char mark[4096], *text = NULL;
-  if (snprintf(mark, sizeof mark, "%s/" DV_IO_MARK, path) >= (int)sizeof mark) return 0;
-  FILE *f = fopen(mark, "r");
+/* the text of path's mark into *text (caller frees; NULL when unreadable);
+ * the names it lists as "\nNAME\n...", or NULL when it lists none */
+static const char *mark_list(const char *path, char **text) {
+  char mark[4096];
   long len = 0;
-  if (f && (text = malloc(1 << 20))) len = (long)fread(text, 1, (1 << 20) - 1, f);
+  *text = NULL;
+  if (snprintf(mark, sizeof mark, "%s/" DV_IO_MARK, path) >= (int)sizeof mark) return NULL;
+  FILE *f = fopen(mark, "r");
+  if (f && (*text = malloc(1 << 20))) len = (long)fread(*text, 1, (1 << 20) - 1, f);
   if (f) fclose(f);
-  if (text) text[len] = '\0';
-  const char *list = text ? strstr(text, "\n" DV_IO_MARK_FILES) : NULL;
-  if (list) list += strlen(DV_IO_MARK_FILES); /* "\nNAME\n" for every name */
+  if (!*text) return NULL;
+  (*text)[len] = '\0';
+  const char *list = strstr(*text, "\n" DV_IO_MARK_FILES);
+  return list ? list + strlen(DV_IO_MARK_FILES) : NULL; /* "\nNAME\n" for every name */
+}
+
+/* list (from mark_list) names name */
+static int listed(const char *list, const char *name) {
+  char needle[300];
+  return list && snprintf(needle, sizeof needle, "\n%s\n", name) < (int)sizeof needle &&
+         strstr(list, needle) != NULL;
+}
+
+/* path holds the regular file name */
+static int holds_file(const char *path, const char *name) {
+  char entry[4096];
+  struct stat st;
+  return snprintf(entry, sizeof entry, "%s/%s", path, name) < (int)sizeof entry &&
+         !lstat(entry, &st) && S_ISREG(st.st_mode);
+}
+
+/* the first entry of the marked directory path that diskval did not put
+ * there (not a regular file it listed in the mark), into name; 1, else 0.
+ * A mark that lists no files is a report's from before marks listed them
+ * only when a report.json is there: anything else so marked (the --out of
+ * a suite, sweep or map from then) holds no file known for diskval's */
+static int foreign(const char *path, char *name, size_t size) {
+  char *text;
+  const char *list = mark_list(path, &text);
+  const int legacy = !list && holds_file(path, "report.json");
   DIR *d = opendir(path);
   int found = 0;
   for (struct dirent *e; d && !found && (e = readdir(d));) {
-    char entry[4096], needle[300];
+    char entry[4096];
     struct stat st;
     if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || !strcmp(e->d_name, DV_IO_MARK))
       continue;
-    snprintf(needle, sizeof needle, "\n%s\n", e->d_name);
     found = snprintf(entry, sizeof entry, "%s/%s", path, e->d_name) >= (int)sizeof entry ||
             lstat(entry, &st) || !S_ISREG(st.st_mode) ||
-            !(list ? strstr(list, needle) != NULL : legacy_name(e->d_name));
+            !(list ? listed(list, e->d_name) : legacy && legacy_name(e->d_name));
     if (found) snprintf(name, size, "%s", entry);
   }
   if (d) closedir(d);
@@ -128,15 +155,49 @@ static int empty(const char *dir) {
   return !any;
 }
 
-int dv_io_own_dir(const char *dir, dv_error *err) {
+int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
   int status = dv_io_make_dirs(dir, err);
-  if (status || dv_io_owned(dir)) return status;
-  if (!empty(dir))
+  if (status) return status;
+  const int owned = dv_io_owned(dir);
+  if (!owned && !empty(dir))
     return dv_fail(err, DV_EINPUT,
                    "%s: holds files diskval did not make (it has no " DV_IO_MARK
                    "); nothing was written: give a new or empty --out, or one diskval wrote",
                    dir);
-  return dv_io_mark(dir, err);
+  char *text = NULL;
+  const char *list = owned ? mark_list(dir, &text) : NULL;
+  /* a mark from before marks listed files: the command's first output there
+   * says the directory is this command's, and its files diskval's */
+  const int legacy = owned && !list && names[0] && holds_file(dir, names[0]);
+  size_t size = sizeof DV_IO_MARK_TEXT + sizeof DV_IO_MARK_OUT + sizeof DV_IO_MARK_FILES +
+                (list ? strlen(list) : 0);
+  for (const char *const *f = names; *f && !status; f++) {
+    char path[4096];
+    struct stat st;
+    size += strlen(*f) + 1;
+    if (dv_io_path(path, sizeof path, err, "%s/%s", dir, *f))
+      status = DV_EINPUT;
+    else if (!lstat(path, &st) && !listed(list, *f) && !legacy)
+      status = dv_fail(err, DV_EINPUT,
+                       "%s: diskval did not make it (the " DV_IO_MARK " of %s does not list "
+                       "it), and this run would replace it; nothing was written: move it, or "
+                       "choose another --out",
+                       path, dir);
+  }
+  /* the new mark: an --out's, listing what it listed and this run's names */
+  char *mark = status ? NULL : malloc(size);
+  if (mark) {
+    char *p = mark + sprintf(mark, "%s", DV_IO_MARK_TEXT DV_IO_MARK_OUT DV_IO_MARK_FILES);
+    if (list) p += sprintf(p, "%s", list + 1);
+    for (const char *const *f = names; *f; f++)
+      if (!listed(list, *f) && !strchr(*f, '\n')) p += sprintf(p, "%s\n", *f);
+    status = dv_io_write_text(dir, DV_IO_MARK, mark, err);
+  } else if (!status) {
+    status = dv_fail(err, DV_ESYSTEM, "out of memory");
+  }
+  free(mark);
+  free(text);
+  return status;
 }
 
 /* path resolved as far as it exists (symbolic links, ".", ".."), the rest

@@ -21,6 +21,10 @@
  * the text: the names of its files, one a line; any other file found there
  * is a user's, and the directory is not replaced */
 #define DV_IO_MARK_FILES "files:\n"
+/* in the mark of a command's --out (suite, sweep, map), after the text and
+ * before DV_IO_MARK_FILES, which lists the fixed-name files diskval wrote
+ * there: any other file of such a name is a user's, never replaced */
+#define DV_IO_MARK_OUT "out:\n"
 
 /* path is a directory holding the mark */
 int dv_io_owned(const char *path);
@@ -30,14 +34,18 @@ int dv_io_mark(const char *dir, dv_error *err);
 
 /* path may be made or replaced: it does not exist, or it is a directory
  * holding the mark and nothing but the files its mark lists (a mark that
- * lists none: report.json, report.md, *.csv, *.svg); else DV_EINPUT, err
- * naming path and what is there, or the file diskval did not make */
+ * lists none, with a report.json there: report.json, report.md, *.csv,
+ * *.svg); else DV_EINPUT, err naming path and what is there, or the file
+ * diskval did not make */
 int dv_io_check_replaceable(const char *path, dv_error *err);
 
-/* make dir (mkdir -p) for a command's fixed-name outputs, or take an
- * existing one that is empty (apart from diskval's lock and temporaries) or
- * marked; the mark is put in; else DV_EINPUT naming dir */
-int dv_io_own_dir(const char *dir, dv_error *err);
+/* make dir (mkdir -p) for a command's fixed-name outputs names (NULL-ended,
+ * the command's main one first), or take an existing one that is empty
+ * (apart from diskval's lock and temporaries) or marked, where each of names
+ * is new or listed in the mark (a mark listing none: the directory holds
+ * names[0]); the mark is put in, listing names; else DV_EINPUT naming dir,
+ * or the file of those names diskval did not make */
+int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err);
 
 /* none of inputs[0..n) is the file dir/<one of names> (NULL-ended), an
  * output of the run; else DV_EINPUT naming both */

@@ -10,6 +10,8 @@
 #   - sweep and map refuse a scenario that is one of their outputs;
 #   - --junit onto another output of the run is refused;
 #   - a report directory holding a user's file is not replaced;
+#   - a user's file in a map's --out is not lost to a report or to suite's files;
+#   - simulate's FILE.json made by a user during the run is not replaced;
 #   - judge's names obey the scenario names' rules, and a long file name
 #     gets a default name that does.
 set -u
@@ -164,6 +166,33 @@ refused "a report with an old mark holding a user's file" "out/fast/notes.txt: d
 rm out/fast/notes.txt
 "$dv" compare sc.ini --engines ode --out out >/dev/null 2>&1
 check '[ $? -ne 2 ] && grep -q "^report.json$" out/fast/.diskval-report' "a report with an old mark was not replaced"
+
+# 6. the --out of map (and sweep, suite) is no report: a user's file there is not lost
+# when a report of the same name replaces it, nor replaced by another command's output
+sed -e "s/^name = .*/name = circ/" -e "s/^duration = .*/duration = 0.3/" "$sc/steady_circle.ini" >circ.ini
+mapped() { "$dv" map circ.ini --c 0.1..0.3:2 --spin 5..20:2 --engines ode --duration 0.2 \
+  --quiet --out "$1" >/dev/null 2>&1; }
+mapped mo/circ
+echo mine >mo/circ/measurements.csv
+echo '<svg/>' >mo/circ/mine.svg
+sums=$(sha256sum mo/circ/measurements.csv mo/circ/mine.svg)
+refused "compare over a map's --out holding a user's CSV" "mo/circ/(measurements.csv|mine.svg): diskval did not make it" \
+  "$dv" compare circ.ini --engines ode --out mo
+echo "diskval output directory, format 1" >mo/circ/.diskval-report # as map marked it before
+refused "compare over an old map's --out holding a user's CSV" "mo/circ/[a-z_.]+: diskval did not make it" \
+  "$dv" compare circ.ini --engines ode --out mo
+check '[ "$(sha256sum mo/circ/measurements.csv mo/circ/mine.svg)" = "$sums" ]' \
+  "a user's file in a map's --out was lost to a report"
+for f in index.html summary.json; do
+  mapped "mr-$f"
+  echo mine >"mr-$f/$f"
+  sum=$(sha256sum <"mr-$f/$f")
+  refused "suite over a user's $f in a map's --out" "mr-$f/$f: diskval did not make it" \
+    "$dv" suite circ.ini --engines ode --out "mr-$f"
+  check 'same "mr-$f/$f" "$sum" && [ ! -e "mr-$f/circ" ]' "suite replaced a user's $f in a map's --out"
+done
+mapped mr-index.html
+check '[ $? -eq 0 ]' "map into its own --out again was refused"
 
 # judge's names are file names as a scenario's are; a long file name gets a default that is one
 refused "judge --name .." "name '\.\.' is not a file name" "$dv" judge sc.ini ode_run.csv --name .. --out jn
