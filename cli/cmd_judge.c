@@ -28,7 +28,8 @@ static const char HELP[] =
     "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
     "--name: each trajectory's name in the report: 1 to 40 letters, digits, '_-.+', not\n"
     "starting with '.' (as a scenario's). Default: its file name without extension, cut to 40\n"
-    "characters, and where that is no such name, every character but those '_'.\n"
+    "characters, and where that is no such name, every character but those '_'. No name is\n"
+    "matched-NAME of another, whose matched reference a thick scene's report writes so.\n"
     "--step H1,H2,H3[,...]: the time step of each of 3 to 8 trajectories of one engine, each\n"
     "smaller than the one before (halving, as verify refines, or any ratio of at least 1.1):\n"
     "their theta errors give the order and the extrapolated discrepancy, as verify does (exit 1\n"
@@ -157,6 +158,18 @@ static int make_names(const char *list, const dv_cli_list *files, char names[][6
       if (!strcmp(names[i], names[j]))
         return dv_fail(err, DV_EINPUT, "two trajectories named '%s' (give --name)", names[i]);
   }
+  /* a thick scene's report also holds MATCHED-NAME.csv, each trajectory's
+   * matched reference: no trajectory may take that file */
+  const char *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name;
+  const size_t len = strlen(matched);
+  for (size_t i = 0; i < n; i++)
+    for (size_t j = 0; j < n; j++)
+      if (!strncmp(names[i], matched, len) && names[i][len] == '-' &&
+          !strcmp(names[i] + len + 1, names[j]))
+        return dv_fail(err, DV_EINPUT,
+                       "name '%s' is the file of the matched reference of '%s' in the report "
+                       "(give --name)",
+                       names[i], names[j]);
   return DV_OK;
 }
 

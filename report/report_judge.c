@@ -34,6 +34,7 @@ int dv_report_judge_run(const dv_scenario *sc, dv_replay *replays, size_t n, con
     bad_input = status == DV_EINPUT;
     if (!status) say_no_cause(c);
     if (!status) status = dv_report_scenario_write(tmp, c, err);
+    bad_input = bad_input || status == DV_EINPUT; /* two outputs one file: no report */
     if (!status) dv_report_scenario_print(stdout, c);
     for (size_t i = 0; !status && theta_err && i < c->n; i++)
       theta_err[i] = c->r[i].vs_ref.value[DV_THETA_MAX_ERR];

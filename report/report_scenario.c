@@ -432,8 +432,34 @@ static int write_portraits(const char *dir, const dv_comparison *c, dv_error *er
   return status;
 }
 
+/* the CSV file name of trajectory k of c's report (0: the thin reference,
+ * 1..n: engine k-1, n+1..2n: the matched reference of engine k-n-1, "" when
+ * it has none) into name */
+static void csv_name(const dv_comparison *c, size_t k, char *name, size_t size) {
+  if (k == 0)
+    snprintf(name, size, "%s.csv", dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
+  else if (k <= c->n)
+    snprintf(name, size, "%s.csv", c->r[k - 1].engine->name);
+  else if (c->r[k - c->n - 1].half_thickness > 0.0)
+    snprintf(name, size, "%s-%s.csv", dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name,
+             c->r[k - c->n - 1].engine->name);
+  else
+    name[0] = '\0';
+}
+
 int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
   char name[96];
+  for (size_t k = 0; k <= 2 * c->n; k++) /* one file is never two of the report's outputs */
+    for (size_t j = 0; j < k; j++) {
+      char other[96];
+      csv_name(c, k, name, sizeof name);
+      csv_name(c, j, other, sizeof other);
+      if (name[0] && !strcmp(name, other))
+        return dv_fail(err, DV_EINPUT,
+                       "%s: two trajectories of the report of %s would be this one file; "
+                       "nothing was written",
+                       name, c->sc->name);
+    }
   snprintf(name, sizeof name, "%s.csv", dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
   int status = write_csv(dir, name, &c->thin, err);
   dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}, INFINITY, c->horizon, 0.0};

@@ -12,6 +12,7 @@
 #   - a report directory holding a user's file is not replaced;
 #   - a user's file in a map's --out is not lost to a report or to suite's files;
 #   - simulate's FILE.json made by a user during the run is not replaced;
+#   - judge's names never make two of a report's outputs one file;
 #   - judge's names obey the scenario names' rules, and a long file name
 #     gets a default name that does.
 set -u
@@ -205,6 +206,17 @@ cp ode_run.csv .hidden.csv
 "$dv" judge sc.ini "$long.csv" .hidden.csv --out jn >/dev/null 2>"$work/stderr"
 check '[ -f "jn/fast/${long:0:40}.csv" ] && [ -f jn/fast/_hidden.csv ]' \
   "judge of a long or hidden file name: no report under a default name: $(cat "$work/stderr")"
+
+# a thick scene's report holds matched-NAME.csv, NAME's matched reference: no trajectory takes it
+sed -e "s/^\[disk\]/[disk]\nthickness = 0.004/" sc.ini >thick.ini
+"$dv" simulate thick.ini --engine ode --out thick_run.csv 2>/dev/null
+refused "judge --name x,matched-x of a thick scene" "name 'matched-x' is the file of the matched reference of 'x'" \
+  "$dv" judge thick.ini thick_run.csv thick_run.csv --name x,matched-x --out jt
+cp thick_run.csv x.csv
+cp thick_run.csv matched-x.csv
+refused "judge x.csv matched-x.csv of a thick scene" "name 'matched-x' is the file of the matched reference of 'x'" \
+  "$dv" judge thick.ini matched-x.csv x.csv --out jt
+check '[ ! -e jt ]' "a refused judge wrote its report"
 
 [ $fail -eq 0 ] && echo "user files (second pass): none lost"
 exit $fail
