@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io_owned.h"
 #include "io_temp.h"
 
 /* vsnprintf that refuses to cut a path short */
@@ -198,6 +199,8 @@ int dv_io_same_file(const char *a, const char *b) {
   if (stat(a, &sa) == 0 && stat(b, &sb) == 0) /* a device (/dev/null) may take both */
     return S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
   char ca[PATH_MAX + 256], cb[PATH_MAX + 256];
-  if (dv_io_canonical(a, ca, sizeof ca) || dv_io_canonical(b, cb, sizeof cb)) return !strcmp(a, b);
+  if (dv_io_canonical(a, ca, sizeof ca) || dv_io_canonical(b, cb, sizeof cb))
+    /* a directory not yet made: each resolved as far as it exists */
+    return !strcmp(a, b) || (dv_io_within(a, b) && dv_io_within(b, a));
   return !strcmp(ca, cb);
 }

@@ -103,10 +103,10 @@ static int holds_file(const char *path, const char *name) {
  * A mark that lists no files is a report's from before marks listed them
  * only when a report.json is there: anything else so marked (the --out of
  * a suite, sweep or map from then) holds no file known for diskval's */
-static int foreign(const char *path, char *name, size_t size) {
+static int foreign(const char *path, char *name, size_t size, int building) {
   char *text;
   const char *list = mark_list(path, &text);
-  const int legacy = !list && holds_file(path, "report.json");
+  const int legacy = !list && (building || holds_file(path, "report.json"));
   DIR *d = opendir(path);
   int found = 0;
   for (struct dirent *e; d && !found && (e = readdir(d));) {
@@ -124,6 +124,11 @@ static int foreign(const char *path, char *name, size_t size) {
   return found;
 }
 
+int dv_io_owned_only(const char *path) {
+  char other[4200];
+  return dv_io_owned(path) && !foreign(path, other, sizeof other, 1);
+}
+
 int dv_io_check_replaceable(const char *path, dv_error *err) {
   struct stat st;
   char other[4200];
@@ -131,7 +136,7 @@ int dv_io_check_replaceable(const char *path, dv_error *err) {
     if (errno == ENOENT) return DV_OK;
     return dv_fail(err, DV_EINPUT, "%s: cannot look at it: %s", path, strerror(errno));
   }
-  if (dv_io_owned(path) && foreign(path, other, sizeof other))
+  if (dv_io_owned(path) && foreign(path, other, sizeof other, 0))
     return dv_fail(err, DV_EINPUT,
                    "%s: diskval did not make it, and the run would replace the report it is "
                    "in; nothing was written: move it, or choose another --out or scenario name",
@@ -143,14 +148,21 @@ int dv_io_check_replaceable(const char *path, dv_error *err) {
                  path, S_ISDIR(st.st_mode) ? "directory" : "file");
 }
 
-/* dir holds nothing but diskval's lock and temporaries */
+/* dir holds nothing but diskval's lock (an empty file) and temporaries */
 static int empty(const char *dir) {
   DIR *d = opendir(dir);
   if (!d) return 0;
   int any = 0;
-  for (struct dirent *e; !any && (e = readdir(d));)
-    any = strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, DV_IO_LOCK_NAME) &&
+  for (struct dirent *e; !any && (e = readdir(d));) {
+    char lock[4096];
+    struct stat st;
+    const int is_lock =
+        !strcmp(e->d_name, DV_IO_LOCK_NAME) &&
+        snprintf(lock, sizeof lock, "%s/%s", dir, e->d_name) < (int)sizeof lock &&
+        !lstat(lock, &st) && S_ISREG(st.st_mode) && st.st_size == 0;
+    any = strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && !is_lock &&
           strncmp(e->d_name, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX));
+  }
   closedir(d);
   return !any;
 }
@@ -212,7 +224,9 @@ static int resolve(const char *path, char *out, size_t size) {
     }
     char *slash = strrchr(head, '/');
     const char *last = slash ? slash + 1 : head;
-    if (snprintf(rest, sizeof rest, "%s%s%s", *last ? "/" : "", last, tail) >= (int)sizeof rest)
+    const int skip = !*last || !strcmp(last, "."); /* "o/./x" is "o/x", o or not */
+    if (snprintf(rest, sizeof rest, "%s%s%s", skip ? "" : "/", skip ? "" : last, tail) >=
+        (int)sizeof rest)
       return -1;
     memcpy(tail, rest, sizeof tail);
     if (!slash)

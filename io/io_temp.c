@@ -38,7 +38,9 @@ static long owner_of(const char *name) {
   if (strncmp(name, DV_IO_TEMP_PREFIX, plen)) return 0;
   const char *digits = name + plen, *end = digits;
   while (isdigit((unsigned char)*end)) end++;
-  if (end == digits || end - digits > 9 || *end != '.' || strlen(end + 1) != 6) return 0;
+  /* a PID as diskval prints it: no leading zero */
+  if (end == digits || *digits == '0' || end - digits > 9 || *end != '.' || strlen(end + 1) != 6)
+    return 0;
   for (const char *c = end + 1; *c; c++)
     if (!isalnum((unsigned char)*c)) return 0;
   return strtol(digits, NULL, 10);
@@ -70,8 +72,9 @@ int dv_io_temp_remove_stale(const char *dir) {
     if (len < 0 || (size_t)len >= sizeof path) continue;
     struct stat st;
     if (lstat(path, &st)) continue;
-    /* a directory: a report diskval marked, or one that died before its mark */
-    if (S_ISDIR(st.st_mode) ? (dv_io_owned(path) ? dv_io_remove_tree(path) : rmdir(path))
+    /* a directory: a report diskval marked holding nothing but its files, or
+     * one that died before its mark */
+    if (S_ISDIR(st.st_mode) ? (dv_io_owned_only(path) ? dv_io_remove_tree(path) : rmdir(path))
                             : S_ISREG(st.st_mode) ? unlink(path) : -1)
       continue;
     removed++;

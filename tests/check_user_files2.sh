@@ -13,6 +13,7 @@
 #   - a user's file in a map's --out is not lost to a report or to suite's files;
 #   - simulate's FILE.json made by a user during the run is not replaced;
 #   - judge's names never make two of a report's outputs one file;
+#   - only diskval's own temporaries, lock and --out are taken for them.
 #   - judge's names obey the scenario names' rules, and a long file name
 #     gets a default name that does.
 set -u
@@ -217,6 +218,32 @@ cp thick_run.csv matched-x.csv
 refused "judge x.csv matched-x.csv of a thick scene" "name 'matched-x' is the file of the matched reference of 'x'" \
   "$dv" judge thick.ini matched-x.csv x.csv --out jt
 check '[ ! -e jt ]' "a refused judge wrote its report"
+
+# 7. only what diskval made is taken for its temporaries, lock or output
+mkdir tm
+echo mine >tm/.diskval-tmp.099999.abcdef # no PID diskval would write
+mkdir tm/.diskval-tmp.99999.abcdef       # a mark, and a user's file beside it
+echo "diskval output directory, format 1" >tm/.diskval-tmp.99999.abcdef/.diskval-report
+echo keep >tm/.diskval-tmp.99999.abcdef/notes.txt
+mkdir tm/.diskval-tmp.99998.abcdef # a dead run's report, half written: removed
+echo "diskval output directory, format 1" >tm/.diskval-tmp.99998.abcdef/.diskval-report
+echo "# r" >tm/.diskval-tmp.99998.abcdef/report.md
+sums=$(sha256sum tm/.diskval-tmp.099999.abcdef tm/.diskval-tmp.99999.abcdef/notes.txt)
+if ! kill -0 99999 99998 2>/dev/null; then
+  "$dv" simulate sc.ini --engine reduced --out tm/run.csv 2>/dev/null
+  check '[ "$(sha256sum tm/.diskval-tmp.099999.abcdef tm/.diskval-tmp.99999.abcdef/notes.txt)" = "$sums" ]' \
+    "a user's file named like a stale temporary was removed"
+  check '[ ! -e tm/.diskval-tmp.99998.abcdef ]' "a dead run's report was not removed"
+fi
+mkdir lk
+echo "a user's notes" >lk/.diskval.lock
+sum=$(sha256sum <lk/.diskval.lock)
+refused "sweep into a directory holding a user's .diskval.lock" "lk: holds files diskval did not make" \
+  "$dv" sweep sc.ini --engine ode --vary timestep=1e-3,2e-3 --out lk
+check 'same lk/.diskval.lock "$sum" && [ ! -e lk/.diskval-report ]' "a user's .diskval.lock was taken for a lock"
+refused "suite --junit NEW/./index.html" "--junit 'new/./index.html' is the suite's own" \
+  "$dv" suite sc.ini --engines ode --out new --junit new/./index.html
+check '[ ! -e new ]' "a refused suite made its --out"
 
 [ $fail -eq 0 ] && echo "user files (second pass): none lost"
 exit $fail
