@@ -203,7 +203,8 @@ int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
     if (list) p += sprintf(p, "%s", list + 1);
     for (const char *const *f = names; *f; f++)
       if (!listed(list, *f) && !strchr(*f, '\n')) p += sprintf(p, "%s\n", *f);
-    status = dv_io_write_text(dir, DV_IO_MARK, mark, err);
+    /* written only when it changes: a directory another run holds is not touched */
+    if (!text || strcmp(text, mark)) status = dv_io_write_text(dir, DV_IO_MARK, mark, err);
   } else if (!status) {
     status = dv_fail(err, DV_ESYSTEM, "out of memory");
   }
