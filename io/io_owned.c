@@ -102,7 +102,9 @@ static int holds_file(const char *path, const char *name) {
  * there (not a regular file it listed in the mark), into name; 1, else 0.
  * A mark that lists no files is a report's from before marks listed them
  * only when a report.json is there: anything else so marked (the --out of
- * a suite, sweep or map from then) holds no file known for diskval's */
+ * a suite, sweep or map from then) holds no file known for diskval's.
+ * building: path is a temporary report of a dead run, whose mark lists no
+ * files yet: a report's files, and the dead run's temporaries, are its */
 static int foreign(const char *path, char *name, size_t size, int building) {
   char *text;
   const char *list = mark_list(path, &text);
@@ -116,7 +118,8 @@ static int foreign(const char *path, char *name, size_t size, int building) {
       continue;
     found = snprintf(entry, sizeof entry, "%s/%s", path, e->d_name) >= (int)sizeof entry ||
             lstat(entry, &st) || !S_ISREG(st.st_mode) ||
-            !(list ? listed(list, e->d_name) : legacy && legacy_name(e->d_name));
+            (!(list ? listed(list, e->d_name) : legacy && legacy_name(e->d_name)) &&
+             !(building && dv_io_temp_is_stale(e->d_name))); /* a dead writer's file */
     if (found) snprintf(name, size, "%s", entry);
   }
   if (d) closedir(d);

@@ -228,6 +228,7 @@ echo keep >tm/.diskval-tmp.99999.abcdef/notes.txt
 mkdir tm/.diskval-tmp.99998.abcdef # a dead run's report, half written: removed
 echo "diskval output directory, format 1" >tm/.diskval-tmp.99998.abcdef/.diskval-report
 echo "# r" >tm/.diskval-tmp.99998.abcdef/report.md
+echo half >tm/.diskval-tmp.99998.abcdef/.diskval-tmp.99998.Xyz123 # the file it was writing
 sums=$(sha256sum tm/.diskval-tmp.099999.abcdef tm/.diskval-tmp.99999.abcdef/notes.txt)
 if ! kill -0 99999 99998 2>/dev/null; then
   "$dv" simulate sc.ini --engine reduced --out tm/run.csv 2>/dev/null
