@@ -12,7 +12,9 @@
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
-#     that do not fall: not judged, exit 1, never "converges to the reference".
+#     that do not fall: not judged, exit 1, never "converges to the reference";
+#     so is verify (and suite --verify, its JUnit case a failure) of an engine
+#     whose errors are 0 at every step (Simbody's steady circle, when built).
 # A run that failed at its first sample measured nothing: its metrics are
 # "not measured" on stdout and in report.md, null in report.json, never 0,
 # and no failure line compares a NaN with a limit.
@@ -89,6 +91,21 @@ code=$?
 check '[ $code -eq 1 ] && grep -q "not judged: the errors do not fall" flat.out' \
   "errors that do not fall: exit status $code: $(grep -A1 convergence flat.out)"
 check '! grep -q "converges to the reference" same.out flat.out' "a study that shows nothing converges"
+# verify shares that judging: errors of exactly 0 at dt..dt/8 show nothing
+if "$dv" engines | grep -q '^simbody '; then
+  "$dv" verify "$sc" "${short[@]}" --engines simbody --quiet >verify0.out 2>&1
+  code=$?
+  check '[ $code -eq 1 ] && grep -q "not judged: the trajectories at dt 0.001 and 0.0005 have the same" verify0.out' \
+    "verify of errors 0: exit status $code: $(cat verify0.out)"
+  mkdir -p suite0 && cp "$sc" suite0/
+  "$dv" suite suite0 --verify "${short[@]}" --engines simbody --out suite0_out --junit suite0.xml \
+    --jobs 1 --quiet >suite0.out 2>&1
+  code=$?
+  check '[ $code -eq 1 ] && grep -q "<failure message=\"not judged" suite0.xml' \
+    "suite --verify of errors 0: exit status $code: $(cat suite0.out; cat suite0.xml)"
+  check '! grep -q "converges to the reference" verify0.out suite0_out/verify.md' \
+    "errors of 0 converge: $(cat verify0.out suite0_out/verify.md)"
+fi
 # a sweep point of the reference at the settings of the tighter reference it
 # is measured against is that reference: not judged, not ok, no Pareto star
 "$dv" sweep "$sc" "${short[@]}" --engine reduced --vary integrator=gsl-rk8pd-stepped \
