@@ -9,6 +9,9 @@
 #     contact point ... the columns disagree" (exit 2);
 #   - psi not turning while psi_dot says it does, a theta_dot 20 rad/s off
 #     theta's, a pose whose velocities are all 0: refused, "turns by";
+#   - two rows between each pair of samples with theta 1 rad off (theta_dot
+#     set so the steps agree with the rates): refused, "disagrees with the
+#     rows at them" (the same run written every 1 ms, honest, agrees);
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
@@ -41,6 +44,23 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_ga
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $9 += 20 } 1' run.csv >theta_dot_off.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { for (k = 9; k <= 14; k++) $k = 0 } 1' pose.csv >still_pose.csv
+"$dv" simulate "$sc" "${short[@]}" --set scenario.output_dt=0.001 --engine ode --out dense.csv \
+  --quiet 2>/dev/null
+awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
+  NR == 1 { print "t,theta,phi,psi,x,y,theta_dot,phi_dot,psi_dot"; next }
+  {
+    if (NR > 2) {
+      H = $1 - p[1]
+      for (k = 1; k <= 2; k++) {
+        for (c = 1; c <= 12; c++) m[c] = p[c] + ($c - p[c]) * k / 3
+        m[2] += 1
+        m[9] = k == 1 ? 6 / H - p[9] : -6 / H - $9
+        print m[1], m[2], m[3], m[4], m[5], m[6], m[9], m[10], m[11]
+      }
+    }
+    print $1, $2, $3, $4, $5, $6, $9, $10, $11
+    for (c = 1; c <= 12; c++) p[c] = $c
+  }' run.csv >between.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -71,6 +91,8 @@ judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
 judge theta_dot_off 2 "" "theta turns by"
 judge still_pose 2 "" "turns by"
+judge dense 0 agrees ""
+judge between 2 "" "disagrees with the rows at them"
 judge ref 1 "not judged" "the reference's own output"
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
