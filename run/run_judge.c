@@ -98,6 +98,21 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
              "the file ends at t = %g s, before the compared window does (t = %g s), without "
              "lying down: what it does not cover cannot be judged",
              rp->t_end, end);
+  /* a given energy the state does not bear out would make the energy drift
+   * the column's, not the run's */
+  size_t row;
+  const double gap = dv_run_trajfile_energy_gap(f, c->sc, end, &row);
+  const double share = f->has_rates ? DV_JUDGE_ENERGY_SHARE : DV_JUDGE_ENERGY_SHARE_DERIVED;
+  const double le = share * r->tolerance[DV_ENERGY_DRIFT];
+  if (!ctx->sparse && gap > le) {
+    ctx->sparse = 1;
+    dv_fail(&ctx->why, DV_EINPUT,
+            "%.400s:%ld: the energy is not the energy of the state the row gives: off by %.3g of "
+            "the starting energy, %.3g times %g of the energy drift's limit %.3g (the drift would "
+            "measure the column, not the run): the columns disagree",
+            f->path, f->line[row], gap, gap / le, share,
+            r->tolerance[DV_ENERGY_DRIFT]);
+  }
   check_sparse(ctx, rp, r);
 }
 

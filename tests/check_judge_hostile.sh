@@ -12,6 +12,9 @@
 #   - two rows between each pair of samples with theta 1 rad off (theta_dot
 #     set so the steps agree with the rates): refused, "disagrees with the
 #     rows at them" (the same run written every 1 ms, honest, agrees);
+#   - the run slowed by 7% over 0.3 s (the reference's state at t - 0.1 t^2),
+#     its energy column held at the start's: refused, "the energy is not the
+#     energy of the state" (ODE's run cut to t..y,energy, honest, agrees);
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
@@ -61,6 +64,22 @@ awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
     print $1, $2, $3, $4, $5, $6, $9, $10, $11
     for (c = 1; c <= 12; c++) p[c] = $c
   }' run.csv >between.csv
+"$dv" simulate "$sc" "${short[@]}" --set scenario.output_dt=0.001 --engine reduced --out fine.csv \
+  --quiet 2>/dev/null
+awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
+  NR == 1 { next }
+  { n++; for (c = 1; c <= 12; c++) v[n, c] = $c }
+  END {
+    print "t,theta,phi,psi,x,y,energy"
+    for (k = 0; k <= 30; k++) {
+      t = k * 0.01; w = t - 0.1 * t * t; i = int(w / 0.001) + 1; a = (w - v[i, 1]) / 0.001
+      if (i >= n) { i = n - 1; a = 1 }
+      out = t
+      for (c = 2; c <= 6; c++) out = out OFS (v[i, c] + (v[i + 1, c] - v[i, c]) * a)
+      print out, v[1, 12]
+    }
+  }' fine.csv >slowed.csv
+cut -d, -f1-6,12 run.csv >ode_energy.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -93,6 +112,8 @@ judge theta_dot_off 2 "" "theta turns by"
 judge still_pose 2 "" "turns by"
 judge dense 0 agrees ""
 judge between 2 "" "disagrees with the rows at them"
+judge ode_energy 0 agrees ""
+judge slowed 2 "" "the energy is not the energy of the state"
 judge ref 1 "not judged" "the reference's own output"
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
