@@ -234,6 +234,20 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
   }
   dv_sample_from_pose(&sc->disk, geom, &p, v[C_T], prev, s);
   f->line[f->n] = lineno;
+  if (vel) { /* the centre's velocity against its steps, as the angles' rates are */
+    int k;
+    const double pos[2] = {v[C_X], v[C_Y]}, cv[2] = {v[C_VX], v[C_VY]};
+    const double last[2] = {f->centre[0], f->centre[1]};
+    const double last_v[2] = {f->centre_vel[0], f->centre_vel[1]};
+    const double d = dv_run_trajcheck_centre(f, sc, pos, cv, &k);
+    if (d > 1.0)
+      return fail_at(rd, lineno, rd->col[k ? C_Y : C_X] + 1,
+                     "the centre's %s moves by %.6g m from the line before, its velocity by "
+                     "%.6g m (off by %.3g times what the step and the speed scale allow): the "
+                     "columns disagree",
+                     k ? "y" : "x", pos[k] - last[k],
+                     0.5 * (s->t - f->s[f->n - 1].t) * (cv[k] + last_v[k]), d);
+  }
   dv_run_trajcheck_ground(f, sc, p.pos[2] + dv_geometry_contact_height(geom, p.R));
   if (!vel) s->slip = s->energy = NAN; /* without velocities: derived from the rates later */
   return DV_OK;

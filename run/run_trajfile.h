@@ -68,6 +68,9 @@ typedef struct dv_trajfile {
   dv_failure ground_fault;
   size_t ground_row;
   char ground_detail[240];
+  /* the pose form with velocities: the last row's centre x, y and its
+   * velocity vx, vy, for the next row's step (run_trajcheck.h) */
+  double centre[2], centre_vel[2], centre_miss[2];
   int airborne;     /* the lowest point is off the ground since air_since */
   double air_since; /* s */
 } dv_trajfile;

@@ -8,13 +8,16 @@
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
 #   - psi not turning while psi_dot says it does, a theta_dot 20 rad/s off
-#     theta's, a pose whose velocities are all 0: refused, "turns by";
+#     theta's: refused, "turns by"; a pose whose velocities are all 0:
+#     refused, "the columns disagree" (its centre moves, vx, vy say not);
 #   - two rows between each pair of samples with theta 1 rad off (theta_dot
 #     set so the steps agree with the rates): refused, "disagrees with the
 #     rows at them" (the same run written every 1 ms, honest, agrees);
 #   - the run slowed by 7% over 0.3 s (the reference's state at t - 0.1 t^2),
 #     its energy column held at the start's: refused, "the energy is not the
 #     energy of the state" (ODE's run cut to t..y,energy, honest, agrees);
+#   - the pose's centre 3 mm off in x on every other row, its velocities
+#     still rolling: refused, "the centre's x moves by";
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
@@ -80,6 +83,7 @@ awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
     }
   }' fine.csv >slowed.csv
 cut -d, -f1-6,12 run.csv >ode_energy.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 && NR % 2 { $2 += 0.003 } 1' pose.csv >slide.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -109,11 +113,12 @@ judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
 judge theta_dot_off 2 "" "theta turns by"
-judge still_pose 2 "" "turns by"
+judge still_pose 2 "" "the columns disagree"
 judge dense 0 agrees ""
 judge between 2 "" "disagrees with the rows at them"
 judge ode_energy 0 agrees ""
 judge slowed 2 "" "the energy is not the energy of the state"
+judge slide 2 "" "the centre's x moves by"
 judge ref 1 "not judged" "the reference's own output"
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
