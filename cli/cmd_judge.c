@@ -102,18 +102,10 @@ static int print_convergence(const double *steps, const double *errors, size_t n
   if (v.uncertainty > 0.0)
     printf(", uncertainty %.2e%s", v.uncertainty,
            n == DV_CONVERGE_MIN_LEVELS ? " (grid convergence index, 3 levels)" : "");
-  /* errors that do not change at all come from one run given twice, and
-   * errors that do not fall show no convergence, whatever their size */
-  for (size_t i = 1; i < n; i++)
-    if (errors[i] == errors[i - 1]) {
-      printf(
-          "): not judged: the trajectories at dt %.3g and %.3g have the same theta error "
-          "exactly (one run given twice?): errors that do not change cannot show convergence\n",
-          steps[i - 1], steps[i]);
-      return 1;
-    }
-  if (isnan(v.order) && v.verdict == DV_CONVERGES) {
-    printf("): not judged: the errors do not fall with the step: no convergence shown\n");
+  if (v.verdict == DV_CONVERGE_NOT_JUDGED) {
+    char why[256];
+    dv_search_convergence_why(steps, errors, (int)n, v.verdict, why, sizeof why);
+    printf("): not judged: %s\n", why);
     return 1;
   }
   printf("): %s%s\n", dv_search_convergence_name(v.verdict),

@@ -18,7 +18,9 @@ static const char HELP[] =
     "reference at each, the observed order, and the Richardson-extrapolated\n"
     "discrepancy at dt -> 0. 'converges to the reference' when that is at most\n"
     "1e-4 rad; 'converges elsewhere' (with the dominant cause from attribution)\n"
-    "when it is above; 'does not converge' when the errors do not fall.\n"
+    "when it is above; 'does not converge' when the errors do not fall; 'not judged'\n"
+    "when two levels have the same error exactly, or errors that do not fall sit under\n"
+    "the floor (neither shows convergence).\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 every engine converges to the reference, 1 one does not,\n"
     "2 bad input or a run that fails.\n";
@@ -31,6 +33,12 @@ static int print_verification(const char *engine, const dv_verification *v) {
   if (!isnan(v->order)) printf("%.2f", v->order);
   printf("; extrapolated discrepancy %.3e rad (floor %g", v->extrapolated, DV_VERIFY_FLOOR);
   if (v->uncertainty > 0.0) printf(", uncertainty %.2e", v->uncertainty);
+  if (v->verdict == DV_CONVERGE_NOT_JUDGED) {
+    char why[256];
+    dv_search_convergence_why(v->step, v->error, DV_VERIFY_LEVELS, v->verdict, why, sizeof why);
+    printf("): not judged: %s\n", why);
+    return 1;
+  }
   printf("): %s%s%s\n", dv_search_convergence_name(v->verdict), v->cause[0] ? ", cause: " : "",
          v->cause);
   return v->verdict != DV_CONVERGES;

@@ -27,6 +27,25 @@ static double window_end(const dv_comparison *c, const dv_engine_result *r) {
 static void check_sparse(judge_ctx *ctx, const dv_replay *rp, const dv_engine_result *r) {
   const double lth = DV_JUDGE_INTERP_SHARE * r->tolerance[DV_THETA_MAX_ERR];
   const double lp = DV_JUDGE_INTERP_SHARE * r->tolerance[DV_PATH_MAX_ERR];
+  /* rows between the sample times no sample serves: each must agree with
+   * the interpolation through the rows at them, or it would go unjudged */
+  const double bl = DV_JUDGE_BETWEEN_SHARE / DV_JUDGE_INTERP_SHARE;
+  const int bth = rp->between_theta > bl * lth, bp = rp->between_path > bl * lp;
+  if (!ctx->sparse && (bth || bp)) {
+    ctx->sparse = 1;
+    dv_fail(&ctx->why, DV_EINPUT,
+            "%.400s:%ld: a row between the scenario's sample times disagrees with the rows at "
+            "them: its %s is %.3g %s from their interpolation (Akima) beyond twice its "
+            "uncertainty (against Steffen), %.3g times %g of its limit %.3g %s; every row must "
+            "count, so rows no sample serves must agree with those that do",
+            rp->file->path, bth ? rp->between_theta_line : rp->between_path_line,
+            bth ? "theta" : "contact point", bth ? rp->between_theta : rp->between_path,
+            bth ? "rad" : "m", bth ? rp->between_theta / (bl * lth) : rp->between_path / (bl * lp),
+            DV_JUDGE_BETWEEN_SHARE,
+            bth ? r->tolerance[DV_THETA_MAX_ERR] : r->tolerance[DV_PATH_MAX_ERR],
+            bth ? "rad" : "m");
+    return;
+  }
   const int th = rp->interp_theta > lth, p = rp->interp_path > lp;
   if (ctx->sparse || !(th || p)) return;
   ctx->sparse = 1;
@@ -79,6 +98,21 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
              "the file ends at t = %g s, before the compared window does (t = %g s), without "
              "lying down: what it does not cover cannot be judged",
              rp->t_end, end);
+  /* a given energy the state does not bear out would make the energy drift
+   * the column's, not the run's */
+  size_t row;
+  const double gap = dv_run_trajfile_energy_gap(f, c->sc, end, &row);
+  const double share = f->has_rates ? DV_JUDGE_ENERGY_SHARE : DV_JUDGE_ENERGY_SHARE_DERIVED;
+  const double le = share * r->tolerance[DV_ENERGY_DRIFT];
+  if (!ctx->sparse && gap > le) {
+    ctx->sparse = 1;
+    dv_fail(&ctx->why, DV_EINPUT,
+            "%.400s:%ld: the energy is not the energy of the state the row gives: off by %.3g of "
+            "the starting energy, %.3g times %g of the energy drift's limit %.3g (the drift would "
+            "measure the column, not the run): the columns disagree",
+            f->path, f->line[row], gap, gap / le, share,
+            r->tolerance[DV_ENERGY_DRIFT]);
+  }
   check_sparse(ctx, rp, r);
 }
 

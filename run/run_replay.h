@@ -10,6 +10,10 @@
  * 0.1 s: Akima's true error in the contact point 1.0e-4 and 8.6e-4 m, the
  * estimate 8.3e-4 and 3.3e-3 m (Steffen, monotone between samples, flattens
  * every extremum of contact_x: the estimate errs on the safe side).
+ * Rows between the scenario's sample times are served by no sample: each is
+ * measured against the Akima interpolant through the rows at the sample times
+ * (between_theta, between_path), so a row that disagrees with them counts
+ * (run_judge.h refuses the file) instead of going unseen.
  * The run ends with the file: at the first row where theta reaches the lying-down
  * limit (DV_EVENT, lay_down), or at the last row when it ends before the
  * scenario's duration (DV_EVENT, lay_down 0; the comparison does not judge
@@ -30,6 +34,11 @@ typedef struct dv_replay {
    * of the row before it */
   double interp_theta, interp_path; /* rad, m */
   long theta_line, path_line;
+  /* rows between the scenario's sample times, which no sample serves: the
+   * largest distance of one from the Akima interpolant through the rows at
+   * the sample times, and its line (0: no such row, or too few at them) */
+  double between_theta, between_path; /* rad, m */
+  long between_theta_line, between_path_line;
   double t_end;   /* s: the last row served */
   int ends_early; /* the file ends before the duration, not lying down */
 } dv_replay;

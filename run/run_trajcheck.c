@@ -31,6 +31,35 @@ void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double heigh
   if (f->ground_fault) f->ground_row = f->n;
 }
 
+/* the scene's rate scale: sqrt(g/r), or a larger initial rate */
+static double rate_scale_of(const dv_scenario *sc) {
+  double rate_scale = sqrt(sc->disk.g / sc->disk.r);
+  for (int k = RED_VTH; k <= RED_VPS; k++) rate_scale = fmax(rate_scale, fabs(sc->initial[k]));
+  return rate_scale;
+}
+
+double dv_run_trajcheck_centre(dv_trajfile *f, const dv_scenario *sc, const double pos[2],
+                               const double vel[2], int *k) {
+  double worst = 0.0, e[2] = {0.0, 0.0};
+  *k = 0;
+  if (f->n) {
+    const double dt = f->s[f->n].t - f->s[f->n - 1].t;
+    const double speed = fmax(sc->disk.r * rate_scale_of(sc),
+                              fmax(hypot(vel[0], vel[1]), hypot(f->centre_vel[0], f->centre_vel[1])));
+    for (int i = 0; i < 2; i++) {
+      /* the step's miss of the trapezoid, and its change from the step
+       * before: smooth motion misses by a smooth amount, a centre sliding
+       * back and forth under rolling velocities by turns */
+      e[i] = (pos[i] - f->centre[i] - 0.5 * dt * (f->centre_vel[i] + vel[i])) / (dt * speed);
+      const double d = fmax(fabs(e[i]) / DV_TRAJ_CENTRE_TOL,
+                            f->n > 1 ? fabs(e[i] - f->centre_miss[i]) / DV_TRAJ_CENTRE_TURN : 0.0);
+      if (!(d <= worst)) worst = d, *k = i;
+    }
+  }
+  for (int i = 0; i < 2; i++) f->centre[i] = pos[i], f->centre_vel[i] = vel[i], f->centre_miss[i] = e[i];
+  return worst;
+}
+
 /* the contact point row i gives against the one theta, phi, x, y put on the scene's disk */
 static double contact_off(const dv_sample *s, const dv_geometry *geom, double *tol) {
   dv_pose p;
@@ -45,8 +74,7 @@ static double contact_off(const dv_sample *s, const dv_geometry *geom, double *t
 int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int ccol,
                              const int col[3], dv_error *err) {
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
-  double rate_scale = sqrt(sc->disk.g / sc->disk.r);
-  for (int k = RED_VTH; k <= RED_VPS; k++) rate_scale = fmax(rate_scale, fabs(sc->initial[k]));
+  const double rate_scale = rate_scale_of(sc);
   for (size_t i = 0; i < f->n; i++) {
     const dv_sample *s = &f->s[i];
     double tol = 0.0;

@@ -44,10 +44,36 @@
 #define DV_TRAJ_CONTACT_TOL 0.1 /* of the radius */
 #define DV_TRAJ_ROUND 1e-5      /* of the coordinates: 6 printed digits round at 5e-7 */
 #define DV_TRAJ_RATE_TOL 0.3
+/* The pose form with velocities: the centre's step from row to row against
+ * the trapezoid of its velocity vx, vy, over the step times the speed scale
+ * (the scene's rate scale times the radius, or the larger speed): its miss at
+ * most DV_TRAJ_CENTRE_TOL, and its change from the step before's miss at most
+ * DV_TRAJ_CENTRE_TURN (smooth motion misses smoothly; a centre sliding back
+ * and forth under rolling velocities misses by turns). Measured on simulate
+ * of the reference, ODE and MuJoCo on every scenario of scenarios/,
+ * quarter_spun and short_circle, written as poses with rolling velocities
+ * (tests/judge_to_pose): the miss at most 0.108 (the reference on c_zero;
+ * 0.276 MuJoCo's fall, which slides as it lands while the poses say it
+ * rolls), its change at most 0.144 (tiny_c, every engine). The hostile file
+ * of x +3 mm on every other row of a 1.52 m/s steady circle at 10 ms: miss
+ * 0.198, change 0.395. Re-measure: print fabs(e[i]) and its change in
+ * dv_run_trajcheck_centre and judge those files. */
+#define DV_TRAJ_CENTRE_TOL 0.3
+#define DV_TRAJ_CENTRE_TURN 0.25
 
 /* the pose-form row f->s[f->n] (not yet counted), its lowest point height m
  * above the ground: the first fault into f->ground_* */
 void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double height);
+
+/* the pose-form row f->s[f->n] (not yet counted) with velocities: its centre
+ * x, y (pos) and velocity vx, vy (vel) against the row before's: the share of
+ * the step times the speed scale by which the centre's step misses the
+ * trapezoid of its velocity, and that miss's change from the row before's,
+ * each over its limit: the larger (above 1: the columns disagree), of x or y
+ * into *k (0: x, 1: y); 0 for the first row. Either way pos, vel and the miss
+ * are kept in f for the next. */
+double dv_run_trajcheck_centre(dv_trajfile *f, const dv_scenario *sc, const double pos[2],
+                               const double vel[2], int *k);
 
 /* the columns against each other: the contact point given (ccol, its 1-based
  * column; 0: none) against the state's, and with rates (given, or the pose

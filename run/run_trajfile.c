@@ -234,6 +234,20 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
   }
   dv_sample_from_pose(&sc->disk, geom, &p, v[C_T], prev, s);
   f->line[f->n] = lineno;
+  if (vel) { /* the centre's velocity against its steps, as the angles' rates are */
+    int k;
+    const double pos[2] = {v[C_X], v[C_Y]}, cv[2] = {v[C_VX], v[C_VY]};
+    const double last[2] = {f->centre[0], f->centre[1]};
+    const double last_v[2] = {f->centre_vel[0], f->centre_vel[1]};
+    const double d = dv_run_trajcheck_centre(f, sc, pos, cv, &k);
+    if (d > 1.0)
+      return fail_at(rd, lineno, rd->col[k ? C_Y : C_X] + 1,
+                     "the centre's %s moves by %.6g m from the line before, its velocity by "
+                     "%.6g m (off by %.3g times what the step and the speed scale allow): the "
+                     "columns disagree",
+                     k ? "y" : "x", pos[k] - last[k],
+                     0.5 * (s->t - f->s[f->n - 1].t) * (cv[k] + last_v[k]), d);
+  }
   dv_run_trajcheck_ground(f, sc, p.pos[2] + dv_geometry_contact_height(geom, p.R));
   if (!vel) s->slip = s->energy = NAN; /* without velocities: derived from the rates later */
   return DV_OK;
@@ -483,12 +497,31 @@ int dv_run_trajfile_read(const char *path, const dv_scenario *sc, dv_trajfile *f
     f->has_angles = f->form == DV_TRAJ_POSE || rd.col[C_PH] >= 0;
     f->has_slip = f->form == DV_TRAJ_POSE && f->has_rates;
     f->has_energy = f->has_angles || rd.col[C_E] >= 0;
+    f->energy_given = f->form == DV_TRAJ_STATE && rd.col[C_E] >= 0;
     status = read_rows(&rd, fp, sc, &geom, f, &lineno);
   }
   fclose(fp);
   if (!status) status = finish(&rd, sc, &geom, f, lineno + 1);
   if (status) dv_run_trajfile_free(f);
   return status;
+}
+
+double dv_run_trajfile_energy_gap(const dv_trajfile *f, const dv_scenario *sc, double t_end,
+                                  size_t *row) {
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
+  double e0 = NAN, worst = 0.0;
+  *row = 0;
+  for (size_t i = 0; f->energy_given && i < f->n && f->s[i].t <= t_end; i++) {
+    const dv_sample *s = &f->s[i];
+    if (isnan(s->y[RED_PH]) || isnan(s->y[RED_VTH]) || isnan(s->energy)) continue;
+    dv_pose p;
+    dv_pose_from_state(&geom, s->y, &p);
+    const double e = dv_pose_energy(&sc->disk, &p);
+    if (isnan(e0)) e0 = e;
+    const double d = fabs(s->energy - e) / fabs(e0);
+    if (!(d <= worst)) worst = d, *row = i;
+  }
+  return worst;
 }
 
 size_t dv_run_trajfile_max_rows(const dv_scenario *sc) {

@@ -35,6 +35,7 @@
 #define DV_TRAJ_START_TOL 1e-6
 /* a quaternion's norm must be 1 to this (float32 storage rounds to 6e-8) */
 #define DV_TRAJ_QUAT_TOL 1e-6
+
 /* a row judged takes this many bytes: read, replayed and interpolated
  * (Akima and Steffen, every column). Measured: the slope of judge's peak RSS
  * over 1e5 and 3e5 rows of the state form with every column on
@@ -55,6 +56,7 @@ typedef struct dv_trajfile {
   int has_rates;  /* the file gives rates (state form) or velocities (pose form) */
   int has_angles; /* phi, psi and x, y: the whole state */
   int has_energy; /* given, or computed from a pose with velocities */
+  int energy_given; /* the state form's energy column */
   int has_slip;   /* measured: the pose form with velocities */
   size_t n, cap;
   dv_sample *s;          /* each row, converted */
@@ -66,6 +68,9 @@ typedef struct dv_trajfile {
   dv_failure ground_fault;
   size_t ground_row;
   char ground_detail[240];
+  /* the pose form with velocities: the last row's centre x, y and its
+   * velocity vx, vy, for the next row's step (run_trajcheck.h) */
+  double centre[2], centre_vel[2], centre_miss[2];
   int airborne;     /* the lowest point is off the ground since air_since */
   double air_since; /* s */
 } dv_trajfile;
@@ -78,6 +83,12 @@ void dv_run_trajfile_free(dv_trajfile *f);
 
 /* the most rows (every file's) judged with sc's comparison within its memory_budget */
 size_t dv_run_trajfile_max_rows(const dv_scenario *sc);
+
+/* the largest distance, as a share of the starting energy, of a given energy
+ * column (energy_given) from the energy of the state its row gives (rates
+ * given or derived), over the rows to t_end; *row: where (0 when none) */
+double dv_run_trajfile_energy_gap(const dv_trajfile *f, const struct dv_scenario *sc, double t_end,
+                                  size_t *row);
 
 /* a trajectory built in code (the C API), checked as a file is: begin with
  * the label its errors name in place of the file ("LABEL:N:COLUMN: ...", N

@@ -9,8 +9,24 @@
 
 const char *dv_search_convergence_name(dv_convergence c) {
   static const char *const names[] = {"converges to the reference", "converges elsewhere",
-                                      "does not converge"};
-  return (unsigned)c < 3 ? names[c] : "unknown";
+                                      "does not converge", "not judged"};
+  return (unsigned)c < 4 ? names[c] : "unknown";
+}
+
+void dv_search_convergence_why(const double *h, const double *e, int n, dv_convergence verdict,
+                               char *why, size_t size) {
+  why[0] = '\0';
+  if (verdict != DV_CONVERGE_NOT_JUDGED) return;
+  for (int i = 1; i < n; i++)
+    if (e[i] == e[i - 1]) {
+      snprintf(why, size,
+               "the trajectories at dt %.3g and %.3g have the same theta error exactly, %.3g rad "
+               "(one run given twice, or nothing to fall from?): errors that do not change "
+               "cannot show convergence",
+               h[i - 1], h[i], e[i]);
+      return;
+    }
+  snprintf(why, size, "the errors do not fall with the step: no convergence shown");
 }
 
 /* r2^p (r1^p - 1) / (r2^p - 1): the ratio of successive error differences
@@ -66,6 +82,12 @@ void dv_search_convergence_judge(const double *h, const double *e, int n, dv_con
     fit->verdict = DV_CONVERGES;
   else /* flat: the step no longer matters, what is left is the model's */
     fit->verdict = flat || !isnan(fit->order) ? DV_CONVERGES_ELSEWHERE : DV_DOES_NOT_CONVERGE;
+  /* errors that do not change at all (one run given twice, or errors of 0)
+   * and errors that do not fall show no convergence, whatever their size */
+  int same = 0;
+  for (int i = 1; i < n; i++) same |= e[i] == e[i - 1];
+  if (same || (isnan(fit->order) && fit->verdict == DV_CONVERGES))
+    fit->verdict = DV_CONVERGE_NOT_JUDGED;
 }
 
 void dv_search_verify_judge(dv_verification *v) {

@@ -36,10 +36,19 @@ typedef enum dv_convergence {
   DV_CONVERGES = 0,       /* to the reference */
   DV_CONVERGES_ELSEWHERE, /* to something else: a model discrepancy */
   DV_DOES_NOT_CONVERGE,   /* the errors do not fall with the step */
+  DV_CONVERGE_NOT_JUDGED, /* levels with the same error exactly, or a pass from no order */
 } dv_convergence;
 
-/* "converges to the reference", "converges elsewhere", "does not converge" */
+/* "converges to the reference", "converges elsewhere", "does not converge",
+ * "not judged" */
 const char *dv_search_convergence_name(dv_convergence c);
+
+/* why a fit is DV_CONVERGE_NOT_JUDGED, in words ("" when it is judged): two
+ * levels with the same error exactly (one run given twice, or errors of 0
+ * that nothing can fall from), or errors that do not fall (order none) yet
+ * sit under the floor: neither shows convergence, whatever their size */
+void dv_search_convergence_why(const double *step, const double *error, int n,
+                               dv_convergence verdict, char *why, size_t size);
 
 typedef struct dv_verification {
   double step[DV_VERIFY_LEVELS];  /* s */

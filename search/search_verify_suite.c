@@ -87,7 +87,13 @@ static void describe(const dv_verify_case *c, char *text, size_t size) {
     snprintf(text, size, "error: %s", c->message);
   else if (c->status == DV_EVENT)
     snprintf(text, size, "skipped: %s", c->message);
-  else
+  else if (c->v.verdict == DV_CONVERGE_NOT_JUDGED) {
+    char why[256];
+    dv_search_convergence_why(c->v.step, c->v.error, DV_VERIFY_LEVELS, c->v.verdict, why,
+                              sizeof why);
+    snprintf(text, size, "not judged: %s (errors %.3g .. %.3g rad, order %s)", why, c->v.error[0],
+             c->v.error[DV_VERIFY_LEVELS - 1], order);
+  } else
     snprintf(text, size,
              "%s: extrapolated discrepancy %.3g rad (floor %g, uncertainty %.2g), order %s%s%s",
              dv_search_convergence_name(c->v.verdict), c->v.extrapolated, DV_VERIFY_FLOOR,

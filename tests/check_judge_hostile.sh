@@ -8,11 +8,22 @@
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
 #   - psi not turning while psi_dot says it does, a theta_dot 20 rad/s off
-#     theta's, a pose whose velocities are all 0: refused, "turns by";
+#     theta's: refused, "turns by"; a pose whose velocities are all 0:
+#     refused, "the columns disagree" (its centre moves, vx, vy say not);
+#   - two rows between each pair of samples with theta 1 rad off (theta_dot
+#     set so the steps agree with the rates): refused, "disagrees with the
+#     rows at them" (the same run written every 1 ms, honest, agrees);
+#   - the run slowed by 7% over 0.3 s (the reference's state at t - 0.1 t^2),
+#     its energy column held at the start's: refused, "the energy is not the
+#     energy of the state" (ODE's run cut to t..y,energy, honest, agrees);
+#   - the pose's centre 3 mm off in x on every other row, its velocities
+#     still rolling: refused, "the centre's x moves by";
 #   - the reference's own output (simulate --engine reduced): not judged;
 #     so is a sweep point of the reference at its tighter reference's settings;
 #   - a convergence study (--step) of one file given three times, or of errors
-#     that do not fall: not judged, exit 1, never "converges to the reference".
+#     that do not fall: not judged, exit 1, never "converges to the reference";
+#     so is verify (and suite --verify, its JUnit case a failure) of an engine
+#     whose errors are 0 at every step (Simbody's steady circle, when built).
 # A run that failed at its first sample measured nothing: its metrics are
 # "not measured" on stdout and in report.md, null in report.json, never 0,
 # and no failure line compares a NaN with a limit.
@@ -39,6 +50,40 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_ga
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $9 += 20 } 1' run.csv >theta_dot_off.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { for (k = 9; k <= 14; k++) $k = 0 } 1' pose.csv >still_pose.csv
+"$dv" simulate "$sc" "${short[@]}" --set scenario.output_dt=0.001 --engine ode --out dense.csv \
+  --quiet 2>/dev/null
+awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
+  NR == 1 { print "t,theta,phi,psi,x,y,theta_dot,phi_dot,psi_dot"; next }
+  {
+    if (NR > 2) {
+      H = $1 - p[1]
+      for (k = 1; k <= 2; k++) {
+        for (c = 1; c <= 12; c++) m[c] = p[c] + ($c - p[c]) * k / 3
+        m[2] += 1
+        m[9] = k == 1 ? 6 / H - p[9] : -6 / H - $9
+        print m[1], m[2], m[3], m[4], m[5], m[6], m[9], m[10], m[11]
+      }
+    }
+    print $1, $2, $3, $4, $5, $6, $9, $10, $11
+    for (c = 1; c <= 12; c++) p[c] = $c
+  }' run.csv >between.csv
+"$dv" simulate "$sc" "${short[@]}" --set scenario.output_dt=0.001 --engine reduced --out fine.csv \
+  --quiet 2>/dev/null
+awk 'BEGIN { FS = OFS = ","; CONVFMT = OFMT = "%.17g" }
+  NR == 1 { next }
+  { n++; for (c = 1; c <= 12; c++) v[n, c] = $c }
+  END {
+    print "t,theta,phi,psi,x,y,energy"
+    for (k = 0; k <= 30; k++) {
+      t = k * 0.01; w = t - 0.1 * t * t; i = int(w / 0.001) + 1; a = (w - v[i, 1]) / 0.001
+      if (i >= n) { i = n - 1; a = 1 }
+      out = t
+      for (c = 2; c <= 6; c++) out = out OFS (v[i, c] + (v[i + 1, c] - v[i, c]) * a)
+      print out, v[1, 12]
+    }
+  }' fine.csv >slowed.csv
+cut -d, -f1-6,12 run.csv >ode_energy.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 && NR % 2 { $2 += 0.003 } 1' pose.csv >slide.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -68,7 +113,12 @@ judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
 judge psi_still 2 "" "psi turns by"
 judge theta_dot_off 2 "" "theta turns by"
-judge still_pose 2 "" "turns by"
+judge still_pose 2 "" "the columns disagree"
+judge dense 0 agrees ""
+judge between 2 "" "disagrees with the rows at them"
+judge ode_energy 0 agrees ""
+judge slowed 2 "" "the energy is not the energy of the state"
+judge slide 2 "" "the centre's x moves by"
 judge ref 1 "not judged" "the reference's own output"
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
@@ -89,6 +139,21 @@ code=$?
 check '[ $code -eq 1 ] && grep -q "not judged: the errors do not fall" flat.out' \
   "errors that do not fall: exit status $code: $(grep -A1 convergence flat.out)"
 check '! grep -q "converges to the reference" same.out flat.out' "a study that shows nothing converges"
+# verify shares that judging: errors of exactly 0 at dt..dt/8 show nothing
+if "$dv" engines | grep -q '^simbody '; then
+  "$dv" verify "$sc" "${short[@]}" --engines simbody --quiet >verify0.out 2>&1
+  code=$?
+  check '[ $code -eq 1 ] && grep -q "not judged: the trajectories at dt 0.001 and 0.0005 have the same" verify0.out' \
+    "verify of errors 0: exit status $code: $(cat verify0.out)"
+  mkdir -p suite0 && cp "$sc" suite0/
+  "$dv" suite suite0 --verify "${short[@]}" --engines simbody --out suite0_out --junit suite0.xml \
+    --jobs 1 --quiet >suite0.out 2>&1
+  code=$?
+  check '[ $code -eq 1 ] && grep -q "<failure message=\"not judged" suite0.xml' \
+    "suite --verify of errors 0: exit status $code: $(cat suite0.out; cat suite0.xml)"
+  check '! grep -q "converges to the reference" verify0.out suite0_out/verify.md' \
+    "errors of 0 converge: $(cat verify0.out suite0_out/verify.md)"
+fi
 # a sweep point of the reference at the settings of the tighter reference it
 # is measured against is that reference: not judged, not ok, no Pareto star
 "$dv" sweep "$sc" "${short[@]}" --engine reduced --vary integrator=gsl-rk8pd-stepped \

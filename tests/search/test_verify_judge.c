@@ -9,6 +9,7 @@
  *     0.977, e(0) -1.03e-3, uncertainty 3.4e-3 from the earlier levels):
  *     converges, the uncertainty covering e(0);
  *   - errors that grow: does not converge; flat above the floor: elsewhere;
+ *     errors of 0, or flat under the floor: not judged;
  *   - three levels (judge --step over 3 files) at ratios 2, 3 and unequal
  *     (1e-3, 4e-4, 1e-4), orders 1..4: e(0) = L and the order p to 1e-9, the
  *     uncertainty 1.25 |e(finest) - L| (exact data: measured worst 8.9e-16 in
@@ -73,6 +74,14 @@ int main(void) {
         dv_search_convergence_name(v.verdict));
   v = judge_errors(flat);
   CHECK(v.verdict == DV_CONVERGES_ELSEWHERE, "flat errors: %s",
+        dv_search_convergence_name(v.verdict));
+  /* errors of 0, or errors flat under the floor, show no convergence */
+  const double zero[] = {0.0, 0.0, 0.0, 0.0}, low[] = {2e-6, 2.01e-6, 1.99e-6, 2e-6};
+  v = judge_errors(zero);
+  CHECK(v.verdict == DV_CONVERGE_NOT_JUDGED, "errors of 0: %s",
+        dv_search_convergence_name(v.verdict));
+  v = judge_errors(low);
+  CHECK(v.verdict == DV_CONVERGE_NOT_JUDGED, "flat errors under the floor: %s",
         dv_search_convergence_name(v.verdict));
   const double ratios[][3] = {{1e-3, 5e-4, 2.5e-4}, {9e-3, 3e-3, 1e-3}, {1e-3, 4e-4, 1e-4}};
   for (int k = 0; k < 3; k++) {
