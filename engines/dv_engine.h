@@ -123,7 +123,7 @@ typedef struct dv_engine_type {
   void (*stats)(const void *engine, dv_engine_stats *out);
   void (*free)(void *engine); /* NULL-safe */
   /* an engine made at run time, not in the registry (a recorded trajectory
-   * replayed, run/run_replay.h): alloc given its own table, whose data it
+   * replayed, run/file/run_replay.h): alloc given its own table, whose data it
    * reads; NULL for the registry's engines, which use alloc */
   void *(*alloc_self)(const struct dv_engine_type *self, const dv_scenario *sc, dv_error *err);
   const void *data;
