@@ -32,15 +32,6 @@ scenario() { sed -e "s/^name = .*/name = $1/" -e "s/^duration = .*/duration = 0.
 # sums DIR: every file and directory under DIR with its content's hash
 sums() { (cd "$1" && find . -print0 | sort -z | xargs -0 -I{} sh -c \
   'if [ -f "{}" ]; then printf "%s %s\n" "{}" "$(sha256sum <"{}")"; else echo "{}"; fi'); }
-# refused WHAT REGEX CMD...: exit 2, one stderr line matching REGEX
-refused() {
-  local what=$1 regex=$2
-  shift 2
-  "$@" >"$work/stdout" 2>"$work/stderr"
-  local code=$?
-  check '[ $code -eq 2 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -Eq -e "$regex" "$work/stderr"' \
-    "$what: exit $code, want 2 and one line matching '$regex': $(cat "$work/stderr")"
-}
 # a pid that no process has: that of a process that has ended
 sleep 0 &
 dead=$!

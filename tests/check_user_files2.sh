@@ -28,15 +28,6 @@ cd "$work" || exit 2
 # scenario NAME FILE: the falling disk, 0.3 s, named NAME, into FILE
 scenario() { sed -e "s/^name = .*/name = $1/" -e "s/^duration = .*/duration = 0.3/" \
   "$sc/falling.ini" >"$2"; }
-# refused WHAT REGEX CMD...: exit 2, one stderr line matching REGEX
-refused() {
-  local what=$1 regex=$2
-  shift 2
-  "$@" >"$work/stdout" 2>"$work/stderr"
-  local code=$?
-  check '[ $code -eq 2 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -Eq -e "$regex" "$work/stderr"' \
-    "$what: exit $code, want 2 and one line matching '$regex': $(cat "$work/stderr")"
-}
 # same FILE SUM: FILE's sha256 is SUM
 same() { [ "$(sha256sum <"$1")" = "$2" ]; }
 header='^t,theta,phi,psi,x,y,contact_x,contact_y'
