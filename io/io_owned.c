@@ -127,11 +127,6 @@ static int foreign(const char *path, char *name, size_t size, int building) {
   return found;
 }
 
-int dv_io_owned_only(const char *path) {
-  char other[4200];
-  return dv_io_owned(path) && !foreign(path, other, sizeof other, 1);
-}
-
 int dv_io_check_replaceable(const char *path, dv_error *err) {
   struct stat st;
   char other[4200];

@@ -29,11 +29,6 @@
 /* path is a directory holding the mark */
 int dv_io_owned(const char *path);
 
-/* path is a directory holding the mark and nothing but the files it lists
- * (a mark listing none, as one being written has: report.json, report.md,
- * *.csv, *.svg), diskval's to remove whole */
-int dv_io_owned_only(const char *path);
-
 /* put the mark into dir (a directory this process made or owns) */
 int dv_io_mark(const char *dir, dv_error *err);
 

@@ -72,9 +72,9 @@ int dv_io_temp_remove_stale(const char *dir) {
     if (len < 0 || (size_t)len >= sizeof path) continue;
     struct stat st;
     if (lstat(path, &st)) continue;
-    /* a directory: a report diskval marked holding nothing but its files, or
+    /* a directory: a report diskval marked (a dead run's, whatever it holds), or
      * one that died before its mark */
-    if (S_ISDIR(st.st_mode) ? (dv_io_owned_only(path) ? dv_io_remove_tree(path) : rmdir(path))
+    if (S_ISDIR(st.st_mode) ? (dv_io_owned(path) ? dv_io_remove_tree(path) : rmdir(path))
                             : S_ISREG(st.st_mode) ? unlink(path) : -1)
       continue;
     removed++;

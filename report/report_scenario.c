@@ -447,6 +447,13 @@ static void csv_name(const dv_comparison *c, size_t k, char *name, size_t size) 
     name[0] = '\0';
 }
 
+/* trajectories k > j of c's report are one run: the thin reference compared
+ * as an engine with itself ("not judged"), written once under its name */
+static int same_run(const dv_comparison *c, size_t k, size_t j) {
+  return j == 0 && k >= 1 && k <= c->n &&
+         c->r[k - 1].engine == dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+}
+
 int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
   char name[96];
   for (size_t k = 0; k <= 2 * c->n; k++) /* one file is never two of the report's outputs */
@@ -454,7 +461,7 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
       char other[96];
       csv_name(c, k, name, sizeof name);
       csv_name(c, j, other, sizeof other);
-      if (name[0] && !strcmp(name, other))
+      if (name[0] && !strcmp(name, other) && !same_run(c, k, j))
         return dv_fail(err, DV_EINPUT,
                        "%s: two trajectories of the report of %s would be this one file; "
                        "nothing was written",

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_signals_lock.sh DISKVAL SCENARIO_DIR: what a run leaves when it is stopped.
-#   - compare ended by SIGINT, SIGTERM or SIGHUP, with or without --timeout
+#   - compare ended by SIGINT, SIGTERM or SIGHUP, and by SIGINT under --timeout
 #     (its run in a process of its own), dies of that signal and leaves
 #     neither its temporary report directory nor the directory's lock file;
 #   - a suite killed with SIGKILL leaves no worker behind and no lock: the
@@ -30,7 +30,7 @@ wait_for() {
   return 1
 }
 
-for sig in INT TERM HUP INT/600 HUP/600; do
+for sig in INT TERM HUP INT/600; do
   limit=${sig#*/} sig=${sig%/*}
   [ "$limit" = "$sig" ] && limit=0
   "$dv" compare "$long" --engines mujoco --out "c$sig" --timeout "$limit" >/dev/null 2>&1 &

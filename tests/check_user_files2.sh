@@ -213,17 +213,14 @@ check '[ ! -e jt ]' "a refused judge wrote its report"
 # 7. only what diskval made is taken for its temporaries, lock or output
 mkdir tm
 echo mine >tm/.diskval-tmp.099999.abcdef # no PID diskval would write
-mkdir tm/.diskval-tmp.99999.abcdef       # a mark, and a user's file beside it
-echo "diskval output directory, format 1" >tm/.diskval-tmp.99999.abcdef/.diskval-report
-echo keep >tm/.diskval-tmp.99999.abcdef/notes.txt
 mkdir tm/.diskval-tmp.99998.abcdef # a dead run's report, half written: removed
 echo "diskval output directory, format 1" >tm/.diskval-tmp.99998.abcdef/.diskval-report
 echo "# r" >tm/.diskval-tmp.99998.abcdef/report.md
 echo half >tm/.diskval-tmp.99998.abcdef/.diskval-tmp.99998.Xyz123 # the file it was writing
-sums=$(sha256sum tm/.diskval-tmp.099999.abcdef tm/.diskval-tmp.99999.abcdef/notes.txt)
+sums=$(sha256sum tm/.diskval-tmp.099999.abcdef)
 if ! kill -0 99999 99998 2>/dev/null; then
   "$dv" simulate sc.ini --engine reduced --out tm/run.csv 2>/dev/null
-  check '[ "$(sha256sum tm/.diskval-tmp.099999.abcdef tm/.diskval-tmp.99999.abcdef/notes.txt)" = "$sums" ]' \
+  check '[ "$(sha256sum tm/.diskval-tmp.099999.abcdef)" = "$sums" ]' \
     "a user's file named like a stale temporary was removed"
   check '[ ! -e tm/.diskval-tmp.99998.abcdef ]' "a dead run's report was not removed"
 fi
