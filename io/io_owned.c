@@ -102,13 +102,11 @@ static int holds_file(const char *path, const char *name) {
  * there (not a regular file it listed in the mark), into name; 1, else 0.
  * A mark that lists no files is a report's from before marks listed them
  * only when a report.json is there: anything else so marked (the --out of
- * a suite, sweep or map from then) holds no file known for diskval's.
- * building: path is a temporary report of a dead run, whose mark lists no
- * files yet: a report's files, and the dead run's temporaries, are its */
-static int foreign(const char *path, char *name, size_t size, int building) {
+ * a suite, sweep or map from then) holds no file known for diskval's */
+static int foreign(const char *path, char *name, size_t size) {
   char *text;
   const char *list = mark_list(path, &text);
-  const int legacy = !list && (building || holds_file(path, "report.json"));
+  const int legacy = !list && holds_file(path, "report.json");
   DIR *d = opendir(path);
   int found = 0;
   for (struct dirent *e; d && !found && (e = readdir(d));) {
@@ -118,8 +116,7 @@ static int foreign(const char *path, char *name, size_t size, int building) {
       continue;
     found = snprintf(entry, sizeof entry, "%s/%s", path, e->d_name) >= (int)sizeof entry ||
             lstat(entry, &st) || !S_ISREG(st.st_mode) ||
-            (!(list ? listed(list, e->d_name) : legacy && legacy_name(e->d_name)) &&
-             !(building && dv_io_temp_is_stale(e->d_name))); /* a dead writer's file */
+            !(list ? listed(list, e->d_name) : legacy && legacy_name(e->d_name));
     if (found) snprintf(name, size, "%s", entry);
   }
   if (d) closedir(d);
@@ -134,7 +131,7 @@ int dv_io_check_replaceable(const char *path, dv_error *err) {
     if (errno == ENOENT) return DV_OK;
     return dv_fail(err, DV_EINPUT, "%s: cannot look at it: %s", path, strerror(errno));
   }
-  if (dv_io_owned(path) && foreign(path, other, sizeof other, 0))
+  if (dv_io_owned(path) && foreign(path, other, sizeof other))
     return dv_fail(err, DV_EINPUT,
                    "%s: diskval did not make it, and the run would replace the report it is "
                    "in; nothing was written: move it, or choose another --out or scenario name",
@@ -154,10 +151,9 @@ static int empty(const char *dir) {
   for (struct dirent *e; !any && (e = readdir(d));) {
     char lock[4096];
     struct stat st;
-    const int is_lock =
-        !strcmp(e->d_name, DV_IO_LOCK_NAME) &&
-        snprintf(lock, sizeof lock, "%s/%s", dir, e->d_name) < (int)sizeof lock &&
-        !lstat(lock, &st) && S_ISREG(st.st_mode) && st.st_size == 0;
+    const int is_lock = !strcmp(e->d_name, DV_IO_LOCK_NAME) &&
+                        snprintf(lock, sizeof lock, "%s/%s", dir, e->d_name) < (int)sizeof lock &&
+                        !lstat(lock, &st) && S_ISREG(st.st_mode) && st.st_size == 0;
     any = strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && !is_lock &&
           strncmp(e->d_name, DV_IO_TEMP_PREFIX, strlen(DV_IO_TEMP_PREFIX));
   }
@@ -189,7 +185,8 @@ int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
       status = DV_EINPUT;
     else if (!lstat(path, &st) && !listed(list, *f) && !legacy)
       status = dv_fail(err, DV_EINPUT,
-                       "%s: diskval did not make it (the " DV_IO_MARK " of %s does not list "
+                       "%s: diskval did not make it (the " DV_IO_MARK
+                       " of %s does not list "
                        "it), and this run would replace it; nothing was written: move it, or "
                        "choose another --out",
                        path, dir);
