@@ -4,8 +4,11 @@
  *
  * The body is a Skeleton of one BodyNode on a FreeJoint: the disk's mass, its
  * principal inertia (A, A, C) about the centre, no damping; its collision
- * shape the thin disk, a CylinderShape of radius r along the body's z axis and
- * of height THIN_HEIGHT r (a cylinder of height 0 is refused). The ground is a
+ * shape the scene's body (the geom key): the thin disk, a CylinderShape of
+ * radius r along the body's z axis and of height THIN_HEIGHT r (a cylinder of
+ * height 0 is refused), or for a [disk] thickness (geom cylinder,
+ * engine_shape.h) a CylinderShape of height 2 half_thickness, compared with
+ * the matched reference of that half-thickness. The ground is a
  * PlaneShape z = 0 on a welded Skeleton; gravity -z; friction the
  * coefficient of [engines.dart] friction on both shapes (DART takes the
  * smaller), a pyramid of two directions solved by DART's boxed LCP
@@ -18,7 +21,10 @@
  * exact cylinder:
  *   ode     (default) ODE's dCollideCylinderPlane, double precision: two
  *           contacts, the lowest points of both caps, whose mean is the rim's
- *           lowest point P = G + r d to within THIN_HEIGHT r / 2 (test_engine_dart);
+ *           lowest point P = G + r d to within THIN_HEIGHT r / 2; for a
+ *           cylinder one contact, the lower rim corner exactly (the upper
+ *           cap's is off the ground), as the matched reference rolls on it
+ *           (test_engine_dart);
  *   bullet  Bullet's convex-plane collider: one contact, the lower cap's
  *           lowest point, off P by THIN_HEIGHT r / 2 plus Bullet's single
  *           precision (Debian's DART links the float build): 2.5e-8 m at 0.2 m
@@ -28,6 +34,9 @@
  *           Bullet engines/bullet/ links have the same symbol names, and one
  *           process linking both corrupts its heap (measured). AddressSanitizer
  *           refuses RTLD_DEEPBIND: a sanitizer build has no bullet detector.
+ *           A cylinder is refused: DART gives Bullet's btCylinderShapeZ its
+ *           default collision margin, which rounds the rim corner the
+ *           contact is at (test_engine_dart measures it).
  * THIN_HEIGHT (1e-7 r) keeps the cap offset far below 1e-6 m for any r a
  * scenario accepts, without a degenerate cylinder.
  *
@@ -79,6 +88,7 @@ extern "C" {
 #include "dv_reference.h"
 #include "engine_choose.h"
 #include "engine_scene.h"
+#include "engine_shape.h"
 #include "engine_watch.h"
 }
 #include "dv_dart.h"
@@ -125,19 +135,21 @@ namespace {
 
 /* [engines.dart] */
 struct dart_settings {
-  double timestep; /* s */
-  int lcp;         /* 0 pgs, 1 dantzig */
-  int detector;    /* 0 ode, 1 bullet */
-  double friction; /* coefficient */
-  double erp;      /* error reduction parameter */
-  double erv;      /* maximum error reduction velocity, m/s */
-  double cfm;      /* constraint force mixing */
-  int geom;        /* 0 thin: the only shape */
+  double timestep;       /* s */
+  int lcp;               /* 0 pgs, 1 dantzig */
+  int detector;          /* 0 ode, 1 bullet */
+  double friction;       /* coefficient */
+  double erp;            /* error reduction parameter */
+  double erv;            /* maximum error reduction velocity, m/s */
+  double cfm;            /* constraint force mixing */
+  int geom;              /* 0 thin, 1 cylinder */
+  double half_thickness; /* m, the cylinder's half-length */
 };
 
 const char *const LCPS[] = {"pgs", "dantzig", NULL};
 const char *const DETECTORS[] = {"ode", "bullet", NULL};
-const char *const GEOMS[] = {"thin", NULL};
+const char *const GEOMS[] = {"thin", "cylinder", NULL};
+enum { GEOM_THIN = 0, GEOM_CYLINDER = 1 };
 enum { LCP_PGS = 0, LCP_DANTZIG = 1 };
 enum { DETECTOR_ODE = 0, DETECTOR_BULLET = 1 };
 
@@ -158,8 +170,10 @@ const dv_setting_spec KEYS[] = {
      "the error reduction's largest velocity"},
     {"cfm", DV_SETTING_REAL, AT(cfm), 0, 0, 1e-5, 0.0, 1.0, NULL, NULL, "",
      "constraint force mixing: contact softness"},
-    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, 0, 0, 0, GEOMS, NULL, "",
-     "the exact thin disk only, a cylinder of height 1e-7 r"},
+    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, GEOM_THIN, 0, 1, GEOMS, NULL, "",
+     "thin: the exact disk (a cylinder of height 1e-7 r); cylinder: of half_thickness"},
+    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL, "m",
+     "cylinder half-length (default: [disk] thickness / 2 if > 0)"},
 };
 
 /* the error models (constants above) */
@@ -175,6 +189,8 @@ const dv_engine_knobs KNOBS = {"dart", "lcp", MODELS, 2, 0x3, 1};
 
 int dart_check(dv_scenario *sc, void *block, dv_setting_issue *issue);
 
+const dv_shape_keys SHAPE = {"dart", "geom", GEOM_CYLINDER, GEOM_THIN, "half_thickness"};
+
 const dv_settings_section SETTINGS = {"dart", KEYS, sizeof KEYS / sizeof KEYS[0],
                                       sizeof(dart_settings), dart_check};
 
@@ -182,21 +198,21 @@ int dart_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   dart_settings *s = static_cast<dart_settings *>(block);
   char why[DV_DERIVED_BYTES];
   const char *keys[8];
-  (void)issue;
   const int given = dv_scenario_is_given(sc, "dart", "lcp");
   const dv_knob_choice in = {given ? s->lcp : -1, s->timestep, NAN};
   dv_knob_choice out;
   dv_engine_choose(sc, &dv_engine_dart, &KNOBS, s->lcp, &in, &out, why, sizeof why, keys);
   s->lcp = out.choice;
   s->timestep = out.timestep;
-  if (sc->thickness > 0.0) {
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used,
-             "%sgeom thin: the DART engine models the thin disk only, compared with the thin "
-             "reference",
-             used ? "; " : "");
-  }
+  dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "dart", keys, why);
+  if (s->geom == GEOM_CYLINDER && s->detector == DETECTOR_BULLET) {
+    issue->key = "detector";
+    snprintf(issue->what, sizeof issue->what,
+             "bullet rounds the cylinder's rim corner by its collision margin; a cylinder "
+             "(geom cylinder or a [disk] thickness) needs detector ode");
+    return -1;
+  }
   return 0;
 }
 
@@ -212,7 +228,7 @@ using dart::dynamics::SkeletonPtr;
 struct dart_engine {
   dart_settings set;
   red_disk disk;
-  dv_geometry geom; /* the thin disk: a cylinder of half-thickness 0 */
+  dv_geometry geom; /* a cylinder of half-thickness 0 (the thin disk) or h */
   dart::simulation::WorldPtr world;
   SkeletonPtr skel, ground;
   BodyNode *body;
@@ -225,11 +241,13 @@ struct dart_engine {
 };
 
 /* "DART 6.12.1" */
-const char *dart_version(void) { return "DART " DART_VERSION; }
+const char *dart_version(void) {
+  return "DART " DART_VERSION;
+}
 
 /* mark the run failed: stats outcome and detail, err, and the status kept */
-__attribute__((format(printf, 4, 5))) int failed(dart_engine *e, dv_failure failure,
-                                                 dv_error *err, const char *fmt, ...) {
+__attribute__((format(printf, 4, 5))) int failed(dart_engine *e, dv_failure failure, dv_error *err,
+                                                 const char *fmt, ...) {
   const dv_outcome outcome = dv_failure_outcome(failure);
   va_list ap;
   va_start(ap, fmt);
@@ -269,13 +287,13 @@ void write_pose(dart_engine *e, const dv_pose *p) {
   e->skel->clearInternalForces();
 }
 
-
 /* DART's Bullet collision detector, from its library opened in a scope of its
  * own (the header's comment); NULL and why when it cannot be */
 CollisionDetectorPtr bullet_detector(char *why, size_t size) {
 #ifdef DART_NO_DEEPBIND
-  snprintf(why, size, "detector bullet: not in a sanitizer build (AddressSanitizer refuses the "
-                      "RTLD_DEEPBIND that keeps DART's float Bullet apart)");
+  snprintf(why, size,
+           "detector bullet: not in a sanitizer build (AddressSanitizer refuses the "
+           "RTLD_DEEPBIND that keeps DART's float Bullet apart)");
   return nullptr;
 #else
   static void *lib = NULL;
@@ -297,6 +315,8 @@ CollisionDetectorPtr bullet_detector(char *why, size_t size) {
   return create();
 #endif
 }
+
+double dart_half_thickness(const dv_scenario *sc);
 
 /* DART's contact parameters are statics of ContactConstraint: this run's */
 void apply_contact_parameters(const dart_engine *e) {
@@ -342,8 +362,10 @@ int build(dart_engine *e, char *why, size_t size) {
   e->body->setMass(e->disk.m);
   e->body->setMomentOfInertia(e->disk.A, e->disk.A, e->disk.C, 0.0, 0.0, 0.0);
   e->body->setLocalCOM(Eigen::Vector3d::Zero());
-  ShapeNode *ds = e->body->createShapeNodeWith<CollisionAspect, DynamicsAspect>(
-      std::make_shared<CylinderShape>(e->disk.r, THIN_HEIGHT * e->disk.r));
+  ShapeNode *ds =
+      e->body->createShapeNodeWith<CollisionAspect, DynamicsAspect>(std::make_shared<CylinderShape>(
+          e->disk.r,
+          e->geom.half_thickness > 0.0 ? 2.0 * e->geom.half_thickness : THIN_HEIGHT * e->disk.r));
   ds->getDynamicsAspect()->setFrictionCoeff(e->set.friction);
   ds->getDynamicsAspect()->setRestitutionCoeff(0.0);
   e->skel->setGravity(Eigen::Vector3d(0.0, 0.0, -e->disk.g));
@@ -351,9 +373,12 @@ int build(dart_engine *e, char *why, size_t size) {
   return 0;
 }
 
-void dart_free(void *p) { delete static_cast<dart_engine *>(p); }
+void dart_free(void *p) {
+  delete static_cast<dart_engine *>(p);
+}
 
-void *dart_alloc(const dv_scenario *sc, dv_error *err) {
+/* the engine of sc, whatever its detector (dv_dart_contacts measures them all) */
+dart_engine *make_engine(const dv_scenario *sc, dv_error *err) {
   if (!(sc->disk.A > 0.0 && sc->disk.C > 0.0))
     return dv_fail(err, DV_EINPUT, "DART needs a positive definite inertia (A = %g, C = %g)",
                    sc->disk.A, sc->disk.C),
@@ -363,8 +388,11 @@ void *dart_alloc(const dv_scenario *sc, dv_error *err) {
   e->set = *static_cast<const dart_settings *>(dv_scenario_settings(sc, SETTINGS.name));
   /* a scenario built in code leaves the step to the scene */
   dv_engine_derive_step(sc, &MODELS[e->set.lcp], &e->set.timestep, NULL, NULL, 0, NULL);
+  /* a scenario built in code derives its shape here */
+  dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
   e->disk = sc->disk;
-  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r, 0.0};
+  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,
+                        e->set.geom == GEOM_CYLINDER ? e->set.half_thickness : 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
   e->cos_limit = std::cos(e->theta_limit);
   char why[200] = "";
@@ -382,6 +410,17 @@ void *dart_alloc(const dv_scenario *sc, dv_error *err) {
   return e;
 }
 
+void *dart_alloc(const dv_scenario *sc, dv_error *err) {
+  if (dart_half_thickness(sc) > 0.0 &&
+      static_cast<const dart_settings *>(dv_scenario_settings(sc, SETTINGS.name))->detector ==
+          DETECTOR_BULLET)
+    return dv_fail(err, DV_EINPUT,
+                   "DART: detector bullet rounds a cylinder's rim corner; a cylinder needs "
+                   "detector ode"),
+           nullptr;
+  return make_engine(sc, err);
+}
+
 int dart_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   dart_engine *e = static_cast<dart_engine *>(p);
   memset(&e->st, 0, sizeof e->st);
@@ -389,7 +428,8 @@ int dart_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   e->status = DV_OK;
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
-    if (!std::isfinite(state[i])) return failed(e, DV_FAILURE_SETUP, err, "non-finite initial state");
+    if (!std::isfinite(state[i]))
+      return failed(e, DV_FAILURE_SETUP, err, "non-finite initial state");
   dv_pose pose;
   try {
     e->world->reset();
@@ -462,17 +502,18 @@ void dart_stats(const void *p, dv_engine_stats *out) {
   *out = static_cast<const dart_engine *>(p)->st;
 }
 
-/* DART models the thin disk in every scene */
+/* the half-thickness of the cylinder DART models in sc (0: the thin disk) */
 double dart_half_thickness(const dv_scenario *sc) {
-  (void)sc;
-  return 0.0;
+  dart_settings s = *static_cast<const dart_settings *>(dv_scenario_settings(sc, SETTINGS.name));
+  dv_engine_derive_shape(sc, &SHAPE, &s.geom, &s.half_thickness, NULL, 0, NULL);
+  return s.geom == GEOM_CYLINDER ? s.half_thickness : 0.0;
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int dv_dart_contacts(const dv_scenario *sc, const double y[RED_NSTATE], double sink,
                                 double mean[3], double *depth, dv_error *err) {
-  dart_engine *e = static_cast<dart_engine *>(dart_alloc(sc, err));
+  dart_engine *e = make_engine(sc, err);
   if (!e) return -1;
   int n = -1;
   try {
@@ -502,7 +543,8 @@ extern "C" int dv_dart_contacts(const dv_scenario *sc, const double y[RED_NSTATE
 
 extern "C" const dv_engine_type dv_engine_dart = {
     "dart",
-    "DART 6.12 contact simulation: the thin disk on a plane (FreeJoint, boxed LCP)",
+    "DART 6.12 contact simulation: the thin disk or the scene's cylinder on a plane (FreeJoint, "
+    "boxed LCP)",
     DV_ENGINE_CONTACT,
     &SETTINGS,
     &SEARCH,

@@ -13,7 +13,17 @@
  *    centre G = P - r d, spun by psi - pi/2 about n: R = Rz(phi) Ry(theta)
  *    Rz(psi - pi/2), DESIGN's body frame.
  * So the rim point P lies on the ground by construction (no height, no
- * penetration: the contact is bilateral). No slip is two nonholonomic
+ * penetration: the contact is bilateral). A cylinder of half-thickness h
+ * (geom cylinder, from [disk] thickness as the contact engines' shape:
+ * engine_shape.h) stands on its lower rim corner, P = G + r d - h s n with s
+ * = sign(n.z): G = P - r d + h s n is as fixed in T, so only D's offset in T
+ * changes, and the corner moves over the body as the thin rim point does (at
+ * r psi' along t): the no-slip couplers below are the same. Where theta
+ * crosses upright the corner switches sides (an impact the chain cannot
+ * follow): the run ends there, an event that says so, as the matched
+ * reference ends there; a cylinder started exactly upright (standing on
+ * the line across its rim, which no corner holds) ends at once. No slip is
+ * two nonholonomic
  * Constraint::SpeedCouplers: P moves along the ground at r psi' t (DESIGN
  * section 1), so
  *   x_P' - r psi' sin(phi) = 0,   y_P' + r psi' cos(phi) = 0,
@@ -72,6 +82,7 @@ extern "C" {
 #include "dv_reference.h"
 #include "engine_choose.h"
 #include "engine_scene.h"
+#include "engine_shape.h"
 }
 
 /* The error model of engine_scene.h per integrator. engine_scene.h's model
@@ -98,6 +109,9 @@ extern "C" {
 #define SIMBODY_C_MERSON 9.2e-7
 #define SIMBODY_COST_RK3 8e-5
 #define SIMBODY_COST_MERSON 1.7e-4
+/* |cos theta| below which a cylinder stands on its rim's line (the matched
+ * reference's upright line is 1e-9: reduced/red_rolling.c) */
+#define UPRIGHT_COS 1e-9
 
 namespace {
 
@@ -105,16 +119,18 @@ using namespace SimTK;
 
 /* [engines.simbody] */
 struct simbody_settings {
-  double timestep;   /* s: the fixed step (accuracy 0) */
-  int integrator;    /* INTEG_* */
-  double accuracy;   /* 0: fixed step; > 0: error-controlled to this accuracy */
-  double tolerance;  /* constraint tolerance of the projection */
-  double friction;   /* mu of the validity window; NAN: [engines.matched] friction */
-  int geom;          /* 0 thin: the only shape */
+  double timestep;       /* s: the fixed step (accuracy 0) */
+  int integrator;        /* INTEG_* */
+  double accuracy;       /* 0: fixed step; > 0: error-controlled to this accuracy */
+  double tolerance;      /* constraint tolerance of the projection */
+  double friction;       /* mu of the validity window; NAN: [engines.matched] friction */
+  int geom;              /* 0 thin, 1 cylinder */
+  double half_thickness; /* m, the cylinder's half-length */
 };
 
 const char *const INTEGRATORS[] = {"rk3", "rkmerson", NULL};
-const char *const GEOMS[] = {"thin", NULL};
+const char *const GEOMS[] = {"thin", "cylinder", NULL};
+enum { GEOM_THIN = 0, GEOM_CYLINDER = 1 };
 enum { INTEG_RK3 = 0, INTEG_MERSON = 1 };
 
 #define AT(field) offsetof(simbody_settings, field)
@@ -122,18 +138,21 @@ enum { INTEG_RK3 = 0, INTEG_MERSON = 1 };
 const dv_setting_spec KEYS[] = {
     {"timestep", DV_SETTING_REAL, AT(timestep), 0, 0, NAN, 1e-7, 0.1, NULL, NULL, "s",
      "the fixed step (unused where accuracy > 0); default: from the scene's time scales"},
-    {"integrator", DV_SETTING_CHOICE, AT(integrator), 0, 0, INTEG_RK3, 0, 1, INTEGRATORS, NULL,
-     "", "explicit Runge-Kutta: rk3 (third order) or rkmerson (Merson, fourth order)"},
+    {"integrator", DV_SETTING_CHOICE, AT(integrator), 0, 0, INTEG_RK3, 0, 1, INTEGRATORS, NULL, "",
+     "explicit Runge-Kutta: rk3 (third order) or rkmerson (Merson, fourth order)"},
     {"accuracy", DV_SETTING_REAL, AT(accuracy), 0, 0, 0.0, 0.0, 0.1, NULL, NULL, "",
      "0: the fixed timestep; > 0: the integrator's own steps, error-controlled to this accuracy"},
-    {"constraint_tolerance", DV_SETTING_REAL, AT(tolerance), 0, DV_SETTING_OPEN_LO, 1e-10, 0.0,
-     0.1, NULL, NULL, "",
+    {"constraint_tolerance", DV_SETTING_REAL, AT(tolerance), 0, DV_SETTING_OPEN_LO, 1e-10, 0.0, 0.1,
+     NULL, NULL, "",
      "after a step whose no-slip error exceeds it, the integrator projects onto the constraints"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
      "mu of the validity window (the run ends where |F_h| > mu F_z); default: [engines.matched] "
      "friction"},
-    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, 0, 0, 0, GEOMS, NULL, "",
-     "the exact thin disk only: the constraints hold its rim point P = G + r d"},
+    {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, GEOM_THIN, 0, 1, GEOMS, NULL, "",
+     "thin: the constraints hold the rim point P = G + r d; cylinder: the rim corner "
+     "G + r d - h sign(n.z) n"},
+    {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, 0.002, 1e-6, 1.0, NULL, NULL, "m",
+     "cylinder half-length h (default: [disk] thickness / 2 if > 0)"},
 };
 
 /* the error models (constants above) */
@@ -148,6 +167,8 @@ const dv_engine_knobs KNOBS = {"simbody", "integrator", MODELS, 2, 0x3, 1};
 
 int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue);
 
+const dv_shape_keys SHAPE = {"simbody", "geom", GEOM_CYLINDER, GEOM_THIN, "half_thickness"};
+
 const dv_settings_section SETTINGS = {"simbody", KEYS, sizeof KEYS / sizeof KEYS[0],
                                       sizeof(simbody_settings), simbody_check};
 
@@ -159,8 +180,7 @@ int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   const int given = dv_scenario_is_given(sc, "simbody", "integrator");
   const dv_knob_choice in = {given ? s->integrator : -1, s->timestep, NAN};
   dv_knob_choice out;
-  dv_engine_choose(sc, &dv_engine_simbody, &KNOBS, s->integrator, &in, &out, why, sizeof why,
-                   keys);
+  dv_engine_choose(sc, &dv_engine_simbody, &KNOBS, s->integrator, &in, &out, why, sizeof why, keys);
   s->integrator = out.choice;
   s->timestep = out.timestep;
   size_t nkeys = 0;
@@ -174,13 +194,7 @@ int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
     keys[nkeys++] = "friction";
     keys[nkeys] = NULL;
   }
-  if (sc->thickness > 0.0) {
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used,
-             "%sgeom thin: the constraints hold the thin disk's rim point, compared with the "
-             "thin reference",
-             used ? "; " : "");
-  }
+  dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "simbody", keys, why);
   return 0;
 }
@@ -194,9 +208,11 @@ const dv_engine_contact CONTACT = {"geom", "thin", "constraint_tolerance", 0.01,
  * -cos (y); arguments (u_P, psi', phi); derivatives up to second order, as
  * Constraint::SpeedCoupler needs */
 class NoSlip : public Function {
-public:
+ public:
   NoSlip(Real r, int axis) : r_(r), axis_(axis) {}
-  Real calcValue(const Vector &x) const override { return x[0] - r_ * x[1] * s(x[2]); }
+  Real calcValue(const Vector &x) const override {
+    return x[0] - r_ * x[1] * s(x[2]);
+  }
   Real calcDerivative(const Array_<int> &d, const Vector &x) const override {
     if (d.size() == 1) {
       if (d[0] == 0) return 1.0;
@@ -210,12 +226,20 @@ public:
     }
     return 0.0;
   }
-  int getArgumentSize() const override { return 3; }
-  int getMaxDerivativeOrder() const override { return 2; }
+  int getArgumentSize() const override {
+    return 3;
+  }
+  int getMaxDerivativeOrder() const override {
+    return 2;
+  }
 
-private:
-  Real s(Real phi) const { return axis_ == 0 ? std::sin(phi) : -std::cos(phi); }
-  Real ds(Real phi) const { return axis_ == 0 ? std::cos(phi) : std::sin(phi); }
+ private:
+  Real s(Real phi) const {
+    return axis_ == 0 ? std::sin(phi) : -std::cos(phi);
+  }
+  Real ds(Real phi) const {
+    return axis_ == 0 ? std::cos(phi) : std::sin(phi);
+  }
   Real r_;
   int axis_;
 };
@@ -223,7 +247,9 @@ private:
 struct simbody_engine {
   simbody_settings set;
   red_disk disk;
-  dv_geometry geom; /* the thin disk */
+  dv_geometry geom; /* the thin disk, or the cylinder of half-thickness h */
+  int side;         /* the rim corner the chain holds: sign(n.z) at the start */
+  int on_line;      /* a cylinder started upright: on its rim's line, no corner */
   MultibodySystem *sys;
   SimbodyMatterSubsystem *matter;
   GeneralForceSubsystem *forces;
@@ -311,6 +337,14 @@ void destroy(simbody_engine *e) {
   delete e->forces;
   delete e->matter;
   delete e->sys;
+  e->integ = nullptr;
+  e->initial = nullptr;
+  e->H = nullptr;
+  e->T = nullptr;
+  e->D = nullptr;
+  e->forces = nullptr;
+  e->matter = nullptr;
+  e->sys = nullptr;
 }
 
 void simbody_free(void *p) {
@@ -329,14 +363,14 @@ void build(simbody_engine *e) {
   e->matter = new SimbodyMatterSubsystem(*e->sys);
   e->forces = new GeneralForceSubsystem(*e->sys);
   Force::Gravity(*e->forces, *e->matter, Vec3(0.0, 0.0, -e->disk.g));
-  e->H = new MobilizedBody::Planar(e->matter->Ground(), Transform(), Body::Massless(),
-                                   Transform());
+  e->H = new MobilizedBody::Planar(e->matter->Ground(), Transform(), Body::Massless(), Transform());
   /* the pin's z axis along H's y: F and M frames turned by -pi/2 about x */
   const Rotation z_to_y(-0.5 * M_PI, XAxis);
   e->T = new MobilizedBody::Pin(*e->H, Transform(z_to_y), Body::Massless(), Transform(z_to_y));
   const MassProperties mp(e->disk.m, Vec3(0.0), Inertia(e->disk.A, e->disk.A, e->disk.C));
-  e->D = new MobilizedBody::Pin(*e->T, Transform(Vec3(-r, 0.0, 0.0)), Body::Rigid(mp),
-                                Transform());
+  /* G = P - r d + h s n: the thin disk's rim point at h = 0 */
+  e->D = new MobilizedBody::Pin(*e->T, Transform(Vec3(-r, 0.0, e->side * e->geom.half_thickness)),
+                                Body::Rigid(mp), Transform());
   for (int axis = 0; axis < 2; axis++) {
     Array_<MobilizedBodyIndex> ub(2), qb(1);
     Array_<MobilizerUIndex> ui(2);
@@ -375,8 +409,11 @@ void *simbody_alloc(const dv_scenario *sc, dv_error *err) {
   /* a scenario built in code leaves the step to the scene, the friction to matched's */
   dv_engine_derive_step(sc, &MODELS[e->set.integrator], &e->set.timestep, NULL, NULL, 0, NULL);
   if (std::isnan(e->set.friction)) e->set.friction = dv_matched_settings_of(sc)->friction;
+  dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
   e->disk = sc->disk;
-  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r, 0.0};
+  e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,
+                        e->set.geom == GEOM_CYLINDER ? e->set.half_thickness : 0.0};
+  e->side = 1;
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
   try {
     build(e);
@@ -389,10 +426,18 @@ void *simbody_alloc(const dv_scenario *sc, dv_error *err) {
 }
 
 int reset(simbody_engine *e, const double y[RED_NSTATE], dv_error *err) {
-  const double r = e->disk.r, th = y[RED_TH], ph = y[RED_PH], vps = y[RED_VPS];
+  const double r = e->disk.r, h = e->geom.half_thickness, th = y[RED_TH], ph = y[RED_PH],
+               vps = y[RED_VPS];
+  const int side = std::cos(th) < 0.0 ? -1 : 1;
+  if (side != e->side) { /* the other corner: D's offset in T is fixed at build */
+    destroy(e);
+    e->side = side;
+    build(e);
+  }
+  /* P - G along the heading: r cos(theta) - h s sin(theta) */
+  const double reach = r * std::cos(th) - h * side * std::sin(th);
   State s = *e->initial;
-  e->H->setQ(s, Vec3(ph, y[RED_X] + r * std::cos(th) * std::cos(ph),
-                     y[RED_Y] + r * std::cos(th) * std::sin(ph)));
+  e->H->setQ(s, Vec3(ph, y[RED_X] + reach * std::cos(ph), y[RED_Y] + reach * std::sin(ph)));
   e->T->setQ(s, th);
   e->D->setQ(s, y[RED_PS] - 0.5 * M_PI);
   e->H->setU(s, Vec3(y[RED_VPH], r * vps * std::sin(ph), -r * vps * std::cos(ph)));
@@ -408,6 +453,7 @@ int reset(simbody_engine *e, const double y[RED_NSTATE], dv_error *err) {
   e->e_max = e->e0 + 0.5 * std::fabs(e->e0) + e->disk.m * e->disk.g * e->disk.r;
   if (!std::isfinite(e->e0))
     return failed(e, DV_FAILURE_SETUP, err, "the initial pose or energy is not finite");
+  e->on_line = h > 0.0 && std::fabs(std::cos(th)) < UPRIGHT_COS;
   return DV_OK;
 }
 
@@ -418,7 +464,8 @@ int simbody_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
   e->t_event = NAN;
   memcpy(e->prev_y, state, sizeof e->prev_y);
   for (int i = 0; i < RED_NSTATE; i++)
-    if (!std::isfinite(state[i])) return failed(e, DV_FAILURE_SETUP, err, "non-finite initial state");
+    if (!std::isfinite(state[i]))
+      return failed(e, DV_FAILURE_SETUP, err, "non-finite initial state");
   try {
     return reset(e, state, err);
   } catch (const std::exception &ex) {
@@ -432,9 +479,15 @@ int check_step(simbody_engine *e, dv_error *err) {
   const double t = s.getTime();
   const double th = e->T->getQ(s);
   const double rates = e->T->getU(s) + e->D->getU(s) + e->H->getU(s)[0];
-  if (!std::isfinite(th + rates)) return failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
+  if (!std::isfinite(th + rates))
+    return failed(e, DV_FAILURE_NAN, err, "non-finite state at t = %g s", t);
   if (th < e->theta_limit || th > M_PI - e->theta_limit) {
     dv_engine_lay_down(&e->st, th < e->theta_limit, e->theta_limit, t);
+  } else if (e->geom.half_thickness > 0.0 && !(e->side * std::cos(th) > 0.0)) {
+    snprintf(e->st.detail, sizeof e->st.detail,
+             "the cylinder crossed upright at t = %.9g s: its rim corner switches sides (an "
+             "impact the chain, holding one corner, cannot follow)",
+             t);
   } else {
     double F[3];
     contact_force(e, s, F);
@@ -472,13 +525,22 @@ int advance(simbody_engine *e, double t, dv_error *err) {
    * own steps (accuracy > 0) may end anywhere, and land on t exactly */
   const double slack =
       e->set.accuracy > 0.0 ? 1e-13 * (1.0 + std::fabs(t)) : 1e-2 * e->set.timestep;
+  if (e->on_line) {
+    snprintf(e->st.detail, sizeof e->st.detail,
+             "the cylinder starts upright, on the line across its rim, which the chain (one rim "
+             "corner) cannot hold");
+    e->st.outcome = DV_OUTCOME_EVENT;
+    e->status = DV_EVENT;
+    e->t_event = e->integ->getTime();
+    return DV_EVENT;
+  }
   while (e->integ->getTime() < t - slack) {
     const Integrator::SuccessfulStepStatus st = e->integ->stepTo(t);
     if (st == Integrator::EndOfSimulation || e->integ->isSimulationOver())
-      return failed(e, DV_FAILURE_LIBRARY, err, "Simbody's integrator stopped at t = %g s: %s",
-                    e->integ->getTime(),
-                    Integrator::getTerminationReasonString(e->integ->getTerminationReason())
-                        .c_str());
+      return failed(
+          e, DV_FAILURE_LIBRARY, err, "Simbody's integrator stopped at t = %g s: %s",
+          e->integ->getTime(),
+          Integrator::getTerminationReasonString(e->integ->getTerminationReason()).c_str());
     if (st == Integrator::StartOfContinuousInterval) continue;
     const int status = check_step(e, err);
     if (status != DV_OK) return status;
@@ -498,8 +560,8 @@ int simbody_advance(void *p, double t, dv_sample *out, dv_error *err) {
     if (status < 0) return status;
     const State &s = e->integ->getState();
     read_pose(e, s, &pose);
-    dv_sample_from_pose(&e->disk, &e->geom, &pose, status == DV_EVENT ? e->t_event : t,
-                        e->prev_y, out);
+    dv_sample_from_pose(&e->disk, &e->geom, &pose, status == DV_EVENT ? e->t_event : t, e->prev_y,
+                        out);
     read_state(e, s, out->y); /* the integrated coordinates, not their round trip */
     contact_force(e, s, out->force);
   } catch (const std::exception &ex) {
@@ -516,16 +578,20 @@ void simbody_stats(const void *p, dv_engine_stats *out) {
   *out = static_cast<const simbody_engine *>(p)->st;
 }
 
+/* the half-thickness of the cylinder the chain holds in sc (0: the thin disk) */
 double simbody_half_thickness(const dv_scenario *sc) {
-  (void)sc;
-  return 0.0;
+  simbody_settings s =
+      *static_cast<const simbody_settings *>(dv_scenario_settings(sc, SETTINGS.name));
+  dv_engine_derive_shape(sc, &SHAPE, &s.geom, &s.half_thickness, NULL, 0, NULL);
+  return s.geom == GEOM_CYLINDER ? s.half_thickness : 0.0;
 }
 
-} // namespace
+}  // namespace
 
 extern "C" const dv_engine_type dv_engine_simbody = {
     "simbody",
-    "Simbody 3.7 exact constraints: the thin disk as a joint chain with no-slip speed couplers "
+    "Simbody 3.7 exact constraints: the thin disk or the scene's cylinder (its rim corner) as a "
+    "joint chain with no-slip speed couplers "
     "(cannot slip or lose contact; ends at the validity window)",
     DV_ENGINE_CONTACT,
     &SETTINGS,
