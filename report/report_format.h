@@ -62,6 +62,9 @@
  *                                   (geometry, time step, contact softness and
  *                                   slip, the rest, with its share), or ""
  *         "reference_half_thickness": m,   of its matched reference
+ *         "judged": TEXT,           the body whose reference judged it, as
+ *                                   every line says it: "vs cylinder h 1.165
+ *                                   mm" or "vs thin disk"
  *         "reference_note": TEXT,   why that reference is not the one for its
  *                                   geometry (a thick one that crossed upright
  *                                   falls back to the thin disk), or ""

@@ -185,6 +185,9 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddItemToObject(o, "horizon", horizon_json(r));
   cJSON_AddStringToObject(o, "cause", r->cause);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
+  char body[48];
+  dv_run_body_words(r->half_thickness, body, sizeof body);
+  cJSON_AddStringToObject(o, "judged", body);
   cJSON_AddStringToObject(o, "reference_note", r->reference_note);
   cJSON_AddItemToObject(o, "event", event_json(r));
   cJSON_AddItemToObject(o, "reference", engine_reference_json(c, r));
@@ -504,11 +507,12 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
 void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
   for (size_t i = 0; i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
-    char th[32], path[32];
-    fprintf(fp, "%-24s %-8s %-18s theta %s  path %s  %s\n", c->sc->name, r->engine->name,
+    char th[32], path[32], body[48];
+    dv_run_body_words(r->half_thickness, body, sizeof body);
+    fprintf(fp, "%-24s %-8s %-18s theta %s  path %s  %s  %s\n", c->sc->name, r->engine->name,
             dv_run_verdict_name(r->verdict),
             measured(th, sizeof th, "%.2e rad", r->vs_ref.value[DV_THETA_MAX_ERR]),
-            measured(path, sizeof path, "%.2e m", r->vs_ref.value[DV_PATH_MAX_ERR]),
+            measured(path, sizeof path, "%.2e m", r->vs_ref.value[DV_PATH_MAX_ERR]), body,
             r->pass ? "pass" : "FAIL");
     fprintf(fp, "    decided by %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);

@@ -14,6 +14,7 @@
 #include "io_file.h"
 #include "report_escape.h"
 #include "report_suite_internal.h"
+#include "run_verdict.h"
 
 #define MAX_REPORT_BYTES (64L << 20) /* a larger report.json is taken as broken */
 #define PATH_CAP 4096
@@ -204,6 +205,9 @@ static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
   fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
   dv_report_escape_put(fp, "", e->name, 0, "</a></td>");
   dv_report_escape_put(fp, "<td>", eng->string, 0, "</td>");
+  char body[48];
+  dvs_judged_words(eng, body, sizeof body);
+  dv_report_escape_put(fp, "<td>", body, 0, "</td>");
   dv_report_escape_put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
   fprintf(fp, "<td class=\"%s\">%s</td>", ok ? "pass" : "fail", ok ? "pass" : "FAIL");
   dv_report_escape_put(fp, "<td>", text(eng, "ran_with"), 0, "</td>");
@@ -266,6 +270,15 @@ static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i)
   fputs(nlinks ? "</p>\n</section>\n" : "none</p>\n</section>\n", fp);
 }
 
+void dvs_judged_words(const cJSON *eng, char *out, size_t size) {
+  const cJSON *h = item(item(eng, "reference"), "half_thickness");
+  if (!h) h = item(eng, "reference_half_thickness");
+  if (*text(eng, "judged"))
+    snprintf(out, size, "%s", text(eng, "judged"));
+  else
+    dv_run_body_words(cJSON_IsNumber(h) ? h->valuedouble : 0.0, out, size);
+}
+
 void dvs_tally(const dvs_entry *es, size_t n, int *runs, int *failing, int *errors) {
   for (size_t i = 0; i < n; i++) {
     const cJSON *eng;
@@ -291,7 +304,7 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
           pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL", n, runs,
           failing, errors);
   fputs(
-      "<table>\n<tr><th>scenario</th><th>engine</th><th>outcome</th><th>verdict</th>"
+      "<table>\n<tr><th>scenario</th><th>engine</th><th>judged</th><th>outcome</th><th>verdict</th>"
       "<th>ran with</th><th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
       "<th>energy_drift</th><th>geometry share</th><th>largest margin (value / limit)</th>"
       "<th>wall_per_sim_s</th><th>what decided; failures</th></tr>\n",

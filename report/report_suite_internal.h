@@ -39,6 +39,10 @@ static inline int engine_pass(const cJSON *eng) {
  * that did not pass, to *errors the scenarios without a usable report */
 void dvs_tally(const dvs_entry *es, size_t n, int *runs, int *failing, int *errors);
 
+/* which body's reference judged engine eng ("vs cylinder h 1.165 mm", "vs
+ * thin disk"): its "judged", else from its reference's half-thickness */
+void dvs_judged_words(const cJSON *eng, char *out, size_t size);
+
 /* the JUnit XML of the n scenarios of es */
 void dvs_write_junit(FILE *fp, const dvs_entry *es, size_t n);
 

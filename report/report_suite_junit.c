@@ -99,6 +99,9 @@ static void put_case_properties(FILE *fp, const cJSON *report, const cJSON *eng)
   fputs("      <properties>\n", fp);
   put_property(fp, "outcome", text(eng, "outcome"));
   put_property(fp, "reference", ref);
+  char body[48];
+  dvs_judged_words(eng, body, sizeof body);
+  put_property(fp, "judged", body);
   if (item(eng, "ran_with")) put_property(fp, "ran_with", text(eng, "ran_with"));
   put_metrics(fp, eng);
   put_number(fp, "window_end", item(eng, "window_end"));

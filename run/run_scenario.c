@@ -312,6 +312,16 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
     if (r->status < 0 && !r->stats.detail[0])
       snprintf(r->stats.detail, sizeof r->stats.detail, "%.255s", e.msg);
     r->half_thickness = dv_engine_half_thickness(engines[i], sc);
+    /* a stand-in thinner than the scene's body agrees about a body the scene is not */
+    if (sc->thickness > 0.0 && r->half_thickness < 0.5 * sc->thickness * (1.0 - 1e-12)) {
+      char what[64] = "the thin disk";
+      if (r->half_thickness > 0.0)
+        snprintf(what, sizeof what, "a cylinder of half-thickness %g m", r->half_thickness);
+      snprintf(r->not_judged, sizeof r->not_judged,
+               "it simulated %s, thinner than the scene's [disk] thickness %g m (a stand-in its "
+               "settings give): no reference of the scene's body judges it",
+               what, sc->thickness);
+    }
     const dv_traj *ref = &c->thin;
     double ref_end = c->thin_valid_end;
     if (r->half_thickness > 0.0) {

@@ -2,6 +2,7 @@
 #include "run_verdict.h"
 
 #include <math.h>
+#include <stdio.h>
 
 const char *dv_run_verdict_name(dv_verdict verdict) {
   static const char *const names[DV_NVERDICTS] = {
@@ -37,4 +38,11 @@ int dv_run_verdict_failed(dv_verdict verdict) {
 dv_limit_check dv_run_limit_check(double value, double limit) {
   if (isnan(limit)) return DV_LIMIT_NONE;
   return value <= limit ? DV_LIMIT_WITHIN : DV_LIMIT_OVER;
+}
+
+void dv_run_body_words(double half_thickness, char *out, size_t size) {
+  if (half_thickness > 0.0)
+    snprintf(out, size, "vs cylinder h %.4g mm", 1e3 * half_thickness);
+  else
+    snprintf(out, size, "vs thin disk");
 }

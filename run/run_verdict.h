@@ -3,6 +3,8 @@
 #ifndef DV_RUN_VERDICT_H
 #define DV_RUN_VERDICT_H
 
+#include <stddef.h>
+
 #include "dv_engine.h"
 
 typedef enum dv_verdict {
@@ -34,5 +36,9 @@ int dv_run_verdict_failed(dv_verdict verdict);
  * limit is NaN: a metric without a rule is not judged) */
 typedef enum dv_limit_check { DV_LIMIT_WITHIN = 0, DV_LIMIT_OVER, DV_LIMIT_NONE } dv_limit_check;
 dv_limit_check dv_run_limit_check(double value, double limit);
+
+/* which body's reference judged a run, for every output line: "vs cylinder
+ * h 1.165 mm" (the matched reference of that half-thickness) or "vs thin disk" */
+void dv_run_body_words(double half_thickness, char *out, size_t size);
 
 #endif
