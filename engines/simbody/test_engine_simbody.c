@@ -17,6 +17,9 @@
  *    and the reference's integrals f1, f2 are held.
  * 5. Faults end the run, not the process: NaN state, C = 0 refused, a disk
  *    thrown up ends at the normal force's zero (it cannot lose contact).
+ * 6. A thick disk ([disk] thickness): the chain holds the rim corner and
+ *    follows the matched reference of that half-thickness leaning either
+ *    way; crossing upright ends the run there, an event that says so.
  * Every tolerance is a measurement: DV_TEST_MEASURE=1 build/engines/simbody/test_engine_simbody
  * prints each CHECK_NEAR's measured value.
  */
@@ -33,8 +36,8 @@
 static const dv_engine_type *const E = &dv_engine_simbody;
 static const char *const INTEGRATORS[] = {"rk3", "rkmerson"};
 /* the steady circle of scenarios/steady_circle.ini: theta 1, contact circle 0.5 m */
-static const double CIRCLE[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555,
-                                          0,   0, 0, 0};
+static const double CIRCLE[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0,
+                                          0,   0};
 /* a disk that wobbles (theta 1.2 to 0.93) and turns: neither steady nor upright */
 static const double WOBBLE[RED_NSTATE] = {1.2, 0.5, 2.0, -8.0, 0.3, 0.1, 0.0, 0.0};
 /* 0.1 rad off upright, no spin: it falls */
@@ -53,8 +56,8 @@ static dv_scenario base(void) {
 static traj tr, ref;
 
 /* run engine e on sc from y to t_end into t (dv_test_traj.h); its status */
-static int run_on(const dv_engine_type *e, dv_scenario sc, const double y[RED_NSTATE],
-                  double t_end, traj *t) {
+static int run_on(const dv_engine_type *e, dv_scenario sc, const double y[RED_NSTATE], double t_end,
+                  traj *t) {
   memcpy(sc.initial, y, sizeof sc.initial);
   sc.duration = t_end;
   dv_test_run(e, &sc, t);
@@ -68,8 +71,10 @@ static int run(dv_scenario sc, const double y[RED_NSTATE], double t_end) {
 
 static void check_round_trip(void) {
   static const double states[][RED_NSTATE] = {
-      {1.0, 0.3, 2.0, -5.0, 0.4, 1.2, 0.1, -0.2},  {M_PI / 2, 0.01, 0.0, 8.5, 0.0, 0.0, 0.0, 0.0},
-      {2.2, -0.5, 1.0, 3.0, -2.0, 3.0, 0.5, 0.25}, {0.3, 0.0, 7.0, -1.0, 3.0, -3.0, -1.0, 2.0},
+      {1.0, 0.3, 2.0, -5.0, 0.4, 1.2, 0.1, -0.2},
+      {M_PI / 2, 0.01, 0.0, 8.5, 0.0, 0.0, 0.0, 0.0},
+      {2.2, -0.5, 1.0, 3.0, -2.0, 3.0, 0.5, 0.25},
+      {0.3, 0.0, 7.0, -1.0, 3.0, -3.0, -1.0, 2.0},
   };
   for (int in = 0; in < 2; in++)
     for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
@@ -85,8 +90,8 @@ static void check_round_trip(void) {
       CHECK(E->reset(e, states[k], &err) == DV_OK, "reset: %s", err.msg);
       CHECK(E->advance(e, 0.0, &s, &err) == DV_OK, "advance(0): %s", err.msg);
       E->stats(e, &st);
-      CHECK(st.steps == 0 && s.t == 0.0, "%s state %zu: %ld steps before t = 0", INTEGRATORS[in],
-            k, st.steps);
+      CHECK(st.steps == 0 && s.t == 0.0, "%s state %zu: %ld steps before t = 0", INTEGRATORS[in], k,
+            st.steps);
       /* rounding: measured (DV_TEST_MEASURE=1, both integrators) state
        * 2.8e-17 (the coordinates are the state's own), energy 0 J, the rim
        * point's speed 2.2e-16 m/s, depth 6.9e-18 m (the joint chain puts
@@ -113,8 +118,8 @@ static void check_grid(void) {
     dv_scenario_set_number(&sc, "simbody", "timestep", 1e-3, NULL);
     CHECK(run(sc, CIRCLE, 0.05) == DV_OK, "%s", tr.stats.detail);
     const dv_sample *s = &tr.s[tr.n - 1];
-    CHECK(tr.stats.steps == 50 && s->t == 0.05, "%s: %ld steps to t = %g, want 50",
-          INTEGRATORS[in], tr.stats.steps, s->t);
+    CHECK(tr.stats.steps == 50 && s->t == 0.05, "%s: %ld steps to t = %g, want 50", INTEGRATORS[in],
+          tr.stats.steps, s->t);
     CHECK(tr.stats.contacts_max == 1 && s->contacts == 1, "%s: %d contacts", INTEGRATORS[in],
           tr.stats.contacts_max);
   }
@@ -138,8 +143,8 @@ static void residuals(const dv_scenario *sc, double r[4]) {
     /* the engine's energy is its pose's; the state's pose has the centre at
      * r sin theta and rolls without slip: their difference over m g bounds
      * the centre's height error (and the slip's kinetic energy) */
-    r[2] = fmax(r[2], fabs(s->energy - dv_pose_energy(&sc->disk, &pose)) /
-                          (sc->disk.m * sc->disk.g));
+    r[2] =
+        fmax(r[2], fabs(s->energy - dv_pose_energy(&sc->disk, &pose)) / (sc->disk.m * sc->disk.g));
     red_contact_point(&sc->disk, s->y, p);
     r[3] = fmax(r[3], hypot(s->contact[0] - p[0], s->contact[1] - p[1]));
   }
@@ -147,7 +152,7 @@ static void residuals(const dv_scenario *sc, double r[4]) {
 
 static void check_constraints(void) {
   dv_scenario sc = base();
-  dv_scenario_set_number(&sc, "simbody", "friction", 1e9, NULL); /* only N <= 0 ends it */
+  dv_scenario_set_number(&sc, "simbody", "friction", 1e9, NULL);  /* only N <= 0 ends it */
   dv_scenario_set_number(&sc, "simbody", "timestep", 1e-3, NULL); /* the scene's: T / 100 */
   CHECK(run(sc, WOBBLE, 2.0) == DV_OK && tr.n == 201, "wobble: %ld samples, %s", tr.n,
         tr.stats.detail);
@@ -162,9 +167,10 @@ static void check_constraints(void) {
   dv_scenario_set_number(&sc, "simbody", "constraint_tolerance", 1e-14, NULL);
   run(sc, WOBBLE, 2.0);
   residuals(&sc, tight);
-  printf("wobble, 2 s (theta %.3f to %.3f), constraint_tolerance 1e-10 / 1e-14: slip %.2e / "
-         "%.2e m/s, depth %.2e / %.2e m, height %.2e / %.2e m, contact %.2e / %.2e m\n",
-         th_lo, th_hi, r[0], tight[0], r[1], tight[1], r[2], tight[2], r[3], tight[3]);
+  printf(
+      "wobble, 2 s (theta %.3f to %.3f), constraint_tolerance 1e-10 / 1e-14: slip %.2e / "
+      "%.2e m/s, depth %.2e / %.2e m, height %.2e / %.2e m, contact %.2e / %.2e m\n",
+      th_lo, th_hi, r[0], tight[0], r[1], tight[1], r[2], tight[2], r[3], tight[3]);
   /* measured at 1e-10 (the default): slip 1.4e-10 m/s (the no-slip error
    * reaches about the tolerance before the integrator projects), depth
    * 1.4e-17 m, contact 5.7e-17 m, and the energy's 9.4e-12 m is the slip's
@@ -214,8 +220,7 @@ static void check_fall(void) {
               strstr(st->detail, cases[c].detail) && ref.status == DV_EVENT,
           "fall, %s: status %d, %s: %s", cases[c].what, status, dv_outcome_name(st->outcome),
           st->detail);
-    CHECK(st->lay_down == (c == 2 ? -1 : 0), "fall, %s: lay_down %d", cases[c].what,
-          st->lay_down);
+    CHECK(st->lay_down == (c == 2 ? -1 : 0), "fall, %s: lay_down %d", cases[c].what, st->lay_down);
     CHECK(falls(&tr), "fall, %s: theta rose", cases[c].what);
     /* the event is the first step past it: measured 0.4 to 0.9 ms after the
      * matched reference's root (0.3346, 0.4045, 0.1823 s), within one step */
@@ -269,9 +274,10 @@ static void check_convergence(void) {
                         wobble_error("rk3", 1.25e-3)};
   const double me[2] = {wobble_error("rkmerson", 1e-2), wobble_error("rkmerson", 5e-3)};
   const double p1 = log2(rk[0] / rk[1]), p2 = log2(rk[1] / rk[2]), pm = log2(me[0] / me[1]);
-  printf("wobble, 1 s: theta error rk3 %.3e %.3e %.3e (order %.2f %.2f); rkmerson %.3e %.3e "
-         "(order %.2f)\n",
-         rk[0], rk[1], rk[2], p1, p2, me[0], me[1], pm);
+  printf(
+      "wobble, 1 s: theta error rk3 %.3e %.3e %.3e (order %.2f %.2f); rkmerson %.3e %.3e "
+      "(order %.2f)\n",
+      rk[0], rk[1], rk[2], p1, p2, me[0], me[1], pm);
   /* measured: rk3 9.54e-6, 1.19e-6, 1.49e-7 rad: orders 3.00 and 3.00;
    * rkmerson 1.79e-7, 1.13e-8 rad: 3.99 (fourth order; 3.96 from 5e-3 to
    * 2.5e-3 s, 7.3e-10 rad) */
@@ -290,8 +296,7 @@ static void check_convergence(void) {
 
 /* the largest |theta - theta0|, relative energy change and f1, f2 changes
  * (relative to the larger) over a run of duration from y at the scene's step */
-static void drifts(const double y[RED_NSTATE], double duration, double *th, double *en,
-                   double *f) {
+static void drifts(const double y[RED_NSTATE], double duration, double *th, double *en, double *f) {
   dv_scenario sc = base();
   memcpy(sc.initial, y, sizeof sc.initial);
   sc.duration = duration;
@@ -370,6 +375,52 @@ static void check_faults(void) {
   E->free(NULL);
 }
 
+static void check_thick(void) {
+  static const struct {
+    const char *what;
+    double y[RED_NSTATE];
+  } cases[] = {
+      {"wobble", {1.2, 0.5, 2.0, -8.0, 0.3, 0.1, 0.0, 0.0}},
+      {"wobble past upright", {M_PI - 1.2, -0.5, 2.0, -8.0, 0.3, 0.1, 0.0, 0.0}},
+  };
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+    dv_scenario sc = base();
+    sc.thickness = 0.02; /* h = 0.01 m on r = 0.1 m: a puck */
+    dv_scenario_set_number(&sc, "simbody", "timestep", 5e-4, NULL);
+    CHECK(dv_engine_half_thickness(E, &sc) == 0.01, "%s: half-thickness %g", cases[c].what,
+          dv_engine_half_thickness(E, &sc));
+    run(sc, cases[c].y, 0.5);
+    run_on(&dv_engine_matched, sc, cases[c].y, 0.5, &ref);
+    double worst = 0.0, slip = 0.0;
+    for (long i = 0; i < tr.n && i < ref.n; i++) {
+      worst = fmax(worst, fabs(tr.s[i].y[RED_TH] - ref.s[i].y[RED_TH]));
+      slip = fmax(slip, tr.s[i].slip);
+    }
+    CHECK(tr.n == ref.n && tr.n > 10, "%s: %ld samples, matched %ld", cases[c].what, (long)tr.n,
+          (long)ref.n);
+    printf("thick %s: theta %.3g rad from the matched reference, corner speed %.3g m/s\n",
+           cases[c].what, worst, slip);
+    /* rk3 against the matched reference, measured (the line printed): 1.4e-9
+     * and 2.3e-8 rad at 5e-4 s, 1.1e-8 and 1.9e-7 at 1e-3 s: rk3's own third
+     * order (x8), no error of the chain's */
+    CHECK(worst < 1e-7, "%s: theta %g rad from the matched reference", cases[c].what, worst);
+    CHECK(slip < 1e-8, "%s: the rim corner moves at %g m/s", cases[c].what, slip);
+  }
+  /* tilting through upright: the corner switches sides, the run ends */
+  dv_scenario sc = base();
+  sc.thickness = 0.02;
+  dv_scenario_set_number(&sc, "simbody", "timestep", 1e-3, NULL);
+  const double y[RED_NSTATE] = {M_PI / 2 - 0.05, 3.0, 0, 0, 0, 0, 0, 0};
+  const int status = run(sc, y, 0.5);
+  run_on(&dv_engine_matched, sc, y, 0.5, &ref);
+  const double t = tr.n ? tr.s[tr.n - 1].t : -1, t_ref = ref.n ? ref.s[ref.n - 1].t : -1;
+  CHECK(status == DV_EVENT && strstr(tr.stats.detail, "crossed upright"),
+        "through upright: status %d: %s", status, tr.stats.detail);
+  /* the first step past it, as every event: within one step of the matched root */
+  CHECK(t >= t_ref && t - t_ref <= 1e-3 + 1e-12, "through upright at %g s, matched at %g s (%s)", t,
+        t_ref, ref.stats.detail);
+}
+
 int main(void) {
   CHECK(!strncmp(E->version(), "Simbody 3.", 10), "version %s", E->version());
   check_round_trip();
@@ -379,5 +430,6 @@ int main(void) {
   check_convergence();
   check_invariants();
   check_faults();
+  check_thick();
   return TEST_RESULT();
 }
