@@ -313,7 +313,8 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
       snprintf(r->stats.detail, sizeof r->stats.detail, "%.255s", e.msg);
     r->half_thickness = dv_engine_half_thickness(engines[i], sc);
     /* a stand-in thinner than the scene's body agrees about a body the scene is not */
-    if (sc->thickness > 0.0 && r->half_thickness < 0.5 * sc->thickness * (1.0 - 1e-12)) {
+    r->thinner = sc->thickness > 0.0 && r->half_thickness < 0.5 * sc->thickness * (1.0 - 1e-12);
+    if (r->thinner) {
       char what[64] = "the thin disk";
       if (r->half_thickness > 0.0)
         snprintf(what, sizeof what, "a cylinder of half-thickness %g m", r->half_thickness);

@@ -52,20 +52,21 @@ typedef struct dv_engine_result {
   char limit_why[DV_NMETRICS][112]; /* where each limit came from */
   double window_fraction;           /* of the reference's run the window covers */
   double pointwise_end;             /* s: the pointwise metrics cover the window up to here */
-  double early_err;                 /* rad: its largest theta error to early_until (run_horizon.h) */
-  double early_of[DV_NUDGE_DIRS];   /* its largest errors there, by dv_nudge_dir_names */
-  double early_until;               /* s: the scene's shortest time scale, at least output_dt */
-  double horizon;                   /* s: where early_of amplified reaches the limit (INFINITY) */
-  double horizon_gain;              /* the reference's amplification there (at the end: INFINITY) */
-  double nudge;                     /* rad: its event's theta nudge, max(early_err, the nudge) */
-  double spread[DV_NMETRICS];       /* what its early errors as nudges move each metric by */
-  dv_run_end nudged[2];             /* how those nudged reference runs ended */
-  char horizon_why[560];            /* why the horizon is where it is, in words */
-  char decided[720];                /* which part decided the verdict, and why */
-  char cause[200];                  /* an excess's cause, from attribution ("": unknown) */
-  char reference_note[200];         /* why its reference is not its own geometry's ("": it is) */
-  dv_event_verdict event;           /* its lying down against the reference's (run_event.h) */
-  char not_judged[240];             /* why the run is not judged, set by a hook ("": it is) */
+  double early_err;               /* rad: its largest theta error to early_until (run_horizon.h) */
+  double early_of[DV_NUDGE_DIRS]; /* its largest errors there, by dv_nudge_dir_names */
+  double early_until;             /* s: the scene's shortest time scale, at least output_dt */
+  double horizon;                 /* s: where early_of amplified reaches the limit (INFINITY) */
+  double horizon_gain;            /* the reference's amplification there (at the end: INFINITY) */
+  double nudge;                   /* rad: its event's theta nudge, max(early_err, the nudge) */
+  double spread[DV_NMETRICS];     /* what its early errors as nudges move each metric by */
+  dv_run_end nudged[2];           /* how those nudged reference runs ended */
+  char horizon_why[560];          /* why the horizon is where it is, in words */
+  char decided[720];              /* which part decided the verdict, and why */
+  char cause[200];                /* an excess's cause, from attribution ("": unknown) */
+  char reference_note[200];       /* why its reference is not its own geometry's ("": it is) */
+  dv_event_verdict event;         /* its lying down against the reference's (run_event.h) */
+  char not_judged[240];           /* why the run is not judged, set by a hook ("": it is) */
+  int thinner;                    /* it simulated a body thinner than the scene's (not judged) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -76,11 +77,11 @@ typedef struct dv_comparison {
   const dv_scenario *sc;
   dv_traj thin; /* the thin-disk reference */
   dv_engine_stats thin_stats;
-  double thin_wall_s;         /* wall-clock time of the thin reference's run, s */
-  double horizon_wall_s;      /* of the nudged reference runs (amplification, spreads), s */
-  double thin_valid_end;      /* where rolling stops describing the physics, s */
-  dv_amplification amp;       /* how the reference amplifies a DV_HORIZON_NUDGE (run_horizon.h) */
-  double horizon;             /* s: amp.horizon, an engine's latest (its early error >= the nudge) */
+  double thin_wall_s;    /* wall-clock time of the thin reference's run, s */
+  double horizon_wall_s; /* of the nudged reference runs (amplification, spreads), s */
+  double thin_valid_end; /* where rolling stops describing the physics, s */
+  dv_amplification amp;  /* how the reference amplifies a DV_HORIZON_NUDGE (run_horizon.h) */
+  double horizon;        /* s: amp.horizon, an engine's latest (its early error >= the nudge) */
   double spread[DV_NMETRICS]; /* what amp's nudge of the reference moves each metric by */
   double min_window;          /* s: the scene's shortest time scale (no shorter window judged) */
   size_t n;

@@ -38,8 +38,9 @@ typedef struct dv_sweep_point {
   double metric[DV_NMETRICS];         /* against the engine's reference */
   double limit[DV_NMETRICS];          /* the verdict's limits on them */
   double theta_thin;                  /* theta_max_err against the thin disk */
-  double wall_per_sim_s;              /* s per simulated s (median where repeated) */
-  int timed_runs;                     /* engine runs timed: 1, or 5 for a short run */
+  int thinner; /* not judged only for a body thinner than the scene's: theta_thin measures it */
+  double wall_per_sim_s; /* s per simulated s (median where repeated) */
+  int timed_runs;        /* engine runs timed: 1, or 5 for a short run */
   long steps;
   double sim_s;  /* simulated seconds the engine ran */
   double wall_s; /* wall seconds of its first run alone */
