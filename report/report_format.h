@@ -28,7 +28,7 @@
  *         "theta_max_err", "theta_rms_err", "path_max_err", "path_rms_err",
  *         "path_hausdorff", "energy_drift", "slip_max", "theta_extrema_err",
  *         "invariant_drift", "theta_turning_err", "nutation_period_err",
- *         "heading_period_err" (dv_metric_names):  numbers (null: not
+ *         "heading_period_err", "phase_err" (dv_metric_names):  numbers (null: not
  *                                  measurable, or infinite), against the
  *                                  geometry-matched reference (the thin disk
  *                                  for a thin or ellipsoid stand-in),

@@ -198,8 +198,8 @@ static void put_margin(FILE *fp, const cJSON *limits) {
 }
 
 static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
-  static const char *const metrics[] = {"theta_max_err", "path_max_err", "path_hausdorff",
-                                        "energy_drift"};
+  static const char *const metrics[] = {"theta_max_err", "path_max_err", "phase_err",
+                                        "path_hausdorff", "energy_drift"};
   const int ok = engine_pass(eng);
   const cJSON *f;
   fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
@@ -299,13 +299,15 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
           "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"
           "<h1>diskval suite: <span class=\"%s\">%s</span></h1>\n"
           "<p>%zu scenarios, %d engine runs, %d failing, %d harness errors. "
-          "Errors against the reference: theta in rad, path in m; energy drift relative; "
+          "Errors against the reference: theta in rad, path and phase (an arc along the "
+          "reference's contact path) in m; energy drift relative; "
           "geometry share: part of the theta error explained by the stand-in's geometry.</p>\n",
           pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL", n, runs,
           failing, errors);
   fputs(
       "<table>\n<tr><th>scenario</th><th>engine</th><th>judged</th><th>outcome</th><th>verdict</th>"
-      "<th>ran with</th><th>theta_max_err</th><th>path_max_err</th><th>path_hausdorff</th>"
+      "<th>ran with</th><th>theta_max_err</th><th>path_max_err</th><th>phase_err</th>"
+      "<th>path_hausdorff</th>"
       "<th>energy_drift</th><th>geometry share</th><th>largest margin (value / limit)</th>"
       "<th>wall_per_sim_s</th><th>what decided; failures</th></tr>\n",
       fp);

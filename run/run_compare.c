@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "red_invariants.h"
+#include "run_phase.h"
 #include "run_turning.h"
 
 int dv_run_traj_push(dv_traj *tr, const dv_sample *s) {
@@ -72,6 +73,8 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
   out->value[DV_PATH_RMS_ERR] = n ? sqrt(p_sq / n) : 0.0;
   out->value[DV_PATH_HAUSDORFF] =
       (pa && pb) ? dv_run_hausdorff((const double(*)[2])pa, n, (const double(*)[2])pb, n) : NAN;
+  out->value[DV_PHASE_ERR] =
+      (pa && pb) ? dv_run_phase_err((const double(*)[2])pa, (const double(*)[2])pb, n) : NAN;
   out->value[DV_ENERGY_DRIFT] = e_drift;
   out->value[DV_SLIP_MAX] = slip;
   out->value[DV_THETA_EXTREMA_ERR] = n ? fmax(fabs(lo[0] - lo[1]), fabs(hi[0] - hi[1])) : 0.0;

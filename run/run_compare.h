@@ -18,6 +18,9 @@
  *   theta_turning_err,             theta's turning points and the nutation period
  *   nutation_period_err,           and heading advance, cycle by cycle
  *   heading_period_err             (run_turning.h; NAN: nothing to compare)
+ *   phase_err                      how far along the reference's contact path
+ *                                  the engine's contact point is, as an arc
+ *                                  length at equal times (run_phase.h, m)
  */
 #ifndef DV_COMPARE_H
 #define DV_COMPARE_H

@@ -39,7 +39,7 @@ static void add_failure(dv_engine_result *r, const char *fmt, ...) {
 
 int dv_run_metric_pointwise(dv_metric_id metric) {
   return metric == DV_THETA_MAX_ERR || metric == DV_THETA_RMS_ERR || metric == DV_PATH_MAX_ERR ||
-         metric == DV_PATH_RMS_ERR;
+         metric == DV_PATH_RMS_ERR || metric == DV_PHASE_ERR;
 }
 
 /* the engine's largest error in each nudged direction against ref over its

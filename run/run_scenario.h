@@ -6,7 +6,7 @@
  * case, with the thin disk. The compared window ends where the reference
  * ends (its event or validity limit). Every metric has a limit
  * (run_limits.h). The pointwise metrics (theta_max_err, theta_rms_err,
- * path_max_err, path_rms_err) cover the window up to the engine's horizon:
+ * path_max_err, path_rms_err, phase_err) cover the window up to the engine's horizon:
  * where its early error, amplified as the reference amplifies a nudge,
  * reaches the theta limit (run_horizon.h); the timing-insensitive ones
  * (path_hausdorff, theta_extrema_err, energy_drift, invariant_drift,

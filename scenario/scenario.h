@@ -61,6 +61,7 @@ typedef enum dv_metric_id {
   DV_THETA_TURNING_ERR, /* theta at the k-th maximum and minimum, each against the reference's */
   DV_NUTATION_PERIOD_ERR, /* the k-th nutation period against the reference's, s */
   DV_HEADING_PERIOD_ERR,  /* the heading advance over the k-th period against the reference's */
+  DV_PHASE_ERR,           /* how far along the reference's contact path the engine's contact is */
   DV_NMETRICS
 } dv_metric_id;
 

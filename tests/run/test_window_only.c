@@ -62,7 +62,8 @@ int main(int argc, char **argv) {
          all.value[DV_ENERGY_DRIFT], all.value[DV_SLIP_MAX], all.value[DV_THETA_EXTREMA_ERR], f_all);
   CHECK(fabs(w.t_window - T_WINDOW) < 1e-9, "window ends at %g s", w.t_window);
   static const dv_metric_id zero[] = {DV_THETA_MAX_ERR, DV_THETA_RMS_ERR,  DV_PATH_MAX_ERR,
-                                      DV_PATH_RMS_ERR,  DV_PATH_HAUSDORFF, DV_THETA_EXTREMA_ERR};
+                                      DV_PATH_RMS_ERR,  DV_PATH_HAUSDORFF, DV_THETA_EXTREMA_ERR,
+                                      DV_PHASE_ERR};
   for (size_t i = 0; i < sizeof zero / sizeof zero[0]; i++) {
     CHECK(w.value[zero[i]] == 0.0, "%s over the window: %g", dv_metric_names[zero[i]],
           w.value[zero[i]]);
