@@ -316,7 +316,7 @@ static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n,
     if (es[i].error[0]) {
       fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
       dv_report_escape_put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
-      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"8\"></td><td>",
+      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"10\"></td><td>",
                            es[i].error, 0, "</td></tr>\n");
     }
     cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);
