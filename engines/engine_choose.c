@@ -31,6 +31,7 @@ typedef struct probe {
   double horizon;              /* s: the duration, or where the reference ended (an event) */
   double theta[DV_CHOOSE_SAMPLES];
   double xy[DV_CHOOSE_SAMPLES][2];
+  double valid;  /* s: where the reference leaves the friction cone (INFINITY: never) */
   double rolled; /* m, projected over the horizon */
   double theta_target, path_target;
 } probe;
@@ -180,9 +181,15 @@ static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type
   /* a reference that ends inside the window (an event), or stops describing
    * the physics (its validity window), ends what is compared there */
   const double valid = pr->n ? dv_reference_valid_until(sc, ref, (size_t)pr->n) : 0.0;
+  const int reached = pr->n;
+  pr->valid = valid;
   int ended = pr->n < pr->ns;
-  while (pr->n > 0 && pr->t[pr->n - 1] > valid) pr->n--, ended = 1;
-  if (pr->n < 8) return -1; /* nothing to measure against */
+  /* an event's sample (the matched reference at its friction limit) is off
+   * the grid: the engine's sample at the grid time is not comparable with it */
+  while (pr->n > 0 && (pr->t[pr->n - 1] > valid ||
+                       fabs(ref[pr->n - 1].t - pr->t[pr->n - 1]) > 1e-9 * pr->t[pr->n - 1]))
+    pr->n--, ended = 1;
+  if (pr->n < 8) return reached >= 8 ? -3 : -1; /* nothing to measure against */
   pr->horizon = ended ? pr->t[pr->n - 1] : sc->duration;
   double rolled = 0.0;
   for (int i = 1; i < pr->n; i++)
@@ -271,6 +278,7 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   if (!fallback) fallback = &c[0];
   probe pr;
   const char *no_probe = NULL;
+  char left[160];
   int status;
   /* the shape may be derived after the step (a [disk] thickness): ask for it.
    * The cylinder of [disk] thickness is judged against the matched reference,
@@ -293,7 +301,13 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
     no_probe = "nothing left to choose";
   else if ((status = probe_reference(sc, ref, &pr)) == -2)
     no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
-  else if (status)
+  else if (status == -3) {
+    snprintf(left, sizeof left,
+             "the reference leaves its validity window, the friction cone of mu %g, at t = %g "
+             "s: too soon to measure",
+             dv_matched_settings_of(sc)->friction, pr.valid);
+    no_probe = left;
+  } else if (status)
     no_probe = "the reference does not run through the probe";
   char model[DV_DERIVED_BYTES];
   if (no_probe && n < 2) { /* one candidate: the model's settings, as it gives its reason */
