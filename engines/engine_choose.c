@@ -152,7 +152,8 @@ static void probe_candidate(const dv_scenario *sc, const dv_engine_type *engine,
 }
 
 /* the reference's samples over the window, and the target over the duration */
-static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type, probe *pr) {
+static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type, double half,
+                           probe *pr) {
   dv_scene_scales s;
   dv_engine_scene_scales(sc, &s);
   double t = s.t[DV_SCALE_FALL];
@@ -176,6 +177,9 @@ static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type
   *copy = *sc;
   copy->duration = pr->window;
   dv_sample ref[DV_CHOOSE_SAMPLES];
+  /* the matched reference of the engine's half-thickness, as compare runs it */
+  if (half > 0.0 && dv_scenario_set_number(copy, ref_type->name, "half_thickness", half, NULL))
+    return free(copy), -1;
   pr->n = run_samples(ref_type, copy, pr, pr->theta, pr->xy, ref);
   free(copy);
   /* a reference that ends inside the window (an event), or stops describing
@@ -281,25 +285,19 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   char left[160];
   int status;
   /* the shape may be derived after the step (a [disk] thickness): ask for it.
-   * The cylinder of [disk] thickness is judged against the matched reference,
-   * and probed against it; a shape given for a thin disk is a stand-in */
-  const dv_engine_contact *ct = engine->contact;
-  const int shape_given = ct && (dv_scenario_is_given(sc, engine->name, ct->geom_key) ||
-                                 dv_scenario_is_given(sc, engine->name, "half_thickness"));
-  /* an engine that models the thin disk whatever the scene (Bullet) is judged,
-   * and so probed, against the thin reference */
-  const dv_engine_type *ref = dv_engine_of_role(
-      sc->thickness > 0.0 && !shape_given && dv_engine_half_thickness(engine, sc) > 0.0
-          ? DV_ENGINE_MATCHED_REFERENCE
-          : DV_ENGINE_THIN_REFERENCE);
+   * A cylinder, of [disk] thickness or given, is judged against the matched
+   * reference of its half-thickness, and probed against it; an engine that
+   * models the thin disk (Bullet) against the thin reference */
+  const double half = dv_engine_half_thickness(engine, sc);
+  const dv_engine_type *ref =
+      dv_engine_of_role(half > 0.0 ? DV_ENGINE_MATCHED_REFERENCE : DV_ENGINE_THIN_REFERENCE);
   if (!runs)
     no_probe = "the engine is not among those run";
-  else if (ref->role == DV_ENGINE_THIN_REFERENCE &&
-      (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0))
-    no_probe = "a stand-in shape, whose reference is not the thin disk";
+  else if (ref->role == DV_ENGINE_THIN_REFERENCE && dv_engine_stand_in(engine, sc))
+    no_probe = "a stand-in shape no reference models";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
-  else if ((status = probe_reference(sc, ref, &pr)) == -2)
+  else if ((status = probe_reference(sc, ref, half, &pr)) == -2)
     no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
   else if (status == -3) {
     snprintf(left, sizeof left,

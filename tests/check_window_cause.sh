@@ -8,7 +8,8 @@
 #     flat after the reference's end), no "geometry" cause (both simulate the
 #     scene's own cylinder), and their settings were chosen by a probe that
 #     met its target (the matched reference's event sample, off the probe's
-#     grid, had made every candidate miss by 113x);
+#     grid, had made every candidate miss by 113x), a cylinder given as one
+#     derived;
 #   - EULER (a thick Euler disk outside the friction cone from t = 0): the
 #     compared window is empty, so report.json has no vs-thin numbers and no
 #     geometry share, the verdict is "outside validity" (exit 1), the settings
@@ -41,6 +42,13 @@ for e in mujoco ode; do
 done
 check '! grep -q "cause: geometry" "$work/fall.out"' \
   "the thick fall: a geometry cause for engines that simulate the scene's cylinder"
+# a cylinder given (not derived from [disk] thickness) is judged against the
+# matched reference of its half-thickness, and so probed against it
+"$dv" compare "$fall" --engines ode --set engines.ode.geom=cylinder --out "$work/given" \
+  --quiet >/dev/null 2>&1
+why=$(jq -r .engines.ode.settings_why "$work/given/falling_thick/report.json")
+check '[[ "$why" == *"the cheapest candidate that meets the target"* ]]' \
+  "the thick fall, its cylinder given: ode's settings not probed: $why"
 
 "$dv" compare "$euler" --engines mujoco --out "$work/euler" --quiet >"$work/euler.out" 2>&1
 code=$?
