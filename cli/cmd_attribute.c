@@ -25,7 +25,12 @@ static const char HELP[] =
     "to each other value, the step to a quarter, a stiffer contact, 10x friction, a\n"
     "stand-in to the thin disk) and the cause is the knob whose change removes the\n"
     "error (every metric over its limit within it; none over: theta halved).\n"
-    "A run that fails in any probe is an error (exit 2), not a zero share.\n";
+    "An engine that simulates the scene's cylinder ([disk] thickness) is measured\n"
+    "against its own reference, in its own shape, and has no geometry share.\n"
+    "A run that fails in any probe is an error (exit 2), not a zero share; a\n"
+    "scenario whose run measures nothing (its compared window is too short, e.g.\n"
+    "outside the friction cone from the start) is \"not measured\", no share and no\n"
+    "cause (exit 1).\n";
 
 /* each knob changed alone, and the cause: the one whose change removes the error */
 static void print_knobs(const dv_attribution *at) {
@@ -34,8 +39,9 @@ static void print_knobs(const dv_attribution *at) {
     if (at->judged >> m & 1u)
       printf("over its limit: %s = %.4g > %.4g\n", dv_metric_names[m], at->base[m], at->limit[m]);
   printf("%-17s %-28s %10s  %s\n", "knob", "change", "worst",
-         at->judged ? "(value / limit over the metrics over their limits)"
-                    : "(theta against the thin disk / the scenario's)");
+         at->judged          ? "(value / limit over the metrics over their limits)"
+         : at->own_reference ? "(theta against its own reference / the scenario's)"
+                             : "(theta against the thin disk / the scenario's)");
   for (size_t i = 0; i < at->nknobs; i++)
     printf("%-17s %-28s %10.3g  %s\n", at->knobs[i].knob, at->knobs[i].change, at->knobs[i].worst,
            at->knobs[i].removes ? "removes it" : "");
@@ -46,7 +52,9 @@ static void print_knobs(const dv_attribution *at) {
 /* the table of shares */
 static void print_attribution(const char *engine, const dv_attribution *at) {
   const double e = at->e.stand_in;
-  printf("%s: max theta error against the thin disk %.3e rad\n", engine, e);
+  const char *against =
+      at->own_reference ? "its own reference (the matched cylinder)" : "the thin disk";
+  printf("%s: max theta error against %s %.3e rad\n", engine, against, e);
   printf("%-10s %12s %8s  %s\n", "factor", "theta (rad)", "share", "method");
   const struct {
     const char *name;
@@ -54,10 +62,11 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
     const char *how;
   } rows[] = {
       {"geometry", at->has_stand_in ? at->geometry : NAN,
-       !at->has_stand_in  ? "n/a: the scenario uses the exact thin disk, no stand-in"
-       : at->geometry < 0 ? "stand-in against the exact thin disk; negative: its geometry "
-                            "cancels part of the engine's other error"
-                          : "stand-in against the exact thin disk"},
+       at->own_reference   ? "n/a: the engine simulates the scene's own cylinder, no stand-in"
+       : !at->has_stand_in ? "n/a: the scenario uses the exact thin disk, no stand-in"
+       : at->geometry < 0  ? "stand-in against the exact thin disk; negative: its geometry "
+                             "cancels part of the engine's other error"
+                           : "stand-in against the exact thin disk"},
       {"time", at->time,
        isnan(at->order) ? "errors flat over dt, dt/2, dt/4: none"
                         : "Richardson over dt, dt/2, dt/4"},
@@ -70,8 +79,9 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
     else
       printf("%-10s %12.3e %7.1f%%  %s\n", rows[i].name, rows[i].v,
              e > 0 ? 100.0 * rows[i].v / e : 0.0, rows[i].how);
-  printf("(thin disk: %.3e at dt %g, %.3e at dt/2, %.3e at dt/4; ", at->e.dt[0], at->timestep,
-         at->e.dt[1], at->e.dt[2]);
+  printf("(%s: %.3e at dt %g, %.3e at dt/2, %.3e at dt/4; ",
+         at->own_reference ? "its own shape" : "thin disk", at->e.dt[0], at->timestep, at->e.dt[1],
+         at->e.dt[2]);
   if (isnan(at->order))
     printf("no order: the errors do not fall with the step; ");
   else
@@ -101,7 +111,11 @@ int dv_cli_attribute(int argc, char **argv) {
     code = dv_cli_error("attribute", "%s", err.msg);
   else if (dv_search_attribute(&sc, engine, &at, &err))
     code = dv_cli_error("attribute", "%s", err.msg);
-  else
+  else if (at.not_measured[0]) { /* nothing to split: never a table of zeros, never a pass */
+    printf("%s: not measured: %s\nno share, no cause: nothing was measured\n", engine,
+           at.not_measured);
+    code = DV_EXIT_FAIL;
+  } else
     print_attribution(engine, &at);
   dv_cli_args_free(&cmd, &a);
   return code;

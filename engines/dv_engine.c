@@ -54,6 +54,13 @@ int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {
   return shape && strcmp(shape, k->thin_choice) != 0;
 }
 
+int dv_engine_own_body(const dv_engine_type *engine, const dv_scenario *sc) {
+  if (!engine->contact) return 1;
+  if (!(sc->thickness > 0.0)) return !dv_engine_stand_in(engine, sc);
+  const double h = dv_engine_half_thickness(engine, sc);
+  return fabs(h - 0.5 * sc->thickness) <= 1e-12 * sc->thickness;
+}
+
 void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, char *buf,
                           size_t size) {
   const dv_engine_search *se = engine->search;

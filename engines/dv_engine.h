@@ -164,6 +164,10 @@ void dv_engine_lay_down(dv_engine_stats *stats, int lower, double theta_limit, d
 /* does engine simulate a stand-in shape in sc, not the exact thin disk (0 for references) */
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc);
 
+/* does engine simulate the scene's own body in sc: the thin disk where [disk]
+ * thickness is 0, else the cylinder of that thickness (1 for references) */
+int dv_engine_own_body(const dv_engine_type *engine, const dv_scenario *sc);
+
 /* the knobs of engine that decide its answer, as they ran in sc: "integrator
  * implicit, timestep 8e-06 s, solref_timeconst 1.6e-05 s, geom thin" ("" for
  * an engine with none) */

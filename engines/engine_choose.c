@@ -31,6 +31,7 @@ typedef struct probe {
   double horizon;              /* s: the duration, or where the reference ended (an event) */
   double theta[DV_CHOOSE_SAMPLES];
   double xy[DV_CHOOSE_SAMPLES][2];
+  double valid;  /* s: where the reference leaves the friction cone (INFINITY: never) */
   double rolled; /* m, projected over the horizon */
   double theta_target, path_target;
 } probe;
@@ -151,7 +152,8 @@ static void probe_candidate(const dv_scenario *sc, const dv_engine_type *engine,
 }
 
 /* the reference's samples over the window, and the target over the duration */
-static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type, probe *pr) {
+static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type, double half,
+                           probe *pr) {
   dv_scene_scales s;
   dv_engine_scene_scales(sc, &s);
   double t = s.t[DV_SCALE_FALL];
@@ -175,14 +177,23 @@ static int probe_reference(const dv_scenario *sc, const dv_engine_type *ref_type
   *copy = *sc;
   copy->duration = pr->window;
   dv_sample ref[DV_CHOOSE_SAMPLES];
+  /* the matched reference of the engine's half-thickness, as compare runs it */
+  if (half > 0.0 && dv_scenario_set_number(copy, ref_type->name, "half_thickness", half, NULL))
+    return free(copy), -1;
   pr->n = run_samples(ref_type, copy, pr, pr->theta, pr->xy, ref);
   free(copy);
   /* a reference that ends inside the window (an event), or stops describing
    * the physics (its validity window), ends what is compared there */
   const double valid = pr->n ? dv_reference_valid_until(sc, ref, (size_t)pr->n) : 0.0;
+  const int reached = pr->n;
+  pr->valid = valid;
   int ended = pr->n < pr->ns;
-  while (pr->n > 0 && pr->t[pr->n - 1] > valid) pr->n--, ended = 1;
-  if (pr->n < 8) return -1; /* nothing to measure against */
+  /* an event's sample (the matched reference at its friction limit) is off
+   * the grid: the engine's sample at the grid time is not comparable with it */
+  while (pr->n > 0 && (pr->t[pr->n - 1] > valid ||
+                       fabs(ref[pr->n - 1].t - pr->t[pr->n - 1]) > 1e-9 * pr->t[pr->n - 1]))
+    pr->n--, ended = 1;
+  if (pr->n < 8) return reached >= 8 ? -3 : -1; /* nothing to measure against */
   pr->horizon = ended ? pr->t[pr->n - 1] : sc->duration;
   double rolled = 0.0;
   for (int i = 1; i < pr->n; i++)
@@ -271,29 +282,30 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   if (!fallback) fallback = &c[0];
   probe pr;
   const char *no_probe = NULL;
+  char left[160];
   int status;
   /* the shape may be derived after the step (a [disk] thickness): ask for it.
-   * The cylinder of [disk] thickness is judged against the matched reference,
-   * and probed against it; a shape given for a thin disk is a stand-in */
-  const dv_engine_contact *ct = engine->contact;
-  const int shape_given = ct && (dv_scenario_is_given(sc, engine->name, ct->geom_key) ||
-                                 dv_scenario_is_given(sc, engine->name, "half_thickness"));
-  /* an engine that models the thin disk whatever the scene (Bullet) is judged,
-   * and so probed, against the thin reference */
-  const dv_engine_type *ref = dv_engine_of_role(
-      sc->thickness > 0.0 && !shape_given && dv_engine_half_thickness(engine, sc) > 0.0
-          ? DV_ENGINE_MATCHED_REFERENCE
-          : DV_ENGINE_THIN_REFERENCE);
+   * A cylinder, of [disk] thickness or given, is judged against the matched
+   * reference of its half-thickness, and probed against it; an engine that
+   * models the thin disk (Bullet) against the thin reference */
+  const double half = dv_engine_half_thickness(engine, sc);
+  const dv_engine_type *ref =
+      dv_engine_of_role(half > 0.0 ? DV_ENGINE_MATCHED_REFERENCE : DV_ENGINE_THIN_REFERENCE);
   if (!runs)
     no_probe = "the engine is not among those run";
-  else if (ref->role == DV_ENGINE_THIN_REFERENCE &&
-      (dv_engine_stand_in(engine, sc) || dv_engine_half_thickness(engine, sc) > 0.0))
-    no_probe = "a stand-in shape, whose reference is not the thin disk";
+  else if (ref->role == DV_ENGINE_THIN_REFERENCE && dv_engine_stand_in(engine, sc))
+    no_probe = "a stand-in shape no reference models";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
-  else if ((status = probe_reference(sc, ref, &pr)) == -2)
+  else if ((status = probe_reference(sc, ref, half, &pr)) == -2)
     no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
-  else if (status)
+  else if (status == -3) {
+    snprintf(left, sizeof left,
+             "the reference leaves its validity window, the friction cone of mu %g, at t = %g "
+             "s: too soon to measure",
+             dv_matched_settings_of(sc)->friction, pr.valid);
+    no_probe = left;
+  } else if (status)
     no_probe = "the reference does not run through the probe";
   char model[DV_DERIVED_BYTES];
   if (no_probe && n < 2) { /* one candidate: the model's settings, as it gives its reason */

@@ -31,8 +31,11 @@
  * cap (DV_SCENE_WALL_PER_SIM counted seconds per simulated second and
  * DV_SCENE_WALL_PER_RUN a run, the model's own step always allowed) are not
  * run; where none meets the target, the one with the smallest margin runs and
- * the reason says so. A scene the probe cannot judge (a stand-in shape, whose
- * reference is not the thin disk; a reference or engine that cannot run; a
+ * the reason says so. A cylinder (of [disk] thickness or given) is probed
+ * against the matched reference of its half-thickness, as compare judges it;
+ * its event's sample, off the grid, is not compared. A scene the probe cannot
+ * judge (a stand-in no reference models; a reference or engine that cannot
+ * run, or leaves the friction cone before 8 samples; a
  * duration over DV_CHOOSE_SHARE longest windows, too far to project)
  * keeps the model's step and the choice key's default. The probe is
  * deterministic (the same input gives the same choice) and remembered per

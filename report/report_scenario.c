@@ -60,6 +60,11 @@ static cJSON *geometry_share_json(const dv_comparison *c, const dv_engine_result
   else if (thin_ref)
     snprintf(why, sizeof why, "n/a: %s simulates the exact thin disk, no stand-in",
              r->engine->name);
+  else if (isnan(r->vs_ref.value[DV_THETA_MAX_ERR]) || isnan(r->vs_thin.value[DV_THETA_MAX_ERR]))
+    snprintf(why, sizeof why,
+             "n/a: the comparison with %s measured nothing (its window ends at t = %g s)",
+             isnan(r->vs_ref.value[DV_THETA_MAX_ERR]) ? "its own reference" : "the thin disk",
+             isnan(r->vs_ref.value[DV_THETA_MAX_ERR]) ? r->vs_ref.t_window : r->vs_thin.t_window);
   const double window =
       why[0] ? NAN : fmin(fmin(r->vs_ref.t_window, r->vs_thin.t_window), r->pointwise_end);
   dv_metrics own = {{0}, 0, 0.0}, thin = own;

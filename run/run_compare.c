@@ -58,15 +58,24 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
       pb[i][1] = b->contact[1];
     }
   }
-  /* extrema over each run to t_end, whatever its timing: a fall that comes later counts */
+  /* extrema over each run to the window's end, whatever its timing (a fall
+   * that comes later counts); never past the reference's end: there nothing
+   * says what the engine should do */
+  const double t_last = ref->n ? fmin(t_end, ref->s[ref->n - 1].t + 1e-9) : -INFINITY;
   const dv_traj *runs[2] = {e, ref};
   for (int k = 0; k < 2; k++)
-    for (size_t i = 0; i < runs[k]->n && runs[k]->s[i].t <= t_end; i++) {
+    for (size_t i = 0; i < runs[k]->n && runs[k]->s[i].t <= t_last; i++) {
       lo[k] = fmin(lo[k], runs[k]->s[i].y[RED_TH]);
       hi[k] = fmax(hi[k], runs[k]->s[i].y[RED_TH]);
     }
   out->n_window = n;
   out->t_window = n ? e->s[n - 1].t : 0.0;
+  if (n < 2) { /* nothing compared past the shared start: measured nothing, not zero */
+    for (int m = 0; m < DV_NMETRICS; m++) out->value[m] = NAN;
+    free(pa);
+    free(pb);
+    return;
+  }
   out->value[DV_THETA_MAX_ERR] = th_max;
   out->value[DV_THETA_RMS_ERR] = n ? sqrt(th_sq / n) : 0.0;
   out->value[DV_PATH_MAX_ERR] = p_max;

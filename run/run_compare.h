@@ -2,7 +2,9 @@
  *
  * Metrics of an engine against a reference, over the compared window: the
  * samples both have at equal times, up to the reference's end (its event or
- * validity limit) and the engine's.
+ * validity limit) and the engine's. No metric reads a sample past t_end or
+ * the reference's last; a window of fewer than 2 samples (the shared start
+ * alone) measured nothing: every metric NAN.
  *   theta_max_err, theta_rms_err   |theta - theta_ref| (rad)
  *   path_max_err, path_rms_err     |contact - contact_ref| at equal times (m)
  *   path_hausdorff                 Hausdorff distance between the two contact
@@ -11,7 +13,9 @@
  *   slip_max                       largest slip speed of the engine (m/s)
  *   theta_extrema_err              the larger of |min theta - min theta_ref| and
  *                                  |max theta - max theta_ref| (rad), each over its
- *                                  own run to the window's end: timing-insensitive
+ *                                  own run to the window's end (t_end, and never
+ *                                  past the reference's last sample):
+ *                                  timing-insensitive
  *   invariant_drift                max |f_i(t) - f_i(0)| of the engine's own states
  *                                  over the momentum scale sqrt(2 E0 (A + m r^2))
  *                                  (dv_run_invariant_drift; NAN from dv_run_compare)

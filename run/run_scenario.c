@@ -22,6 +22,16 @@ static int crossed_upright(const dv_traj *tr, const dv_engine_stats *st) {
          fabs(cos(tr->s[tr->n - 1].y[RED_TH])) < 1e-9;
 }
 
+/* where the matched run leaves the friction cone: its events end it where it
+ * crosses the cone's edge, but a start outside the cone crosses nothing
+ * (INFINITY: it never leaves) */
+static double matched_valid_end(const dv_scenario *sc, const dv_traj *tr,
+                                const dv_engine_stats *st) {
+  size_t n = tr->n;
+  if (st->outcome == DV_OUTCOME_EVENT && n > 0) n--; /* its event's sample is on the edge */
+  return dv_reference_valid_until(sc, tr->s, n);
+}
+
 double dv_run_cost_rate(double wall_s, double sim_s, double output_dt) {
   return sim_s >= output_dt && sim_s > 0.0 ? wall_s / sim_s : NAN;
 }
@@ -131,14 +141,13 @@ static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
 }
 
 /* a window too short to judge: why into why, 0 when it is long enough */
-static int window_too_short(const dv_comparison *c, const dv_engine_result *r, double t0,
-                            double lay_down, char *why, size_t size) {
-  const double span = r->vs_ref.t_window - t0;
+static int window_too_short(const dv_comparison *c, const dv_metrics *w, double t0, double lay_down,
+                            char *why, size_t size) {
+  const double span = w->t_window - t0;
   /* a reference that lies down sooner has shown the whole motion: the fall itself */
   const double need = fmin(c->min_window, DV_MIN_WINDOW_FRACTION * (lay_down - t0));
-  if (r->vs_ref.n_window < DV_MIN_WINDOW_SAMPLES)
-    snprintf(why, size, "%zu samples, at least %d needed", r->vs_ref.n_window,
-             DV_MIN_WINDOW_SAMPLES);
+  if (w->n_window < DV_MIN_WINDOW_SAMPLES)
+    snprintf(why, size, "%zu samples, at least %d needed", w->n_window, DV_MIN_WINDOW_SAMPLES);
   else if (span < need)
     snprintf(why, size, "%g s, shorter than the scene's shortest time scale %g s", span,
              c->min_window);
@@ -224,7 +233,8 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 validity ? "the contact force rolling needs leaves the friction cone there"
                          : "the engine or the reference ended there");
   } else if (r->verdict == DV_VERDICT_AGREES &&
-             window_too_short(c, r, t0, ref_st->lay_down ? t_run : INFINITY, why, sizeof why)) {
+             window_too_short(c, &r->vs_ref, t0, ref_st->lay_down ? t_run : INFINITY, why,
+                              sizeof why)) {
     r->verdict = DV_VERDICT_NOT_JUDGED;
     add_failure(r, "%s: %s: not judged: the compared window, to t = %g s, is too short: %s",
                 sc->name, name, r->vs_ref.t_window, why);
@@ -338,7 +348,7 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
         return reference_failed(status, what, err);
       }
       ref = &r->matched;
-      ref_end = INFINITY; /* the matched reference ends at its own validity limit */
+      ref_end = matched_valid_end(&match, &r->matched, &r->matched_stats);
       if (crossed_upright(&r->matched, &r->matched_stats)) {
         /* a thick disk at upright switches rim corners: neither model holds;
          * the thin disk is the nearer description */
@@ -354,10 +364,18 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
       }
     }
     dv_run_compare(&r->traj, &c->thin, c->thin_valid_end, &r->vs_thin);
-    if (ref == &c->thin) /* the same comparison: its Hausdorff distance is O(n^2) */
+    if (ref == &c->thin) { /* the same comparison: its Hausdorff distance is O(n^2) */
       r->vs_ref = r->vs_thin;
-    else
+    } else {
       dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
+      /* beside the judged comparison, the thin disk's too short to judge measured nothing */
+      const double t0 = c->thin.n ? c->thin.s[0].t : 0.0;
+      const double t_thin = c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0;
+      char why[160];
+      if (window_too_short(c, &r->vs_thin, t0, c->thin_stats.lay_down ? t_thin : INFINITY, why,
+                           sizeof why))
+        for (int m = 0; m < DV_NMETRICS; m++) r->vs_thin.value[m] = NAN;
+    }
     find_horizon(c, ref, r);
     { /* its own nudges: the spread and the lying down they allow */
       const double t_spread = dv_clock_now();
@@ -367,8 +385,10 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
       if (status < 0) return status;
     }
     pointwise_to_horizon(&r->traj, ref, ref_end, r);
-    r->vs_ref.value[DV_INVARIANT_DRIFT] = r->vs_thin.value[DV_INVARIANT_DRIFT] =
+    r->vs_ref.value[DV_INVARIANT_DRIFT] =
         dv_run_invariant_drift(&sc->disk, &r->traj, r->vs_ref.t_window);
+    if (!isnan(r->vs_thin.value[DV_THETA_MAX_ERR])) /* NaN: the thin disk's measured nothing */
+      r->vs_thin.value[DV_INVARIANT_DRIFT] = r->vs_ref.value[DV_INVARIANT_DRIFT];
     dv_limit limits[DV_NMETRICS];
     dv_run_limits(sc, engines[i]->name, ref, r->vs_ref.t_window, limits);
     for (int m = 0; m < DV_NMETRICS; m++) {

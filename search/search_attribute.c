@@ -52,6 +52,22 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   return DV_OK;
 }
 
+/* the scenario's own run: its error e against pr's reference (NAN where it
+ * failed: dv_search_probe_theta says how), or why it measures nothing */
+static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t size, dv_error *err) {
+  dv_sweep_point p;
+  why[0] = '\0';
+  if (dv_search_sweep_probe(pr->sc, pr->engine->name, NULL, 0, &p, err)) return DV_EINPUT;
+  *e = !p.ok ? NAN : pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
+  if (p.ok && isnan(*e))
+    snprintf(why, size, "%s against %s: %.270s", dv_run_verdict_name(p.verdict),
+             pr->own_reference ? "its own reference" : "the thin disk",
+             p.detail[0] ? p.detail : "its compared window is too short to measure");
+  else if (!p.ok && p.verdict == DV_VERDICT_NOT_JUDGED)
+    snprintf(why, size, "%.300s", p.detail);
+  return DV_OK;
+}
+
 int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
                         dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
@@ -64,10 +80,14 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   const double dt = dv_scenario_get(scenario, name, engine->search->step_key);
   const double soft = dv_scenario_get(scenario, name, k->softness_key);
   const double friction = dv_scenario_get(scenario, name, k->friction_key);
-  const int stand_in = dv_engine_stand_in(engine, scenario);
+  /* an engine that simulates the scene's cylinder is measured against its own
+   * reference, in its own shape: the thin disk is not its body */
+  const int own = scenario->thickness > 0.0 && dv_engine_own_body(engine, scenario);
+  const int stand_in = dv_engine_stand_in(engine, scenario) && !own;
   char thin[128], steps[4][128], softs[4][128], stiff[128], rough[128];
   snprintf(thin, sizeof thin, "engines.%s.%s=%s", name, k->geom_key, k->thin_choice);
-  for (int i = 0; i < 4; i++) { /* dt, dt/2, dt/4, dt/8 */
+  const char *shape = own ? NULL : thin; /* the probes' shape: the thin disk, or its own */
+  for (int i = 0; i < 4; i++) {          /* dt, dt/2, dt/4, dt/8 */
     const double h = dt / (1 << i);
     snprintf(steps[i], sizeof steps[i], "engines.%s.%s=%.9g", name, engine->search->step_key, h);
     snprintf(softs[i], sizeof softs[i], "engines.%s.%s=%.9g", name, k->softness_key,
@@ -79,10 +99,23 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const dv_prober pr = {scenario, engine, 0};
+  const dv_prober pr = {scenario, engine, own};
   dv_attribution_errors e;
+  memset(out, 0, sizeof *out);
+  out->own_reference = own;
+  out->cause = -1;
+  out->timestep = dt;
   const double began = dv_clock_now();
-  int status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
+  int status = measures_nothing(&pr, &e.stand_in, out->not_measured, sizeof out->not_measured, err);
+  if (status || out->not_measured[0]) { /* nothing to split, no knob to judge by */
+    for (int m = 0; m < DV_NMETRICS; m++) out->base[m] = out->limit[m] = NAN;
+    out->e = (dv_attribution_errors){NAN, NAN, {NAN, NAN, NAN}, NAN};
+    out->geometry = out->time = out->contact = out->rest = out->order = NAN;
+    out->base_theta_thin = NAN;
+    return status;
+  }
+  if (isnan(e.stand_in)) /* its run failed: the error names it */
+    status = dv_search_probe_theta(&pr, &e.stand_in, err, NULL, NULL, NULL, NULL);
   /* the split's runs (the thin disk, three steps, the stiff one), then the knobs' */
   const double runs =
       1.0 + 7.0 + (double)(1 << f) + dv_search_attribute_knobs_cost(scenario, engine);
@@ -91,13 +124,13 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
            runs);
   snprintf(basis, sizeof basis, "its own run took %.3g s", dv_clock_now() - began);
   if (!status) dv_run_progress_announce(what, runs * (dv_clock_now() - began), basis);
-  if (!status) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
+  e.thin = e.stand_in;
+  if (!status && !own) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
   for (int i = 0; !status && i < 3; i++)
     status =
-        dv_search_probe_theta(&pr, &e.dt[i], err, thin, steps[i], follows ? softs[i] : NULL, NULL);
-  if (!status) status = dv_search_probe_theta(&pr, &e.stiff, err, thin, steps[f], stiff, rough);
+        dv_search_probe_theta(&pr, &e.dt[i], err, shape, steps[i], follows ? softs[i] : NULL, NULL);
+  if (!status) status = dv_search_probe_theta(&pr, &e.stiff, err, shape, steps[f], stiff, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
-  out->timestep = dt;
   return dv_search_attribute_knobs(scenario, engine_name, out, err);
 }

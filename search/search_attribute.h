@@ -42,7 +42,7 @@ typedef struct dv_knob_probe {
   const char *knob; /* "integrator", "timestep", "contact softness", "friction", "geometry" */
   char change[64];  /* "rk4 -> implicit", "5e-05 -> 1.25e-05 s" */
   double metric[DV_NMETRICS]; /* against the engine's reference; NAN where the run failed */
-  double theta_thin;          /* theta_max_err against the thin disk */
+  double theta_thin;          /* theta_max_err against the thin disk (own_reference: its own) */
   double worst;               /* over the metrics judged: value / limit (or / the base's) */
   int ok;                     /* the run ran through its window */
   int removes;                /* every metric judged is within its limit (or halved) */
@@ -62,6 +62,10 @@ typedef struct dv_attribution {
   int has_stand_in; /* the scenario's geometry is not the thin disk */
   double geometry, time, contact, rest; /* rad; they add up to e.stand_in */
   double order;                         /* observed order of the time error; NAN: flat */
+  /* measured against the engine's own reference (the matched one: it simulates
+   * the scene's cylinder), not the thin disk; the probes keep its shape */
+  int own_reference;
+  char not_measured[320]; /* "": measured; else why the scenario's run measured nothing */
 } dv_attribution;
 
 /* a scenario and an engine to probe with overrides */
@@ -100,7 +104,9 @@ int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, 
                               dv_error *err);
 
 /* probe the engine on the scenario, split its error and try every knob; a probe that fails
- * (diverges, cannot run the scenario) is an error naming it */
+ * (diverges, cannot run the scenario) is an error naming it. A scenario whose
+ * run measures nothing (a compared window of zero length or too short to
+ * judge) is DV_OK with not_measured saying why: no share, no knob, no cause */
 struct dv_scenario;
 int dv_search_attribute(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
                         dv_error *err);

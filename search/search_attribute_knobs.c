@@ -23,11 +23,11 @@
 
 /* run sc with over[0..n) and keep what attribution compares; 0, or < 0 (err) */
 static int run_knob(const dv_scenario *sc, const char *engine, const char *const *over, size_t n,
-                    dv_knob_probe *k, dv_error *err) {
+                    int own, dv_knob_probe *k, dv_error *err) {
   dv_sweep_point p;
   if (dv_search_sweep_probe(sc, engine, over, n, &p, err)) return DV_EINPUT;
   memcpy(k->metric, p.metric, sizeof k->metric);
-  k->theta_thin = p.theta_thin;
+  k->theta_thin = own ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
   k->ok = p.ok;
   return DV_OK;
 }
@@ -104,7 +104,8 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->friction_key,
            10 * friction);
   n++;
-  if (dv_engine_stand_in(engine, sc)) {
+  /* the scene's own body (the cylinder of [disk] thickness) is no stand-in to remove */
+  if (dv_engine_stand_in(engine, sc) && !dv_engine_own_body(engine, sc)) {
     kn[n] = (knob){"geometry", "", {""}, 1, 1.0};
     snprintf(kn[n].change, sizeof kn[n].change, "stand-in -> %s", k->thin_choice);
     snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, k->geom_key,
@@ -132,7 +133,7 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
   if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
   memcpy(out->base, p.metric, sizeof out->base);
   memcpy(out->limit, p.limit, sizeof out->limit);
-  out->base_theta_thin = p.theta_thin;
+  out->base_theta_thin = out->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
   out->judged = 0;
   for (int m = 0; m < DV_NMETRICS; m++)
     if (dv_run_limit_check(p.metric[m], p.limit[m]) == DV_LIMIT_OVER) out->judged |= 1u << m;
@@ -145,7 +146,7 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
     memset(k, 0, sizeof *k);
     k->knob = kn[i].name;
     snprintf(k->change, sizeof k->change, "%s", kn[i].change);
-    if (run_knob(sc, engine->name, over, kn[i].n, k, err)) return DV_EINPUT;
+    if (run_knob(sc, engine->name, over, kn[i].n, out->own_reference, k, err)) return DV_EINPUT;
     judge(out, k);
     if (k->removes && (out->cause < 0 || k->worst < out->knobs[out->cause].worst))
       out->cause = (int)i;
@@ -176,6 +177,10 @@ static int metric_change(int m, double a, double b, char *buf, size_t size) {
 }
 
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
+  if (a->not_measured[0]) {
+    snprintf(out, size, "none: nothing measured (%s)", a->not_measured);
+    return;
+  }
   if (a->cause < 0) {
     int n = snprintf(out, size, "none of the knobs removes it (");
     for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
@@ -195,8 +200,9 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
       first = 0;
     }
   if (!a->judged && n > 0 && (size_t)n < size) {
-    n += snprintf(out + n, size - (size_t)n, "theta against the thin disk %.3g -> %.3g rad",
-                  a->base_theta_thin, k->theta_thin);
+    n += snprintf(out + n, size - (size_t)n, "theta against %s %.3g -> %.3g rad",
+                  a->own_reference ? "its own reference" : "the thin disk", a->base_theta_thin,
+                  k->theta_thin);
     first = 0;
   }
   if (!(a->judged >> DV_ENERGY_DRIFT & 1u) && n > 0 && (size_t)n < size) {

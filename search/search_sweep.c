@@ -213,8 +213,10 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   pt->ok = !dv_run_verdict_failed(r->verdict) && judged;
   pt->verdict = r->verdict;
   pt->failure = r->stats.failure;
+  /* a run that measured nothing says why (its window), not how the engine ended */
+  const int measured = judged && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
   snprintf(pt->detail, sizeof pt->detail, "%.191s",
-           judged || !r->nfailures ? r->stats.detail : r->failures[0]);
+           measured || !r->nfailures ? r->stats.detail : r->failures[0]);
   dv_run_comparison_free(c);
 cleanup:
   free(sc);

@@ -88,6 +88,25 @@ int main(int argc, char **argv) {
   CHECK_NEAR(lw[DV_PATH_MAX_ERR].value, DV_LIMIT_PATH * rolled, 1e-12, "path limit of the window");
   CHECK_NEAR(lall[DV_PATH_MAX_ERR].value / lw[DV_PATH_MAX_ERR].value, 2.0, 0.05,
              "path limit of the whole run against the window's");
+  /* a reference that ends at T_WINDOW (the matched reference at its validity
+   * limit, compared with t_end INFINITY): the engine past it is not compared
+   * (issue 35: a thick fall's extrema were taken after the reference ended) */
+  dv_traj cut = {0};
+  for (size_t i = 0; i < ref.n && ref.s[i].t <= T_WINDOW + 1e-9; i++)
+    CHECK(dv_run_traj_push(&cut, &ref.s[i]) == 0, "out of memory");
+  dv_metrics c;
+  dv_run_compare(&eng, &cut, INFINITY, &c);
+  CHECK(fabs(c.t_window - T_WINDOW) < 1e-9, "window to the reference's end: %g s", c.t_window);
+  for (size_t i = 0; i < sizeof zero / sizeof zero[0]; i++)
+    CHECK(c.value[zero[i]] == 0.0, "%s to the reference's end: %g", dv_metric_names[zero[i]],
+          c.value[zero[i]]);
+  /* a window of the shared start alone measured nothing: NaN, never 0 */
+  dv_run_compare(&eng, &ref, 0.0, &c);
+  CHECK(c.n_window == 1, "the start alone: %zu samples", c.n_window);
+  for (int m = 0; m < DV_NMETRICS; m++)
+    CHECK(isnan(c.value[m]), "%s over the start alone: %g (not NaN)", dv_metric_names[m],
+          c.value[m]);
+  dv_run_traj_free(&cut);
   dv_run_traj_free(&ref);
   dv_run_traj_free(&eng);
   return TEST_RESULT();
