@@ -12,8 +12,10 @@
 #   simbody  0.0001 rad, 0.002 s (2.6e-4 rad)
 #   mujoco   0.0098 rad, 0.030 s (0.36 rad), heading per period 0.015 rad: fails
 #   dart     0.013 rad,  0.038 s (0.41 rad): fails on its turning points
-# Here 0.8 s of it and ODE alone (its timing passes 0.000746 s, 0.01 rad
-# over the fastest theta rate, at the third turn). Planted wrong engines, the
+# Here 0.8 s of it and ODE alone: its third turn leads by 0.0012 s, more
+# than the 0.000746 s in which the fastest theta rate (13.4 rad/s) moves
+# theta by 0.01 rad, so pointwise judging ends at the second, t = 0.33 s
+# (theta error 0.0012 rad there; 0.048 rad by 0.8 s). Planted wrong engines, the
 # reference's own run altered: a theta offset 0.05 t^2 rad, a period 5%
 # longer after the first turn (turning values exact), a nutation 3% wider.
 set -u
