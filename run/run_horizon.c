@@ -10,8 +10,7 @@
 #include "run_limits.h"
 #include "run_trajectory.h"
 
-const char *const dv_nudge_dir_names[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot",
-                                                       "psi_dot"};
+const char *const dv_nudge_dir_names[DV_NUDGE_DIRS] = {"theta", "theta_dot", "phi_dot", "psi_dot"};
 
 /* the nudges of theta(0) by +- size that start inside the lying-down limits (0: none) */
 static void theta_nudges(const dv_scenario *sc, double size, double nudge[2]) {
@@ -129,7 +128,7 @@ static void classify(dv_amplification *a) {
     const double rate = fit(tt, lg, n, &rss_exp);
     a->efold = rate > 0 ? 1.0 / rate : NAN;
     snprintf(a->growth, sizeof a->growth, "%s",
-             rss_exp < rss_pow                 ? "exponential"
+             rss_exp < rss_pow               ? "exponential"
              : fabs(a->exponent - 1.0) < 0.5 ? "linear"
                                              : "power");
     a->factor = a->gain[last];
@@ -214,6 +213,18 @@ double dv_run_horizon_of(const dv_amplification *a, const double early[DV_NUDGE_
     }
   if (gain) *gain = a->n ? a->gain[a->n - 1] : 1.0;
   return INFINITY;
+}
+
+double dv_run_period_per_turn(const dv_amplification *a) {
+  double s = 0.0;
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
+    const double dt = a->spread_of[j][DV_NUTATION_PERIOD_ERR];
+    const double dth = a->spread_of[j][DV_THETA_TURNING_ERR];
+    /* a direction that moves the turns by less than 1% of the theta nudge
+     * (a rate nudged at a turn: a time shift) gives noise over noise */
+    if (dth >= 1e-2 * a->size[RED_TH] && isfinite(dt)) s = fmax(s, dt / dth);
+  }
+  return s;
 }
 
 void dv_run_amplification_words(const dv_amplification *a, char *out, size_t size) {

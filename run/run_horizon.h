@@ -22,11 +22,17 @@
  * failure, not the scene's sensitivity) grows by
  * e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the dynamics add to it (an
  * engine's own large early error on a scene that amplifies little does not
- * end its pointwise judging), and never before the early window itself. Up to there a pointwise error measures the engine; past
- * it, it measures the scene's sensitivity, and only timing-insensitive
- * measures mean something: turning points, period, the path's Hausdorff
+ * end its pointwise judging), and never before the early window itself. Up to there a pointwise
+ * error measures the engine; past it, it measures the scene's sensitivity, and only
+ * timing-insensitive measures mean something: turning points, period, the path's Hausdorff
  * distance, the drift of E, f1, f2 along the engine's own states, when the
  * disk lies down (run_event.h).
+ * Where both runs nutate, pointwise judging also ends at the turn before
+ * the engine's turning points first lag or lead the reference's by the time
+ * in which the reference's fastest theta rate moves theta by the limit
+ * (run_turning.h, dv_run_turning_lag): past it a pointwise error measures
+ * when, not what (errors made at a turn, not at the start, and amplified by
+ * a pass near upright); the turning values and the period judge there.
  * Those are judged unless the reference nudged by +- the engine's early
  * error in some direction moves them by half their limit (the well a
  * separatrix start falls into): their spread.
@@ -56,13 +62,13 @@ extern const char *const dv_nudge_dir_names[DV_NUDGE_DIRS]; /* "theta", "theta_d
 
 /* the reference's amplification of nudges of its initial state */
 typedef struct dv_amplification {
-  double nudge;                 /* rad: the theta nudge made (the larger of the two) */
-  double size[DV_NUDGE_DIRS];   /* each direction's nudge: rad, then rad/s */
-  double rate_scale;            /* rad/s: the rates' nudge over DV_HORIZON_NUDGE */
-  size_t n;                     /* samples: the reference's */
-  double *t;                    /* s: the reference's sample times */
+  double nudge;                   /* rad: the theta nudge made (the larger of the two) */
+  double size[DV_NUDGE_DIRS];     /* each direction's nudge: rad, then rad/s */
+  double rate_scale;              /* rad/s: the rates' nudge over DV_HORIZON_NUDGE */
+  size_t n;                       /* samples: the reference's */
+  double *t;                      /* s: the reference's sample times */
   double *gain_of[DV_NUDGE_DIRS]; /* A_j(t_i): running max |theta_nudged - theta_ref| / size[j] */
-  double *gain;       /* G(t_i): max over j of A_j size[j] / DV_HORIZON_NUDGE (a relative nudge) */
+  double *gain; /* G(t_i): max over j of A_j size[j] / DV_HORIZON_NUDGE (a relative nudge) */
   double spread_of[DV_NUDGE_DIRS][DV_NMETRICS]; /* each metric between a nudged run and ref */
   double measured_to; /* s: G is measured to here (where a nudged run ended first, or ref's end) */
   double horizon;     /* s: the horizon of an engine with no early error (INFINITY: never) */
@@ -99,6 +105,12 @@ double dv_run_relative_error(const dv_amplification *a, const double early[DV_NU
  * INFINITY when it never does. gain: G there (or at the end) */
 double dv_run_horizon_of(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
                          double t_early, double limit, double *gain);
+
+/* s/rad: how far the reference's nutation period moves per radian its
+ * turning points move, the largest over the nudged directions (their
+ * nutation_period_err over their theta_turning_err); 0 where no nudge moves
+ * the turns by 1% of the theta nudge */
+double dv_run_period_per_turn(const dv_amplification *a);
 
 /* the amplification in words: "linear (G ~ t^1.02), x99 by t = 8 s" */
 void dv_run_amplification_words(const dv_amplification *a, char *out, size_t size);

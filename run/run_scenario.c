@@ -13,6 +13,7 @@
 #include "run_limits.h"
 #include "run_progress.h"
 #include "run_trajectory.h"
+#include "run_turning.h"
 #include "dv_clock.h"
 
 /* did the matched reference end at an event where the thick disk crosses
@@ -100,6 +101,45 @@ static void find_horizon(const dv_comparison *c, const dv_traj *ref, dv_engine_r
              "%s, amplified as the reference amplifies a nudge of theta or a rate (%s), grows "
              "by less than %g rad to t = %g s",
              early, growth, DV_HORIZON_SPREAD, a->measured_to);
+}
+
+/* the horizon in timing: where the engine's turning points lag or lead the
+ * reference's by the time in which the reference's fastest theta rate moves
+ * theta by the limit, a pointwise error measures when, not what (a fall near
+ * upright makes a 1e-5 rad error made at a turn a 0.03 s lag); from the
+ * turn before it the turning values and the period judge */
+static void timing_horizon(const dv_amplification *a, const dv_traj *ref, dv_engine_result *r) {
+  const double rate = dv_run_theta_rate_max(ref, r->vs_ref.t_window);
+  if (!(rate > 0.0)) return;
+  const double max_lag = DV_HORIZON_SPREAD / rate;
+  double lag;
+  const double end =
+      fmax(r->early_until, dv_run_turning_lag(&r->traj, ref, r->vs_ref.t_window, max_lag, &lag));
+  if (!(end < r->horizon)) return;
+  r->horizon = end;
+  for (size_t i = 0; i < a->n && a->t[i] <= end + 1e-12; i++) r->horizon_gain = a->gain[i];
+  char was[sizeof r->horizon_why];
+  memcpy(was, r->horizon_why, sizeof was);
+  snprintf(r->horizon_why, sizeof r->horizon_why,
+           "its turning points %s the reference's by %.3g s, more than the %.3g s in which the "
+           "reference's fastest theta rate %.3g rad/s moves theta by %g rad, from the turn after "
+           "t = %g s (timing); %.300s",
+           lag > 0 ? "lag" : "lead", fabs(lag), max_lag, rate, DV_HORIZON_SPREAD, end, was);
+}
+
+/* a default period limit at least the period change the engine's own
+ * turning error makes in the reference (x DV_PERIOD_PER_TURN_MARGIN): that
+ * part of its period error is its amplitude's, which theta_turning_err
+ * judges (near upright the time a turn takes grows without bound) */
+static void period_limit(const dv_amplification *a, dv_engine_result *r) {
+  const int m = DV_NUTATION_PERIOD_ERR;
+  const double per_rad = dv_run_period_per_turn(a), turn = r->vs_ref.value[DV_THETA_TURNING_ERR];
+  const double allowed = DV_PERIOD_PER_TURN_MARGIN * per_rad * turn;
+  if (strncmp(r->limit_why[m], "default", 7) || !(allowed > r->tolerance[m])) return;
+  r->tolerance[m] = allowed;
+  snprintf(r->limit_why[m], sizeof r->limit_why[m],
+           "default: x%g the reference's period change for its turning error %.2g rad (%.3g s/rad)",
+           DV_PERIOD_PER_TURN_MARGIN, turn, per_rad);
 }
 
 /* the pointwise metrics up to the engine's horizon, when it ends before the window */
@@ -377,6 +417,7 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
         for (int m = 0; m < DV_NMETRICS; m++) r->vs_thin.value[m] = NAN;
     }
     find_horizon(c, ref, r);
+    timing_horizon(&c->amp, ref, r);
     { /* its own nudges: the spread and the lying down they allow */
       const double t_spread = dv_clock_now();
       status =
@@ -402,6 +443,7 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
                  r->spread[m]);
       }
     }
+    period_limit(&c->amp, r);
     /* turning points and periods: NAN where there is nothing to compare */
     static const dv_metric_id cycles[] = {DV_THETA_TURNING_ERR, DV_NUTATION_PERIOD_ERR,
                                           DV_HEADING_PERIOD_ERR};

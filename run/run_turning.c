@@ -21,7 +21,8 @@ static double hermite(double h, double y0, double y1, double d0, double d1, doub
 /* its derivative at s */
 static double hermite_rate(double h, double y0, double y1, double d0, double d1, double s) {
   const double u = s / h, u2 = u * u;
-  return ((6 * u2 - 6 * u) * (y0 - y1) + (3 * u2 - 4 * u + 1) * h * d0 + (3 * u2 - 2 * u) * h * d1) /
+  return ((6 * u2 - 6 * u) * (y0 - y1) + (3 * u2 - 4 * u + 1) * h * d0 +
+          (3 * u2 - 2 * u) * h * d1) /
          h;
 }
 
@@ -96,6 +97,34 @@ double dv_run_theta_rate_max(const dv_traj *tr, double t_end) {
   return v;
 }
 
+double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, double max_lag,
+                          double *lag) {
+  double end = INFINITY;
+  *lag = 0.0;
+  turn *te = malloc((e->n + 1) * sizeof *te), *tr = malloc((ref->n + 1) * sizeof *tr);
+  if (!te || !tr) goto cleanup;
+  const size_t ne = turning_points(e, t_end, te), nr = turning_points(ref, t_end, tr);
+  size_t seen[2] = {0, 0}; /* the reference's turns of each kind so far */
+  /* the first fall is judged pointwise whatever its timing: a lag made there
+   * is the release's, which the amplification of a nudge measures */
+  double before = nr ? tr[0].t : 0.0;
+  for (size_t i = 0; i < nr && isinf(end); i++) {
+    const size_t k = seen[tr[i].kind > 0]++;
+    size_t j = 0, m = 0; /* e's k-th turn of the same kind */
+    while (j < ne && (te[j].kind != tr[i].kind || m++ < k)) j++;
+    if (j == ne) break; /* e makes no more turns of that kind: the period judges it */
+    if (fabs(te[j].t - tr[i].t) >= max_lag) {
+      *lag = te[j].t - tr[i].t;
+      end = before;
+    }
+    before = tr[i].t;
+  }
+cleanup:
+  free(te);
+  free(tr);
+  return end;
+}
+
 void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]) {
   out[0] = out[1] = out[2] = NAN;
   turn *te = malloc((e->n + 1) * sizeof *te), *tr = malloc((ref->n + 1) * sizeof *tr);
@@ -119,8 +148,7 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
         turn_err = fmax(turn_err, fabs(kr[k].theta - extreme(e, t_end, kind)));
     ref_periods += mr > 1;
     for (size_t k = 0; k + 1 < paired; k++) {
-      period_err =
-          fmax(period_err, fabs((ke[k + 1].t - ke[k].t) - (kr[k + 1].t - kr[k].t)));
+      period_err = fmax(period_err, fabs((ke[k + 1].t - ke[k].t) - (kr[k + 1].t - kr[k].t)));
       heading_err =
           fmax(heading_err, fabs((ke[k + 1].phi - ke[k].phi) - (kr[k + 1].phi - kr[k].phi)));
     }

@@ -35,6 +35,14 @@
  * theta_turning_err, nutation_period_err, heading_period_err */
 void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]);
 
+/* where e's turning points first lag or lead ref's by max_lag (s) or more,
+ * the k-th of a kind against the k-th: the reference's turn before that one
+ * (its first turn when it is the first), past which a pointwise error
+ * measures timing; INFINITY when none does to t_end. lag: the first such difference
+ * (e's time - ref's), 0 when none */
+double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, double max_lag,
+                          double *lag);
+
 /* the largest |theta_dot| of tr up to t_end (rad/s) */
 double dv_run_theta_rate_max(const dv_traj *tr, double t_end);
 

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# check_hoop.sh DISKVAL HOOP OUT: the hoop of tests/data/wheel_wobble.ini fails
-# MuJoCo pointwise under the dynamics' horizon and on its period, and the
-# attribution that follows is announced with a forecast within 2x of what the
-# whole command took. The horizon (issue 24, item 1): the reference amplifies a
-# 1e-6 rad nudge linearly (x99 in 8 s) and MuJoCo's early error (1.1e-6 rad)
-# never grows to the limit, so its pointwise error is judged over the whole
-# window; the period (item 2) is limited to 0.01 rad over the reference's
-# fastest theta rate, 3.27 rad/s: 3.06e-3 s. MuJoCo at the settings the scene
-# chooses (implicit, 8e-6 s) errs 0.043 rad and its period 5.2e-3 s a cycle
-# (with rk4, the old default, 0.337 rad and 0.042 s): exit 1, where a 1e-3 rad
-# nudge ended pointwise judging at 0.7 s and it passed. Measured: the cause's
-# forecast 1m18s (28 runs of the 2.8 s run), the whole command 85 s.
+# check_hoop.sh DISKVAL HOOP OUT: MuJoCo on the hoop of
+# tests/data/wheel_wobble.ini is judged pointwise under the dynamics' horizon
+# and its timing, and the attribution that follows a failure is announced
+# with a forecast within 2x of what the whole command took. The horizon
+# (issue 24, item 1): the reference amplifies a 1e-6 rad nudge linearly (x99
+# in 8 s) and MuJoCo's early error (1.1e-6 rad) never grows to the limit. Its
+# error is timing (issue 35, item 6): its turning points stay within 9.5e-4
+# rad of the reference's and lag by 0.0039 s at the turn after t = 3.48 s,
+# past which a lag moves theta by more than the limit (0.01 rad over the
+# fastest theta rate 3.27 rad/s: 3.06e-3 s); its theta error to there is
+# 0.00425 rad (0.043 rad by 8 s), and its period, 5.2e-3 s a cycle off, is
+# what its turning error makes of the reference's (6.74 s/rad): it agrees at
+# its defaults (implicit, 8e-6 s). With rk4, the old default, its wobble lost
+# 0.0018 rad a cycle. A turning limit of 1e-4 rad fails it, for the
+# attribution. Measured: the cause's forecast 1m18s (28 runs of the 2.8 s
+# run), the whole command 85 s.
 set -u
 . "$(dirname "$0")/check_lib.sh"
 diskval=$1 hoop=$2 out=$3
@@ -18,14 +22,17 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 rm -rf "$out"
 began=$(date +%s.%N)
-"$diskval" compare "$hoop" --engines mujoco --out "$out" >"$work/out" 2>"$work/err"
+"$diskval" compare "$hoop" --engines mujoco --out "$out" \
+  --set tolerance.mujoco.theta_turning_err=1e-4 >"$work/out" 2>"$work/err"
 code=$?
 took=$(awk -v a="$began" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 check '[ $code -eq 1 ]' "exit $code, want 1: $(cat "$work/out" "$work/err")"
-check 'grep -Eq "wheel_wobble: mujoco: theta_max_err = 0\.0[1-9][0-9]* > 0\.01 \(default: 0\.01 rad\)" "$work/out"' \
-  "no pointwise failure: $(cat "$work/out")"
-check "grep -Eq \"wheel_wobble: mujoco: nutation_period_err = 0\\.00[3-9][0-9]* > 0\\.0030[0-9]+ \\(default: 0\\.01 rad over the reference's fastest theta rate, 3\\.27 rad/s\\)\" \"\$work/out\"" \
-  "no period failure: $(cat "$work/out")"
+check 'grep -Eq "wheel_wobble: mujoco: theta_turning_err = 0\.000[5-9][0-9]* > 0\.0001 \(\[tolerance\.mujoco\]\)" "$work/out"' \
+  "no turning failure: $(cat "$work/out")"
+check '! grep -Eq "wheel_wobble: mujoco: (theta_max_err|nutation_period_err) =" "$work/out"' \
+  "a pointwise or period failure: $(cat "$work/out")"
+check 'grep -Eq "pointwise to its horizon t = 3\.4[0-9]* s, timing-insensitive after: its turning points lag" "$work/out"' \
+  "no timing horizon: $(cat "$work/out")"
 line=$(grep "mujoco: its cause (.* runs' worth) will take about" "$work/err")
 check '[ -n "$line" ]' "the attribution was not announced: $(cat "$work/err")"
 said=$(sed -n 's/.*will take about \([0-9hms]*\) .*/\1/p' <<<"$line" |

@@ -3,7 +3,9 @@
  * theta = c + a(t) cos(2 pi t / T), phi = w t. A longer period moves no
  * turning point and shows as the period and heading differences; a decaying
  * amplitude shows as the turning points; a run that stops nutating has
- * lost its periods; steady runs and contact-sized noise have no turns. */
+ * lost its periods; steady runs and contact-sized noise have no turns. The
+ * lag of a longer period ends pointwise judging at the turn before it
+ * reaches a given time (dv_run_turning_lag). */
 #include <math.h>
 #include <string.h>
 
@@ -51,7 +53,7 @@ int main(void) {
   double v[3];
   nutation(&ref, T0, 0.5, 0.0, 0.7, 0.0);
   nutation(&slow, T0 + 0.02, 0.5, 0.0, 0.7, 0.0); /* 0.02 s longer */
-  nutation(&decaying, T0, 0.5, 0.001, 0.7, 0.0); /* loses 0.00174 rad a period */
+  nutation(&decaying, T0, 0.5, 0.001, 0.7, 0.0);  /* loses 0.00174 rad a period */
   nutation(&steady, T0, 0.0, 0.0, 0.7, 0.0);
   nutation(&noisy, T0, 0.0, 0.0, 0.7, 1e-5); /* contact-sized wiggles, 1e-5 rad */
 
@@ -69,7 +71,7 @@ int main(void) {
   /* turning points are paired by count: the k-th minimum at (k - 1/2) T
    * has amplitude a - 0.001 t; the largest difference is the last one inside 8 s */
   dv_run_turning_compare(&decaying, &ref, INFINITY, v);
-  const double last = 0.001 * T0 * 4.0; /* the fourth maximum, t = 4 T = 6.97 s */
+  const double last = 0.001 * T0 * 4.0;     /* the fourth maximum, t = 4 T = 6.97 s */
   const double last_min = 0.001 * T0 * 4.5; /* the fifth minimum, t = 4.5 T = 7.84 s */
   /* measured 7.8e-8 rad (the decay shifts each turn off c +- amp) and 5.5e-7 s */
   CHECK_NEAR(v[0], fmax(last, last_min), 1e-6, "decaying amplitude: turning error");
@@ -91,7 +93,20 @@ int main(void) {
   CHECK_NEAR(v[0], 0.0, 1e-9, "no turning point moved in 2 s");
   dv_run_turning_compare(&slow, &ref, 4.0, v);
   CHECK_NEAR(v[1], 0.02, 1e-8, "one period in 4 s");
-  CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / T0, 2e-6, "fastest rate"); /* 1.8e-7 */
+  CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / T0, 2e-6,
+             "fastest rate"); /* 1.8e-7 */
+
+  /* the timing horizon: the slow run's k-th turn lags by 0.01 k s (turns every
+   * T0 / 2 from a maximum at the start, no turn): a lag of 0.025 s first
+   * shows at the third turn, so judging ends at the reference's second, T0;
+   * one the first turn already shows ends it at the first, never before.
+   * Measured 1.25e-8 s off each turn (the Hermite interpolant) */
+  double lag;
+  CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.025, &lag), T0, 1e-7, "to the 2nd turn");
+  CHECK_NEAR(lag, 0.03, 1e-8, "the third turn lags 0.03 s");
+  CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.005, &lag), T0 / 2, 1e-7, "the first");
+  CHECK(isinf(dv_run_turning_lag(&slow, &ref, INFINITY, 1.0, &lag)) && lag == 0.0, "no lag of 1 s");
+  CHECK(isinf(dv_run_turning_lag(&steady, &ref, INFINITY, 0.005, &lag)), "an engine without turns");
 
   /* a turn just inside the window, where the reference's comes just after
    * it: timing, not a turning point off (upright_unstable's MuJoCo: a minimum

@@ -5,9 +5,11 @@
  * soft MuJoCo contact, a thick ODE cylinder that stays up where the thin
  * disk falls. The horizon follows the dynamics: a fall amplifies a nudge
  * exponentially, at the upright disk's unstable rate, and a right MuJoCo
- * passes it; issue 24's hoop amplifies it linearly, so MuJoCo's 0.337 rad
- * error is judged over the whole window and fails, while an engine that
- * converges to the reference passes; a coarse step's early error ends
+ * passes it; issue 24's hoop amplifies it linearly, and MuJoCo's error
+ * there is timing (its turns within 1e-3 rad, lagging 0.004 s by 3.5 s):
+ * pointwise judging ends where the lag moves theta by the limit and it
+ * passes (issue 35, item 6), as does an engine that converges to the
+ * reference; a coarse step's early error ends
  * pointwise judging inside the window. f1, f2 along MuJoCo's own states are
  * conserved on a steady circle and drift when the contact slips. A window
  * the reference does not fill is not judged. The numbers in comments are
@@ -33,7 +35,8 @@ static const char CIRCLE[] =
 /* issue 24's hoop: it wobbles between theta 0.35 and 1.5 for ever (integrable) */
 static const char HOOP[] =
     "[scenario]\nname = wheel_wobble\nduration = 8\noutput_dt = 0.005\n"
-    "[disk]\nradius = 0.3\nmass = 0.8\nA = 0.036\nC = 0.072\n[initial]\ntheta = 1.50\npsi_dot = 1.3\n";
+    "[disk]\nradius = 0.3\nmass = 0.8\nA = 0.036\nC = 0.072\n[initial]\ntheta = 1.50\npsi_dot = "
+    "1.3\n";
 static const char TILTED[] = /* r 0.06 m, 0.02 rad from upright, 0.3x critical spin */
     "[scenario]\nname = tilted\ndescription = d\nduration = 2\noutput_dt = 0.01\n"
     "[disk]\nradius = 0.06\nmass = 1\n[initial]\ntheta = 1.5507963267948966\npsi_dot = 2.215\n";
@@ -69,7 +72,8 @@ static void check_wrong(const char *scene, const char *engine, const char *const
   if (compare(scene, engine, sets, nsets, &sc, &c)) return;
   const dv_engine_result *r = &c.r[0];
   printf("%s: %s, %s\n", what, dv_run_verdict_name(r->verdict), r->nfailures ? r->failures[0] : "");
-  CHECK(!r->pass && r->verdict == DV_VERDICT_EXCEEDS, "%s: %s", what, dv_run_verdict_name(r->verdict));
+  CHECK(!r->pass && r->verdict == DV_VERDICT_EXCEEDS, "%s: %s", what,
+        dv_run_verdict_name(r->verdict));
   CHECK(names(r, metric), "%s: no failure names %s", what, metric);
   dv_run_comparison_free(&c);
 }
@@ -92,10 +96,10 @@ int main(void) {
   if (!compare(FALLING, "mujoco", NULL, 0, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
     const double efold = 1.0 / sqrt(9.81 * 0.1 / (0.25 * 0.01 + 0.01));
-    printf("falling: %s; amplification %s, e-folding %.3g s (linearised %.3g s); horizon %g s; "
-           "%s\n",
-           dv_run_verdict_name(r->verdict), c.amp.growth, c.amp.efold, efold, r->horizon,
-           r->decided);
+    printf(
+        "falling: %s; amplification %s, e-folding %.3g s (linearised %.3g s); horizon %g s; "
+        "%s\n",
+        dv_run_verdict_name(r->verdict), c.amp.growth, c.amp.efold, efold, r->horizon, r->decided);
     CHECK(r->pass, "a right MuJoCo on a fall: %s", r->nfailures ? r->failures[0] : "");
     CHECK(!strcmp(c.amp.growth, "exponential"), "a fall's amplification: %s", c.amp.growth);
     CHECK(fabs(c.amp.efold / efold - 1.0) < 0.15, "e-folding %g s, linearised %g s", c.amp.efold,
@@ -107,23 +111,28 @@ int main(void) {
   }
 
   /* the hoop: the reference amplifies a nudge linearly (x99 in 8 s, measured
-   * here), so MuJoCo's early error (1.4e-7 rad) never reaches the limit and
-   * its pointwise error, 0.337 rad (its wobble loses 0.0018 rad a cycle),
-   * is judged over the whole window: it fails. A 1e-3 rad nudge ended
-   * pointwise judging at 0.7 s and MuJoCo passed */
+   * here), so MuJoCo's early error (1.1e-6 rad) never reaches the limit; its
+   * pointwise error (0.043 rad by 8 s) is timing: its turning points stay
+   * within 9.5e-4 rad of the reference's and lag by 0.0039 s at the turn
+   * after t = 3.48 s, where pointwise judging ends (theta_max_err 0.00425
+   * there); its period, 5.2e-3 s a cycle off, is what that turning error
+   * makes of the reference's (6.74 s/rad): it agrees (issue 35, item 6). A
+   * 1e-3 rad nudge ended pointwise judging at 0.7 s, timing or not */
   if (!compare(HOOP, "mujoco", NULL, 0, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
-    printf("hoop: %s; amplification %s x%.3g (exponent %.2f); early error %.3g; horizon %g s; "
-           "theta_max_err %.3g\n",
-           dv_run_verdict_name(r->verdict), c.amp.growth, c.amp.factor, c.amp.exponent,
-           r->early_err, r->horizon, r->vs_ref.value[DV_THETA_MAX_ERR]);
+    printf(
+        "hoop: %s; amplification %s x%.3g (exponent %.2f); early error %.3g; horizon %g s; "
+        "theta_max_err %.3g, theta_turning_err %.3g, nutation_period_err %.3g < %.3g\n",
+        dv_run_verdict_name(r->verdict), c.amp.growth, c.amp.factor, c.amp.exponent, r->early_err,
+        r->horizon, r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_THETA_TURNING_ERR],
+        r->vs_ref.value[DV_NUTATION_PERIOD_ERR], r->tolerance[DV_NUTATION_PERIOD_ERR]);
     CHECK(!strcmp(c.amp.growth, "linear"), "the hoop's amplification: %s", c.amp.growth);
     CHECK(c.amp.factor > 10 && c.amp.factor < 1e3, "x%g in 8 s", c.amp.factor);
-    CHECK(isinf(r->horizon) && r->pointwise_end >= 8.0 - 1e-9, "horizon %g, pointwise to %g",
-          r->horizon, r->pointwise_end);
-    CHECK(!r->pass && names(r, "theta_max_err"), "MuJoCo at defaults: %s",
-          r->nfailures ? r->failures[0] : "passes");
-    CHECK(strstr(r->decided, "amplif") != NULL, "decided says the amplification: %s", r->decided);
+    CHECK(r->horizon > 2.0 && r->horizon < 5.0 && strstr(r->horizon_why, "(timing)"),
+          "horizon %g, pointwise to %g: %s", r->horizon, r->pointwise_end, r->horizon_why);
+    CHECK(r->pass, "MuJoCo at defaults: %s", r->nfailures ? r->failures[0] : "passes");
+    CHECK(r->vs_ref.value[DV_THETA_TURNING_ERR] < 2e-3, "its turns: %g rad",
+          r->vs_ref.value[DV_THETA_TURNING_ERR]);
     dv_run_comparison_free(&c);
   }
   /* an engine shown to converge to the reference (matched at h = 0: 2e-13
@@ -169,7 +178,8 @@ int main(void) {
   const char *frictionless[] = {"engines.matched.friction=0"};
   if (!compare(CIRCLE, "mujoco", frictionless, 1, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
-    printf("friction 0: %s: %s\n", dv_run_verdict_name(r->verdict), r->nfailures ? r->failures[0] : "");
+    printf("friction 0: %s: %s\n", dv_run_verdict_name(r->verdict),
+           r->nfailures ? r->failures[0] : "");
     CHECK(!r->pass && r->verdict == DV_VERDICT_OUTSIDE_VALIDITY, "empty window: %s",
           dv_run_verdict_name(r->verdict));
     dv_run_comparison_free(&c);
