@@ -271,7 +271,8 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
                 sc->name, name, dv_run_verdict_name(r->verdict), r->vs_ref.t_window,
                 100 * r->window_fraction, t_run - t0, 100 * DV_MIN_WINDOW_FRACTION,
                 validity ? "the contact force rolling needs leaves the friction cone there"
-                         : "the engine or the reference ended there");
+                : r->reference_note[0] ? r->reference_note
+                                       : "the engine or the reference ended there");
   } else if (r->verdict == DV_VERDICT_AGREES &&
              window_too_short(c, &r->vs_ref, t0, ref_st->lay_down ? t_run : INFINITY, why,
                               sizeof why)) {
@@ -390,17 +391,14 @@ int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
       ref = &r->matched;
       ref_end = matched_valid_end(&match, &r->matched, &r->matched_stats);
       if (crossed_upright(&r->matched, &r->matched_stats)) {
-        /* a thick disk at upright switches rim corners: neither model holds;
-         * the thin disk is the nearer description */
-        char note[sizeof r->reference_note];
-        snprintf(note, sizeof note,
-                 "compared with the thin disk: its own, the %s reference (h = %g m), ended: %.100s",
-                 matched->name, r->half_thickness, r->matched_stats.detail);
-        memcpy(r->reference_note, note, sizeof note);
-        r->half_thickness = 0.0;
-        dv_run_traj_free(&r->matched);
-        ref = &c->thin;
-        ref_end = c->thin_valid_end;
+        /* a cylinder at upright switches rim corners, an impact rolling does not
+         * describe: the window ends there (the thin disk is another body) */
+        const double t_cross = r->matched.s[r->matched.n - 1].t;
+        snprintf(r->reference_note, sizeof r->reference_note,
+                 "the compared window ends at t = %g s, where the scene's body reaches upright and "
+                 "its rim corners switch (an impact rolling does not describe)",
+                 t_cross);
+        ref_end = fmin(ref_end, t_cross);
       }
     }
     dv_run_compare(&r->traj, &c->thin, c->thin_valid_end, &r->vs_thin);

@@ -5,8 +5,9 @@
  * upright_thick.ini) is compared with its own reference, which finishes (it
  * used to stall) and keeps theta = pi/2; a forced step budget ends the
  * reference with an error that says so; where the thick disk crosses upright
- * (scenarios/upright_stable.ini, theta' = 0.01 rad/s) the comparison falls
- * back to the thin disk and says why, its geometry share is n/a (not 0), and
+ * (scenarios/upright_stable.ini, theta' = 0.01 rad/s) the compared window ends
+ * there, said, and nothing is judged against another body (it once fell back
+ * to the thin disk), its geometry share is n/a (not 0), and
  * a run that ends within one output interval has no cost per simulated
  * second (it read 7e9 s / s).
  */
@@ -107,7 +108,7 @@ static void check_step_budget(const char *path) {
   dv_run_comparison_free(&c);
 }
 
-/* crossing upright: the thin disk instead, said; no rate for a 1e-14 s run */
+/* crossing upright: the window ends there, said, not judged; no rate for a 1e-14 s run */
 static void check_fallback(const char *path) {
   static dv_comparison c;
   const char *const sets[] = {"engines.matched.half_thickness=0.002"};
@@ -121,9 +122,10 @@ static void check_fallback(const char *path) {
   const double rate = dv_run_cost_rate(r->wall_s, sim, sc.output_dt);
   printf("upright_stable, matched at h = 2 mm: ran to t = %g s in %g s, rate %g; note '%s'\n", sim,
          r->wall_s, rate, r->reference_note);
-  CHECK(r->half_thickness == 0.0 && strstr(r->reference_note, "thin disk") &&
-            strstr(r->reference_note, "upright"),
-        "the fallback to the thin disk is not said: '%s'", r->reference_note);
+  CHECK(r->half_thickness == 0.002 && strstr(r->reference_note, "upright") &&
+            r->verdict == DV_VERDICT_NOT_JUDGED && !r->pass,
+        "the window's end at upright is not said, or the run is judged (%s, h %g): '%s'",
+        dv_run_verdict_name(r->verdict), r->half_thickness, r->reference_note);
   CHECK(sim < sc.output_dt && isnan(rate), "a %g s run has a rate %g s / s", sim, rate);
   CHECK(dv_run_cost_rate(2.0, 4.0, 0.01) == 0.5, "the rate of a full run");
   /* report.json: no rate and no geometry share, each null, the share saying why */
@@ -136,7 +138,7 @@ static void check_fallback(const char *path) {
   CHECK(cJSON_IsNull(engine_item(report, "matched", "wall_per_sim_s")),
         "report.json: a rate for a 1e-14 s run");
   CHECK(cJSON_IsNull(cJSON_GetObjectItem(share, "theta_max_err")) && why &&
-            strncmp(why, "n/a: ", 5) == 0 && strstr(why, "thin disk"),
+            strncmp(why, "n/a: ", 5) == 0 && strstr(why, "upright"),
         "report.json: the fallback's geometry share is not n/a with why: '%s'", why ? why : "");
   cJSON_Delete(report);
   dv_run_comparison_free(&c);
