@@ -191,10 +191,14 @@ static void print_failures(const char *out) {
     cJSON_ArrayForEach(eng, cJSON_GetObjectItem(sc, "engines")) {
       if (cJSON_IsTrue(cJSON_GetObjectItem(eng, "pass"))) continue;
       const cJSON *f, *failures = cJSON_GetObjectItem(eng, "failures");
-      cJSON_ArrayForEach(f, failures) if (cJSON_IsString(f)) printf("%s\n", f->valuestring);
+      const char *body = cJSON_GetStringValue(cJSON_GetObjectItem(eng, "judged"));
+      char judged[64] = "";
+      if (body) snprintf(judged, sizeof judged, " [%s]", body); /* which body's reference */
+      cJSON_ArrayForEach(f, failures) if (cJSON_IsString(f))
+          printf("%s%s\n", f->valuestring, judged);
       if (!cJSON_GetArraySize(failures))
-        printf("%s: %s: %s\n", cJSON_GetStringValue(cJSON_GetObjectItem(sc, "scenario")),
-               eng->string, cJSON_GetStringValue(cJSON_GetObjectItem(eng, "outcome")));
+        printf("%s: %s: %s%s\n", cJSON_GetStringValue(cJSON_GetObjectItem(sc, "scenario")),
+               eng->string, cJSON_GetStringValue(cJSON_GetObjectItem(eng, "outcome")), judged);
     }
   }
   cJSON_Delete(sum);

@@ -103,7 +103,8 @@ static cJSON *copy_or_null(const cJSON *o, const char *key) {
 
 /* summary.json as text (caller frees), NULL when out of memory */
 static char *summary_text(const entry *es, size_t n, int pass) {
-  static const char *const keys[] = {"outcome", "theta_max_err", "path_max_err", "wall_per_sim_s"};
+  static const char *const keys[] = {"outcome", "theta_max_err", "path_max_err", "wall_per_sim_s",
+                                     "judged"};
   static const char *const objects[] = {"limits", "reference"}; /* copied whole */
   cJSON *root = cJSON_CreateObject();
   cJSON_AddBoolToObject(root, "pass", pass);

@@ -53,5 +53,11 @@ check '[ $code -eq 0 ] && grep -Eq "<td>dart</td><td>$body</td>" "$work/so/index
   "suite exit $code: index.html's row does not say the body: $(grep -o '<td>dart</td><td>[^<]*' "$work/so/index.html")"
 check 'grep -Eq "<property name=\"judged\" value=\"$body\"" "$work/so/junit.xml"' \
   "junit.xml does not say the body: $(grep -c judged "$work/so/junit.xml")"
+# a suite's failure lines on stdout name the body too (a thin stand-in: not judged)
+"$dv" suite "$work/s" --engines ode --set engines.ode.geom=thin --out "$work/sf" >"$work/stdout" \
+  2>"$work/stderr"
+code=$?
+check '[ $code -ne 0 ] && grep -Eq "^euro_coin: ode: not judged: .*\[vs thin disk\]$" "$work/stdout"' \
+  "suite exit $code: its failure line does not say the body: $(head -1 "$work/stdout")"
 [ $fail -eq 0 ] && echo "thick engines: DART and Simbody judged on the coin's cylinder, the body on every line"
 exit $fail
