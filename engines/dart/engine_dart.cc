@@ -150,8 +150,8 @@ const dv_setting_spec KEYS[] = {
      "boxed LCP solver: pgs, or dantzig (with PGS as its fallback)"},
     {"detector", DV_SETTING_CHOICE, AT(detector), 0, 0, DETECTOR_ODE, 0, 1, DETECTORS, NULL, "",
      "collision detector: ode (two contacts, double) or bullet (one, single precision)"},
-    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "",
-     "coefficient of the friction pyramid"},
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
+     "coefficient of the friction pyramid (default: [disk] friction)"},
     {"erp", DV_SETTING_REAL, AT(erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "",
      "error reduction: the share of the penetration corrected per step"},
     {"erv", DV_SETTING_REAL, AT(erv), 0, 0, 1.0, 0.0, 1e3, NULL, NULL, "m/s",
@@ -196,6 +196,7 @@ int dart_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
              "reference",
              used ? "; " : "");
   }
+  dv_engine_derive_friction(sc, "dart", "friction", 1.0, "", &s->friction, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "dart", keys, why);
   return 0;
 }
@@ -363,6 +364,7 @@ void *dart_alloc(const dv_scenario *sc, dv_error *err) {
   e->set = *static_cast<const dart_settings *>(dv_scenario_settings(sc, SETTINGS.name));
   /* a scenario built in code leaves the step to the scene */
   dv_engine_derive_step(sc, &MODELS[e->set.lcp], &e->set.timestep, NULL, NULL, 0, NULL);
+  dv_engine_derive_friction(sc, "dart", "friction", 1.0, "", &e->set.friction, NULL, 0, NULL);
   e->disk = sc->disk;
   e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r, 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
