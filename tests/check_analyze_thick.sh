@@ -8,6 +8,8 @@
 #     s: the sampling misses a turning point by theta'' dt^2 / 8, about 1e-9
 #     rad, and a time by dt: measured 5.6e-11 rad and 4.3e-6 s), not the thin
 #     disk's (theta down to 1.25, 0.08 rad lower);
+#   - the coin's report draws the cylinder's potential and phase plane (from
+#     the matched reference's run), not the thin disk's;
 #   - the thin scene THIN is still the thin disk's, its f1, f2 numbers.
 set -u
 . "$(dirname "$0")/check_lib.sh"
@@ -65,6 +67,15 @@ read -r slo shi tmax < <("$dv" simulate "$work/coin.ini" --engine matched \
 echo "coin: analyze [$lo, $hi], period $period; matched run [$slo, $shi], back at its top at $tmax s"
 check 'near "$lo" "$slo" 1e-8 && near "$hi" "$shi" 1e-8' "coin: analyze [$lo, $hi], the matched run [$slo, $shi]"
 check 'near "$period" "$tmax" 2e-5' "coin: period $period s, the matched run's $tmax s"
+
+# the portraits of the scene's body (plot text is in character references)
+"$dv" compare "$work/coin.ini" --engines ode --set scenario.duration=0.3 --out "$work/r" \
+  --quiet >/dev/null 2>&1
+text() { perl -pe 's/&#x([0-9a-f]+);/chr(hex($1))/ge' "$work/r/euro_coin/$1" 2>/dev/null; }
+check 'text phase.svg | grep -q "phase plane of the cylinder" && text phase.svg | grep -q "reference (matched"' \
+  "the coin's phase.svg is not the cylinder's"
+check 'text potential.svg | grep -q "effective potential of the cylinder"' \
+  "the coin's potential.svg is not the cylinder's"
 
 json=$("$dv" analyze "$thin" --json)
 body=$(jq -r .body <<<"$json")
