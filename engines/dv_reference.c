@@ -47,6 +47,24 @@ double dv_matched_friction(const dv_scenario *sc) {
   return mu;
 }
 
+void dv_reference_derive_friction(const dv_scenario *sc, const char *engine, double *value,
+                                  char *why, size_t size, const char **keys) {
+  const char *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name;
+  if (dv_scenario_is_given(sc, engine, "friction") ||
+      !dv_scenario_is_given(sc, matched, "friction")) {
+    dv_engine_derive_friction(sc, engine, "friction", 1.0, "", value, why, size, keys);
+    return;
+  }
+  *value = dv_matched_friction(sc);
+  size_t n = 0;
+  while (keys && keys[n]) n++;
+  if (keys) keys[n++] = "friction", keys[n] = NULL;
+  if (!why || !size) return;
+  const size_t used = strnlen(why, size);
+  snprintf(why + used, size - used, "%sfriction %g: [engines.%s] friction, the validity window's",
+           used ? "; " : "", *value, matched);
+}
+
 double dv_reference_valid_until(const dv_scenario *sc, const dv_sample *s, size_t n) {
   const double mu = dv_matched_friction(sc);
   for (size_t i = 0; i < n; i++) {

@@ -35,6 +35,12 @@ const dv_matched_settings *dv_matched_settings_of(const dv_scenario *sc);
  * given, else [disk] friction (engine_friction.h) */
 double dv_matched_friction(const dv_scenario *sc);
 
+/* an engine whose friction only ends its run where rolling needs more (one that
+ * cannot slip): as dv_engine_derive_friction, but where its key is not given the
+ * validity window's, dv_matched_friction */
+void dv_reference_derive_friction(const dv_scenario *sc, const char *engine, double *value,
+                                  char *why, size_t size, const char **keys);
+
 /* the end of the thin reference's validity along its samples: the last one
  * before the rolling contact force turns away from the ground or leaves the
  * friction cone of dv_matched_friction; INFINITY when it never does */

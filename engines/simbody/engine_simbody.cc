@@ -39,7 +39,7 @@
  * validity window, where the contact force the constraints need, F = m (a_G
  * + g ez) (the massless frames carry it to the disk whole), has F.z <= 0 or
  * |F_horizontal| > mu F.z (mu: [engines.simbody] friction, by default the
- * [disk] friction the compared window uses); F is every sample's
+ * compared window's: [engines.matched] friction where given, else [disk] friction); F is every sample's
  * force[3].
  *
  * The integrators: Simbody's explicit Runge-Kutta at a fixed step (rk3:
@@ -130,8 +130,8 @@ const dv_setting_spec KEYS[] = {
      0.1, NULL, NULL, "",
      "after a step whose no-slip error exceeds it, the integrator projects onto the constraints"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
-     "mu of the validity window (the run ends where |F_h| > mu F_z); default: [disk] "
-     "friction"},
+     "mu of the validity window (the run ends where |F_h| > mu F_z); default: the window's "
+     "([engines.matched], else [disk] friction)"},
     {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, 0, 0, 0, GEOMS, NULL, "",
      "the exact thin disk only: the constraints hold its rim point P = G + r d"},
 };
@@ -163,8 +163,7 @@ int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
                    keys);
   s->integrator = out.choice;
   s->timestep = out.timestep;
-  dv_engine_derive_friction(sc, "simbody", "friction", 1.0, "", &s->friction, why, sizeof why,
-                            keys);
+  dv_reference_derive_friction(sc, "simbody", &s->friction, why, sizeof why, keys);
   if (sc->thickness > 0.0) {
     const size_t used = strlen(why);
     snprintf(why + used, sizeof why - used,
@@ -365,7 +364,7 @@ void *simbody_alloc(const dv_scenario *sc, dv_error *err) {
   e->set = *static_cast<const simbody_settings *>(dv_scenario_settings(sc, SETTINGS.name));
   /* a scenario built in code leaves the step to the scene, the friction to the disk's */
   dv_engine_derive_step(sc, &MODELS[e->set.integrator], &e->set.timestep, NULL, NULL, 0, NULL);
-  dv_engine_derive_friction(sc, "simbody", "friction", 1.0, "", &e->set.friction, NULL, 0, NULL);
+  dv_reference_derive_friction(sc, "simbody", &e->set.friction, NULL, 0, NULL);
   e->disk = sc->disk;
   e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r, 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;
