@@ -10,6 +10,9 @@
  * diskval analyze --json) */
 #define SAMPLES 400.0
 
+/* at most this many samples (a second or two): a period longer than that is not seen */
+#define MAX_SAMPLES 1e6
+
 typedef struct sample {
   double t, y[RED_NSTATE];
 } sample;
@@ -57,6 +60,7 @@ int red_orbit_thick_run(const red_rolling *rr, const red_stepper_type *stepper, 
   double s[RR_NSTATE];
   red_rolling_from_state(rr, y0, s);
   const double dt = 1.0 / (SAMPLES * rr->sys.frequency(s, (void *)rr));
+  t_max = fmin(t_max, MAX_SAMPLES * dt); /* a bounded run: the text says none was seen */
   red_integrator *in = red_integrator_alloc(&rr->sys, stepper, rtol, atol, err);
   if (!in) return DV_ENUMERIC;
   int status = red_integrator_reset(in, 0.0, t_max, s, err);
