@@ -119,6 +119,25 @@ static int scenario_new(const char *name, const diskval_disk *disk, const diskva
   return DV_OK;
 }
 
+/* [disk] friction, the one [disk] key diskval_disk leaves out: the scenario
+ * derived anew with it, as a file giving it (sc is unchanged on error) */
+static int set_disk(diskval_scenario *sc, const char *key, const char *value,
+                    diskval_error *err) {
+  if (strcmp(key, "friction"))
+    return dv_fail(as_dv(err), DV_EINPUT,
+                   "disk.%.40s: only friction is set here (the rest: diskval_scenario_new)", key);
+  char set[160];
+  if ((size_t)snprintf(set, sizeof set, "disk.friction=%s", value) >= sizeof set)
+    return dv_fail(as_dv(err), DV_EINPUT, "disk.friction: '%.40s...' is too long", value);
+  const char *overrides[] = {set};
+  dv_scenario *trial = malloc(sizeof *trial);
+  if (!trial) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario's copy");
+  const int status = dv_scenario_with(&sc->sc, overrides, 1, trial, as_dv(err));
+  if (!status) sc->sc = *trial;
+  free(trial);
+  return status;
+}
+
 /* set one engine setting, checked as at load: its own range, then every
  * engine section's check on a copy (a theta_limit past the initial theta is refused
  * as a file or --set refuses it); sc is unchanged on error */
@@ -126,6 +145,7 @@ int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *k
                          const char *value, diskval_error *err) {
   if (!sc || !engine || !key || !value)
     return dv_fail(as_dv(err), DV_EINPUT, "diskval_scenario_set: NULL argument");
+  if (!strcmp(engine, "disk")) return set_disk(sc, key, value, err);
   dv_scenario *trial = malloc(sizeof *trial);
   if (!trial) return dv_fail(as_dv(err), DV_ESYSTEM, "out of memory: a scenario's copy");
   *trial = sc->sc;

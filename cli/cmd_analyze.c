@@ -12,6 +12,7 @@
 #include "run_meta.h"
 #include "scenario.h"
 #include "red_invariants.h"
+#include "red_orbit_thick.h"
 #include "red_potential.h"
 #include "red_steady.h"
 
@@ -23,7 +24,10 @@ static const char HELP[] =
     "theta (turning points of the effective potential); and, when the initial\n"
     "state is a steady motion, its rates and linear stability (eigenvalues); else,\n"
     "where theta nutates between turning points, the nutation period and what phi\n"
-    "and psi advance over it (quadratures over the effective potential).\n"
+    "and psi advance over it (quadratures over the effective potential). A disk\n"
+    "with [disk] thickness > 0 is analysed as the cylinder it is, with the matched\n"
+    "reference's equations: its energy, its steady motion, and the range of theta,\n"
+    "the nutation period and the advances from its run over one period.\n"
     "  --json   one JSON object on stdout instead of text\n";
 
 /* the nutation is shown where halving its quadrature's points moves it less */
@@ -39,12 +43,53 @@ typedef struct analysis {
   double nutation[3];     /* its period (s), the advances of phi and psi over it (rad) */
   double resolution;      /* relative: what halving the quadrature's points moves them by */
   char nutation_why[160]; /* why a nutation's numbers are not shown, or "" */
+  double h;               /* half-thickness of the body analysed (m): 0, the thin disk */
+  char ended[160];        /* the cylinder's run ended before a period: why, or "" */
 } analysis;
+
+/* the half-thickness of the scene's body: the matched reference's */
+static double body_half_thickness(const dv_scenario *sc) {
+  const double h = dv_matched_settings_of(sc)->half_thickness;
+  return isnan(h) ? 0.5 * sc->thickness : h;
+}
+
+/* the cylinder of half-thickness an->h: its own equations (red_rolling.h) */
+static int analyse_thick(const dv_scenario *sc, analysis *an, dv_error *err) {
+  const dv_reduced_settings *ref = dv_reference_settings(sc);
+  const double *y = sc->initial;
+  red_rolling rr;
+  red_rolling_init(&rr, &sc->disk, an->h, dv_matched_friction(sc), ref->theta_limit);
+  double st[RR_NSTATE];
+  red_rolling_from_state(&rr, y, st);
+  an->E = red_rolling_energy(&rr, st);
+  an->f1 = an->f2 = an->k = an->crit = NAN; /* the thin disk's: not this body's */
+  /* one period at least: 100 of its slowest time scale, or the scene */
+  const double t_max = fmax(sc->duration, 100.0 * 2.0 * M_PI * sqrt(sc->disk.r / sc->disk.g));
+  red_orbit_thick o;
+  int status = red_orbit_thick_run(&rr, red_steppers[ref->integrator], ref->rtol, ref->atol, y,
+                                   t_max, &o, err);
+  if (status) return status;
+  an->steady = o.steady;
+  an->range[0] = o.range[0];
+  an->range[1] = o.range[1];
+  an->falls = o.falls;
+  an->nutates = o.nutates;
+  an->resolution = 1e-9; /* above what 8x the samples moves it (red_orbit_thick.c) */
+  memcpy(an->nutation, o.nutation, sizeof an->nutation);
+  if (o.event >= 0 && !o.falls)
+    snprintf(an->ended, sizeof an->ended, "the rolling model ends at t = %.6g s (%s)", o.t_event,
+             red_rolling_event_names[o.event]);
+  else if (!o.steady && !o.nutates && !o.falls)
+    snprintf(an->ended, sizeof an->ended, "no whole period within %.6g s", o.t_end);
+  if (an->ended[0]) snprintf(an->nutation_why, sizeof an->nutation_why, "not seen: %.140s", an->ended);
+  return DV_OK;
+}
 
 static int analyse(const dv_scenario *sc, analysis *an, dv_error *err) {
   const red_disk *d = &sc->disk;
   const double *y = sc->initial;
   memset(an, 0, sizeof *an);
+  if ((an->h = body_half_thickness(sc)) > 0.0) return analyse_thick(sc, an, err);
   an->E = red_energy(d, y);
   an->k = red_legendre_k(d);
   an->crit = red_upright_critical_spin(d);
@@ -102,11 +147,16 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   const double *y = sc->initial;
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "scenario", sc->name);
+  cJSON_AddStringToObject(o, "body", an->h > 0.0 ? "cylinder" : "thin disk");
+  cJSON_AddNumberToObject(o, "half_thickness", an->h);
   cJSON_AddNumberToObject(o, "energy", an->E);
-  cJSON_AddNumberToObject(o, "f1", an->f1);
-  cJSON_AddNumberToObject(o, "f2", an->f2);
-  cJSON_AddNumberToObject(o, "legendre_k", an->k);
-  cJSON_AddStringToObject(o, "hypergeometric_branch", branch(an->k));
+  cJSON_AddItemToObject(o, "f1", dv_io_json_number(an->f1));
+  cJSON_AddItemToObject(o, "f2", dv_io_json_number(an->f2));
+  cJSON_AddItemToObject(o, "legendre_k", dv_io_json_number(an->k));
+  if (an->h > 0.0)
+    cJSON_AddNullToObject(o, "hypergeometric_branch");
+  else
+    cJSON_AddStringToObject(o, "hypergeometric_branch", branch(an->k));
   cJSON_AddItemToObject(o, "upright_critical_spin", dv_io_json_number(an->crit));
   cJSON_AddItemToObject(o, "theta_range", cJSON_CreateDoubleArray(an->range, 2));
   cJSON_AddBoolToObject(o, "falls", an->falls);
@@ -120,12 +170,19 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
     cJSON_AddNumberToObject(s, "psi_dot", y[RED_VPS]);
     cJSON_AddItemToObject(s, "contact_radius",
                           dv_io_json_number(fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH])));
-    cJSON_AddBoolToObject(s, "stable", an->stable);
-    cJSON *ev = cJSON_AddArrayToObject(s, "eigenvalues");
-    for (int i = 0; i < RED_NREDUCED; i++)
-      cJSON_AddItemToArray(ev, cJSON_CreateDoubleArray(an->eig[i], 2));
-    cJSON_AddItemToObject(s, "eigenvalue_uncertainty", dv_io_json_number(an->eig_uncertainty));
-    cJSON_AddBoolToObject(s, "marginal", an->marginal);
+    if (an->h > 0.0) { /* the linearisation is the thin disk's reduced system */
+      cJSON_AddNullToObject(s, "stable");
+      cJSON_AddNullToObject(s, "eigenvalues");
+      cJSON_AddNullToObject(s, "eigenvalue_uncertainty");
+      cJSON_AddNullToObject(s, "marginal");
+    } else {
+      cJSON_AddBoolToObject(s, "stable", an->stable);
+      cJSON *ev = cJSON_AddArrayToObject(s, "eigenvalues");
+      for (int i = 0; i < RED_NREDUCED; i++)
+        cJSON_AddItemToArray(ev, cJSON_CreateDoubleArray(an->eig[i], 2));
+      cJSON_AddItemToObject(s, "eigenvalue_uncertainty", dv_io_json_number(an->eig_uncertainty));
+      cJSON_AddBoolToObject(s, "marginal", an->marginal);
+    }
   } else {
     cJSON_AddNullToObject(o, "steady");
   }
@@ -147,10 +204,23 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
 static void print_text(const dv_scenario *sc, const analysis *an) {
   const double *y = sc->initial;
   printf("scenario          %s\n", sc->name);
+  if (an->h > 0.0)
+    printf(
+        "body              cylinder, half-thickness %g m: the matched reference's equations "
+        "(rolling on the rim corner)\n",
+        an->h);
+  else
+    printf("body              thin disk: the reduced equations\n");
   printf("energy            %.15g J\n", an->E);
-  printf("f1, f2            %.15g, %.15g kg m^2/s  (k = %.6g, %s)\n", an->f1, an->f2, an->k,
-         branch(an->k));
-  printf("upright critical  %.15g rad/s\n", an->crit);
+  if (an->h > 0.0) {
+    printf(
+        "f1, f2            n/a: the thin disk's integrals; the range and period below are "
+        "the cylinder's run\n");
+  } else {
+    printf("f1, f2            %.15g, %.15g kg m^2/s  (k = %.6g, %s)\n", an->f1, an->f2, an->k,
+           branch(an->k));
+    printf("upright critical  %.15g rad/s\n", an->crit);
+  }
   printf("theta range       [%.12g, %.12g] rad%s\n", an->range[0], an->range[1],
          an->falls ? "  (reaches the theta limit: the disk lies down)" : "");
   if (!an->steady) {
@@ -165,13 +235,19 @@ static void print_text(const dv_scenario *sc, const analysis *an) {
   }
   printf("steady            phi_dot %.15g, psi_dot %.15g rad/s, contact radius %.12g m\n",
          y[RED_VPH], y[RED_VPS], fabs(sc->disk.r * y[RED_VPS] / y[RED_VPH]));
-  printf("stability         %s; eigenvalues",
-         an->marginal ? "marginal" : an->stable ? "linearly stable" : "unstable");
+  if (an->h > 0.0) {
+    printf("stability         n/a: the eigenvalues are the thin disk's reduced system's\n");
+    return;
+  }
+  printf("stability         %s; eigenvalues", an->marginal ? "marginal"
+                                              : an->stable ? "linearly stable"
+                                                           : "unstable");
   for (int i = 0; i < RED_NREDUCED; i++) printf(" (%.6g%+.6gi)", an->eig[i][0], an->eig[i][1]);
   printf(", each within %.1e (finite differences)\n", an->eig_uncertainty);
   if (an->marginal)
-    printf("                  more than the two structural eigenvalues are within that of 0: "
-           "on the stability boundary\n");
+    printf(
+        "                  more than the two structural eigenvalues are within that of 0: "
+        "on the stability boundary\n");
 }
 
 int dv_cli_analyze(int argc, char **argv) {

@@ -2,7 +2,7 @@
  *
  * Sections and keys (radians, SI units), see README "Scenario files":
  *   [scenario]   name, description, duration, output_dt, engines, memory_budget
- *   [disk]       radius, mass, thickness, A, C, gravity
+ *   [disk]       radius, mass, thickness, A, C, gravity, friction
  *                (A, C default to a uniform disk of that thickness; thickness to 0, thin)
  *   [initial]    theta and phi, psi, x, y, theta_dot, phi_dot, psi_dot
  *                or theta + steady_circle_radius, or theta + steady_phi_dot
@@ -37,6 +37,11 @@
 #define DV_MEMORY_PER_SAMPLE 1024
 #define DV_MEMORY_BASE_MIB 64
 #define DV_MEMORY_BUDGET_GIB 1.0 /* [scenario] memory_budget's default */
+
+/* [disk] friction's default: every shipped scene rolls within it up to where its
+ * motion ends (the largest ratio |F_h| / F_z the reference needs: 1.55 on
+ * steady_steep; README "Scenario files") */
+#define DV_FRICTION_DEFAULT 2.0
 
 /* a scenario file larger than this is refused before more of it is read */
 #define DV_SCENARIO_MAX_BYTES (1024 * 1024)
@@ -92,6 +97,7 @@ typedef struct dv_scenario {
   double memory_budget; /* GiB: a run whose samples would need more is refused */
   red_disk disk;
   double thickness; /* m, [disk] thickness, full: 0 the thin disk, else what the engines model */
+  double friction;  /* [disk] friction: the coefficient against the ground, every engine's */
   dv_init_mode init_mode;
   double initial[RED_NSTATE];                  /* resolved initial state */
   double steady_circle_radius, steady_phi_dot; /* m, rad/s as given; NAN when not */

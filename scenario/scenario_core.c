@@ -218,6 +218,8 @@ static const dv_setting_spec DISK_KEYS[] = {
      "kg m^2", "about the axis (default m r^2 / 2)"},
     {"gravity", DV_SETTING_REAL, AT(disk.g), 0, DV_SETTING_OPEN_HI, 9.81, 0.0, 1e6, NULL, NULL,
      "m/s^2", ""},
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, DV_FRICTION_DEFAULT, 0.0, 1e6, NULL, NULL,
+     "", "coefficient against the ground: every engine's and the validity window's"},
 };
 
 static const dv_setting_spec INITIAL_KEYS[] = {

@@ -8,6 +8,7 @@
 void dv_scenario_init(dv_scenario *sc, const dv_settings_section *const *engines) {
   memset(sc, 0, sizeof *sc);
   sc->steady_circle_radius = sc->steady_phi_dot = NAN;
+  sc->friction = DV_FRICTION_DEFAULT;
   for (size_t i = 0; engines && engines[i] && i < DV_MAX_ENGINE_SECTIONS; i++) {
     sc->sections[sc->nsections] = engines[i];
     dv_settings_defaults(engines[i], &sc->settings[sc->nsections++]);

@@ -52,6 +52,7 @@ extern "C" {
 #include "dv_reference.h"
 #include "engine_choose.h"
 #include "engine_scene.h"
+#include "engine_friction.h"
 #include "engine_shape.h"
 #include "engine_watch.h"
 }
@@ -116,7 +117,7 @@ const dv_setting_spec KEYS[] = {
      "multibody: btMultiBody (Featherstone) floating base; rigidbody: btRigidBody"},
     {"solver_iterations", DV_SETTING_INT, AT(solver_iterations), 0, 0, 10, 1, 100000, NULL, NULL,
      "", "iterations of the si and pgs solvers (dantzig solves the LCP exactly)"},
-    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "",
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
      "coefficient, in each of two directions"},
     {"cfm", DV_SETTING_REAL, AT(cfm), 0, 0, 0.0, 0.0, 1.0, NULL, NULL, "",
      "the solver's global constraint force mixing: contact softness"},
@@ -163,6 +164,8 @@ int bullet_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   s->body = out.choice;
   s->timestep = out.timestep;
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
+  dv_engine_derive_friction(sc, "bullet", "friction", 1.0, "", &s->friction, why, sizeof why,
+                            keys);
   dv_scenario_set_derived(sc, "bullet", keys, why);
   return 0;
 }
@@ -390,6 +393,7 @@ void *bullet_alloc(const dv_scenario *sc, dv_error *err) {
   dv_engine_derive_step(sc, &MODELS[e->set.body], &e->set.timestep, NULL, NULL, 0, NULL);
   e->disk = sc->disk;
   dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
+  dv_engine_derive_friction(sc, "bullet", "friction", 1.0, "", &e->set.friction, NULL, 0, NULL);
   e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,
                         e->set.geom == 1 ? e->set.half_thickness : 0.0};
   e->theta_limit = dv_reference_settings(sc)->theta_limit;

@@ -162,8 +162,8 @@ const dv_setting_spec KEYS[] = {
      "boxed LCP solver: pgs, or dantzig (with PGS as its fallback)"},
     {"detector", DV_SETTING_CHOICE, AT(detector), 0, 0, DETECTOR_ODE, 0, 1, DETECTORS, NULL, "",
      "collision detector: ode (two contacts, double) or bullet (one, single precision)"},
-    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "",
-     "coefficient of the friction pyramid"},
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
+     "coefficient of the friction pyramid (default: [disk] friction)"},
     {"erp", DV_SETTING_REAL, AT(erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "",
      "error reduction: the share of the penetration corrected per step"},
     {"erv", DV_SETTING_REAL, AT(erv), 0, 0, 1.0, 0.0, 1e3, NULL, NULL, "m/s",
@@ -205,6 +205,7 @@ int dart_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   s->lcp = out.choice;
   s->timestep = out.timestep;
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
+  dv_engine_derive_friction(sc, "dart", "friction", 1.0, "", &s->friction, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "dart", keys, why);
   if (s->geom == GEOM_CYLINDER && s->detector == DETECTOR_BULLET) {
     issue->key = "detector";
@@ -390,6 +391,7 @@ dart_engine *make_engine(const dv_scenario *sc, dv_error *err) {
   dv_engine_derive_step(sc, &MODELS[e->set.lcp], &e->set.timestep, NULL, NULL, 0, NULL);
   /* a scenario built in code derives its shape here */
   dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
+  dv_engine_derive_friction(sc, "dart", "friction", 1.0, "", &e->set.friction, NULL, 0, NULL);
   e->disk = sc->disk;
   e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,
                         e->set.geom == GEOM_CYLINDER ? e->set.half_thickness : 0.0};

@@ -39,10 +39,10 @@ static double half_thickness_of(const dv_scenario *sc) {
 
 static void *matched_alloc(const dv_scenario *sc, dv_error *err) {
   const dv_reduced_settings *r = dv_reference_settings(sc);
-  const dv_matched_settings *s = dv_matched_settings_of(sc);
   matched_engine *e = calloc(1, sizeof *e);
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory: the matched reference's state"), NULL;
-  red_rolling_init(&e->rr, &sc->disk, half_thickness_of(sc), s->friction, r->theta_limit);
+  red_rolling_init(&e->rr, &sc->disk, half_thickness_of(sc), dv_matched_friction(sc),
+                   r->theta_limit);
   e->t_end = sc->duration;
   e->event = -1;
   e->in = red_integrator_alloc(&e->rr.sys, red_steppers[r->integrator], r->rtol, r->atol, err);
@@ -93,15 +93,20 @@ static void matched_stats(const void *p, dv_engine_stats *out) {
 static const dv_setting_spec KEYS[] = {
     {"half_thickness", DV_SETTING_REAL, AT(half_thickness), 0, 0, NAN, 0.0, 1.0, NULL, NULL, "m",
      "of the cylinder to match (0: the thin disk); default: [disk] thickness / 2"},
-    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "",
-     "friction coefficient that ends the validity window"},
+    {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e6, NULL, NULL, "",
+     "friction coefficient that ends the validity window; default: [disk] friction"},
 };
 
-/* the disk's own thickness unless given */
+/* the disk's own thickness and friction unless given */
 static int matched_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   dv_matched_settings *s = block;
+  char why[DV_DERIVED_BYTES] = "";
+  const char *keys[4] = {NULL};
   (void)issue;
   if (isnan(s->half_thickness)) s->half_thickness = 0.5 * sc->thickness;
+  dv_engine_derive_friction(sc, "matched", "friction", 1.0, "", &s->friction, why, sizeof why,
+                            keys);
+  dv_scenario_set_derived(sc, "matched", keys, why);
   return 0;
 }
 

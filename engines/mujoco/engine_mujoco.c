@@ -34,6 +34,7 @@
 #include "engine_mujoco_model.h"
 #include "engine_mujoco_thin.h"
 #include "engine_scene.h"
+#include "engine_friction.h"
 #include "engine_shape.h"
 
 /* [engines.mujoco]: the defaults are the most accurate affordable settings
@@ -83,7 +84,8 @@ static const dv_setting_spec KEYS[] = {
     {"solimp_dmin", NUM(solimp_dmin), 0, 0, 0.9, 0.0001, 0.9999, NULL, NULL, "", ""},
     {"solimp_dmax", NUM(solimp_dmax), 0, 0, 0.95, 0.0001, 0.9999, NULL, NULL, "", ""},
     {"solimp_width", NUM(solimp_width), 0, 0, 0.001, 0.0, 1.0, NULL, NULL, "m", ""},
-    {"friction", NUM(friction), 0, 0, 2.0, 0.0, 1e6, NULL, NULL, "", "sliding coefficient"},
+    {"friction", NUM(friction), 0, 0, NAN, 0.0, 1e6, NULL, NULL, "",
+     "sliding coefficient (default: [disk] friction)"},
     {"geom", PICK(geom), 0, 0, GEOM_THIN, 0, 2, GEOMS, NULL, "",
      "default: thin, or cylinder for a [disk] thickness > 0; else a stand-in"},
     {"half_thickness", NUM(half_thickness), 0, 0, 5e-4, 1e-6, 1.0, NULL, NULL, "m",
@@ -125,6 +127,7 @@ static void derive(const dv_scenario *sc, mujoco_settings *s, char *why, size_t 
   dv_engine_derive_step(sc, &MODELS[s->integrator], &s->timestep, &s->solref_timeconst, why, size,
                         keys);
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, size, keys);
+  dv_engine_derive_friction(sc, "mujoco", "friction", 1.0, "", &s->friction, why, size, keys);
 }
 
 static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
@@ -148,6 +151,8 @@ static int mujoco_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   size_t n = 0;
   while (keys[n]) n++;
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys + n);
+  dv_engine_derive_friction(sc, "mujoco", "friction", 1.0, "", &s->friction, why, sizeof why,
+                            keys + n);
   dv_scenario_set_derived(sc, "mujoco", keys, why);
   return 0;
 }

@@ -38,6 +38,7 @@
 #include "engine_ode_body.h"
 #include "engine_ode_thin.h"
 #include "engine_scene.h"
+#include "engine_friction.h"
 #include "engine_shape.h"
 #include "engine_watch.h"
 
@@ -78,7 +79,8 @@ static const dv_setting_spec KEYS[] = {
      "world CFM: the contact's friction rows (soft_cfm sets its normal row)"},
     {"friction_model", PICK(friction_model), 0, 0, 0, 0, 1, FRICTION_MODELS, NULL, "",
      "coefficient: dContactApprox1"},
-    {"friction", NUM(friction), 0, 0, 5.0, 0.0, 1e9, NULL, NULL, "", "coefficient, or N"},
+    {"friction", NUM(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
+     "coefficient, or N (default: [disk] friction, times m g for a force limit)"},
     {"soft_erp", NUM(soft_erp), 0, 0, 0.2, 0.0, 1.0, NULL, NULL, "", "contact"},
     {"soft_cfm", NUM(soft_cfm), 0, 0, 1e-8, 0.0, 1.0, NULL, NULL, "", "contact"},
     {"geom", PICK(geom), 0, 0, 0, 0, 1, GEOMS, NULL, "",
@@ -110,6 +112,14 @@ static const dv_engine_knobs KNOBS = {"ode", "stepper", MODELS, 2, 0x1, 1};
 
 static const dv_shape_keys SHAPE = {"ode", "geom", 1, 0, "half_thickness"};
 
+/* the friction: a coefficient, or a force limit of that coefficient's weight */
+static void derive_friction(const dv_scenario *sc, ode_settings *s, char *why, size_t size,
+                            const char **keys) {
+  const int force = s->friction_model == 1;
+  dv_engine_derive_friction(sc, "ode", "friction", force ? sc->disk.m * sc->disk.g : 1.0,
+                            force ? "N" : "", &s->friction, why, size, keys);
+}
+
 static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   ode_settings *s = block;
   char why[DV_DERIVED_BYTES];
@@ -122,6 +132,7 @@ static int ode_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   s->stepper = out.choice;
   s->timestep = out.timestep;
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
+  derive_friction(sc, s, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "ode", keys, why);
   return 0;
 }
@@ -305,6 +316,7 @@ static void *ode_alloc(const dv_scenario *sc, dv_error *err) {
   /* a scenario built in code leaves the step to the scene */
   dv_engine_derive_step(sc, &MODELS[e->set.stepper], &e->set.timestep, NULL, NULL, 0, NULL);
   dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
+  derive_friction(sc, &e->set, NULL, 0, NULL);
   e->disk = sc->disk;
   /* a cylinder with h = 0 is the thin disk: rho = r d */
   e->geom =

@@ -49,8 +49,8 @@
  * validity window, where the contact force the constraints need, F = m (a_G
  * + g ez) (the massless frames carry it to the disk whole), has F.z <= 0 or
  * |F_horizontal| > mu F.z (mu: [engines.simbody] friction, by default the
- * [engines.matched] friction the compared window uses); F is every sample's
- * force[3].
+ * compared window's: [engines.matched] friction where given, else [disk] friction); F is every
+ * sample's force[3].
  *
  * The integrators: Simbody's explicit Runge-Kutta at a fixed step (rk3:
  * RungeKutta3, third order; rkmerson: RungeKuttaMerson, fourth, as
@@ -119,12 +119,13 @@ using namespace SimTK;
 
 /* [engines.simbody] */
 struct simbody_settings {
-  double timestep;       /* s: the fixed step (accuracy 0) */
-  int integrator;        /* INTEG_* */
-  double accuracy;       /* 0: fixed step; > 0: error-controlled to this accuracy */
-  double tolerance;      /* constraint tolerance of the projection */
-  double friction;       /* mu of the validity window; NAN: [engines.matched] friction */
-  int geom;              /* 0 thin, 1 cylinder */
+  double timestep;  /* s: the fixed step (accuracy 0) */
+  int integrator;   /* INTEG_* */
+  double accuracy;  /* 0: fixed step; > 0: error-controlled to this accuracy */
+  double tolerance; /* constraint tolerance of the projection */
+  double
+      friction; /* mu of the validity window; NAN: the window's ([engines.matched], else [disk]) */
+  int geom;     /* 0 thin, 1 cylinder */
   double half_thickness; /* m, the cylinder's half-length */
 };
 
@@ -146,8 +147,8 @@ const dv_setting_spec KEYS[] = {
      NULL, NULL, "",
      "after a step whose no-slip error exceeds it, the integrator projects onto the constraints"},
     {"friction", DV_SETTING_REAL, AT(friction), 0, 0, NAN, 0.0, 1e9, NULL, NULL, "",
-     "mu of the validity window (the run ends where |F_h| > mu F_z); default: [engines.matched] "
-     "friction"},
+     "mu of the validity window (the run ends where |F_h| > mu F_z); default: the window's "
+     "([engines.matched], else [disk] friction)"},
     {"geom", DV_SETTING_CHOICE, AT(geom), 0, 0, GEOM_THIN, 0, 1, GEOMS, NULL, "",
      "thin: the constraints hold the rim point P = G + r d; cylinder: the rim corner "
      "G + r d - h sign(n.z) n"},
@@ -183,17 +184,7 @@ int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
   dv_engine_choose(sc, &dv_engine_simbody, &KNOBS, s->integrator, &in, &out, why, sizeof why, keys);
   s->integrator = out.choice;
   s->timestep = out.timestep;
-  size_t nkeys = 0;
-  while (keys[nkeys]) nkeys++;
-  if (std::isnan(s->friction)) {
-    s->friction = dv_matched_settings_of(sc)->friction;
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used,
-             "%sfriction %g: [engines.matched] friction, the compared window's", used ? "; " : "",
-             s->friction);
-    keys[nkeys++] = "friction";
-    keys[nkeys] = NULL;
-  }
+  dv_reference_derive_friction(sc, "simbody", &s->friction, why, sizeof why, keys);
   dv_engine_derive_shape(sc, &SHAPE, &s->geom, &s->half_thickness, why, sizeof why, keys);
   dv_scenario_set_derived(sc, "simbody", keys, why);
   return 0;
@@ -406,9 +397,9 @@ void *simbody_alloc(const dv_scenario *sc, dv_error *err) {
   simbody_engine *e = new (std::nothrow) simbody_engine();
   if (!e) return dv_fail(err, DV_ESYSTEM, "out of memory: the Simbody engine's state"), nullptr;
   e->set = *static_cast<const simbody_settings *>(dv_scenario_settings(sc, SETTINGS.name));
-  /* a scenario built in code leaves the step to the scene, the friction to matched's */
+  /* a scenario built in code leaves the step to the scene, the friction to the disk's */
   dv_engine_derive_step(sc, &MODELS[e->set.integrator], &e->set.timestep, NULL, NULL, 0, NULL);
-  if (std::isnan(e->set.friction)) e->set.friction = dv_matched_settings_of(sc)->friction;
+  dv_reference_derive_friction(sc, "simbody", &e->set.friction, NULL, 0, NULL);
   dv_engine_derive_shape(sc, &SHAPE, &e->set.geom, &e->set.half_thickness, NULL, 0, NULL);
   e->disk = sc->disk;
   e->geom = dv_geometry{DV_SHAPE_CYLINDER, sc->disk.r,

@@ -10,7 +10,7 @@
  *    theta; the pose's lowest point is the state's contact point).
  * 3. Ends: a disk falling from 0.1 rad off upright falls monotonically and
  *    ends where the matched reference does: at the friction limit
- *    ([engines.matched] friction 2), at the normal force's zero (friction
+ *    ([disk] friction 2), at the normal force's zero (friction
  *    1e9), and lying down at a raised theta_limit.
  * 4. Convergence: halving the step divides theta's error by 2^p, p = 3 for
  *    rk3, 4 for rkmerson; the steady circle holds theta; energy
@@ -207,7 +207,7 @@ static void check_fall(void) {
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
     dv_scenario sc = base();
     dv_scenario_set_number(&sc, "simbody", "timestep", 1e-3, NULL);
-    dv_scenario_set_number(&sc, "matched", "friction", cases[c].friction, NULL);
+    dv_scenario_set_core(&sc, "disk", "friction", cases[c].friction, NULL);
     dv_scenario_set_number(&sc, "matched", "half_thickness", 0.0, NULL);
     dv_scenario_set_number(&sc, "reduced", "theta_limit", cases[c].theta_limit, NULL);
     const int status = run(sc, FALL, 3.0);

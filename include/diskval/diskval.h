@@ -107,7 +107,8 @@ DISKVAL_API int diskval_scenario_new(const char *name, const diskval_disk *disk,
 /* set [engines.ENGINE] key from text, checked as in a file and by --set (e.g.
  * "mujoco", "timestep", "1e-4"): its range, then every engine section's
  * checks across keys (a theta_limit past the initial theta is refused); sc
- * is unchanged when it is refused */
+ * is unchanged when it is refused. ENGINE "disk" and key "friction" set
+ * [disk] friction, the coefficient every engine takes (default 2) */
 DISKVAL_API int diskval_scenario_set(diskval_scenario *sc, const char *engine, const char *key,
                                      const char *value, diskval_error *err);
 

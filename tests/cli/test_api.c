@@ -43,6 +43,15 @@ static void check_in_code(void) {
   CHECK(diskval_scenario_set(sc, "mujoco", "timestep", "1e-4", &err) == 0, "set: %s", err.msg);
   CHECK(diskval_scenario_set(sc, "mujoco", "no_such_key", "1", &err) < 0 && err.msg[0],
         "an unknown key is refused");
+  /* [disk] friction: set from code as in a file, refused as there */
+  CHECK(diskval_scenario_set(sc, "disk", "friction", "0.8", &err) == 0, "friction: %s", err.msg);
+  CHECK(diskval_scenario_set(sc, "disk", "friction", "nan", &err) < 0 &&
+            strstr(err.msg, "friction"),
+        "a NaN friction: %s", err.msg);
+  CHECK(diskval_scenario_set(sc, "disk", "friction", "-1", &err) < 0 &&
+            strstr(err.msg, "friction"),
+        "a negative friction: %s", err.msg);
+  CHECK(diskval_scenario_set(sc, "disk", "radius", "1", &err) < 0, "disk.radius is not set here");
   diskval_scenario_free(sc);
   const diskval_state flat = {.theta = 0.0};
   sc = NULL;

@@ -185,6 +185,9 @@ static void check_small_c(const dv_engine_type *e) {
   sc.disk.C = 1e-6 * sc.disk.m * sc.disk.r * sc.disk.r;
   const double y[RED_NSTATE] = {1.1, 0.2, 3.0, -6.0, 0, 0, 0, 0};
   memcpy(sc.initial, y, sizeof y);
+  /* as tiny_c.ini: the table's coefficient 5, the window cut at 2 */
+  dv_scenario_set_core(&sc, "disk", "friction", 5.0, NULL);
+  dv_scenario_set_number(&sc, "matched", "friction", 2.0, NULL);
   CHECK(dv_engine_derive_settings(&sc, NULL) == DV_OK, "derive settings");
   dv_scenario_set_number(&sc, "matched", "half_thickness", engine_h(e, &sc), NULL);
   dv_test_run(e, &sc, &a);
