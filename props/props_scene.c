@@ -157,6 +157,32 @@ static void bracket(scene *s, const dv_traj *tr, const dv_engine_result *base, d
   }
 }
 
+/* d: tr bent away past t_end changes no metric (pointwise: no pointwise one) */
+static void bent(scene *s, const dv_traj *tr, const dv_engine_result *base, double t_end,
+                 int pointwise) {
+  props_error tail = props_none();
+  tail.tail_after = t_end;
+  if (!(t_end < s->sc.duration - 2 * s->sc.output_dt && t_end < tr->s[tr->n - 1].t)) {
+    s->t->skipped[PROP_D]++; /* nothing past it */
+    return;
+  }
+  dv_comparison c;
+  dv_error err = {0};
+  s->t->checks[PROP_D]++;
+  const char *what = pointwise ? "the pointwise end" : "the window's end";
+  if (props_judge(&s->sc, tr, &tail, 0, &c, &err))
+    return fail(s, PROP_D, "bent past %s %g s: refused: %s", what, t_end, err.msg);
+  for (int m = 0; m < DV_NMETRICS; m++) {
+    if (pointwise && !dv_run_metric_pointwise((dv_metric_id)m)) continue;
+    const double v0 = base->vs_ref.value[m], v1 = c.r[0].vs_ref.value[m];
+    if (!(v0 == v1 || (isnan(v0) && isnan(v1)) || fabs(v1 - v0) <= 1e-9 * base->tolerance[m])) {
+      fail(s, PROP_D, "%s reads past %s %g s: %g -> %g", dv_metric_names[m], what, t_end, v0, v1);
+      break;
+    }
+  }
+  dv_run_comparison_free(&c);
+}
+
 /* metrics as shares of their limits of a and b differ by more than tol: the first such */
 static int differs(const dv_engine_result *a, const dv_engine_result *b, double tol, char *what,
                    size_t size, int thin_only) {
@@ -294,28 +320,9 @@ void props_scene(uint64_t seed, size_t index, unsigned which, props_tally *t, FI
       fail(&s, PROP_D, "a window of %zu samples passes", base->vs_ref.n_window);
     if (base->vs_ref.n_window < 2 && base->cause[0])
       fail(&s, PROP_D, "a cause from an empty window: %s", base->cause);
-    props_error tail = props_none();
-    tail.tail_after = base->vs_ref.t_window;
-    dv_comparison c;
-    if (base->vs_ref.t_window < s.sc.duration - 2 * s.sc.output_dt) {
-      t->checks[PROP_D]++;
-      if (props_judge(&s.sc, &tr, &tail, 0, &c, &err)) {
-        fail(&s, PROP_D, "bent past the window's end %g s: refused: %s", tail.tail_after, err.msg);
-      } else {
-        for (int m = 0; m < DV_NMETRICS; m++) {
-          const double v0 = base->vs_ref.value[m], v1 = c.r[0].vs_ref.value[m];
-          if (!(v0 == v1 || (isnan(v0) && isnan(v1)) ||
-                fabs(v1 - v0) <= 1e-9 * base->tolerance[m])) {
-            fail(&s, PROP_D, "%s reads past the window's end %g s: %g -> %g", dv_metric_names[m],
-                 tail.tail_after, v0, v1);
-            break;
-          }
-        }
-        dv_run_comparison_free(&c);
-      }
-    } else {
-      t->skipped[PROP_D]++;
-    }
+    bent(&s, &tr, base, base->vs_ref.t_window, 0);
+    if (base->pointwise_end < base->vs_ref.t_window - 0.5 * s.sc.output_dt)
+      bent(&s, &tr, base, base->pointwise_end, 1);
   }
   if (ok == 1 && base->pointwise_end > base->early_until + 2 * s.sc.output_dt) {
     if (which & 1u << PROP_B) {
