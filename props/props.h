@@ -31,7 +31,7 @@ typedef struct props_tally {
 int props_known(const props_tally *t, char p, const char *scene);
 
 /* what is done to a trajectory's samples, in this order: theta offset and
- * phase shift growing from 0 at t_from to their size at t_full, then held;
+ * phase shift growing from 0 at t_from to their size at t_full, and on;
  * past tail_after, every sample bent away; a rigid motion (rotation by dphi
  * about origin, then a shift); a similarity scaling (lengths lambda, times tau) */
 typedef struct props_error {

@@ -59,9 +59,9 @@ static void apply(const dv_scenario *sc, const dv_traj *tr, size_t i, const prop
   memcpy(y, s->y, sizeof s->y);
   *t = s->t;
   const double span = e->t_full - e->t_from;
-  const double ramp = s->t <= e->t_from ? 0.0 : s->t >= e->t_full ? 1.0 : (s->t - e->t_from) / span;
+  const double ramp = s->t <= e->t_from || !(span > 0.0) ? 0.0 : (s->t - e->t_from) / span;
   y[RED_TH] += e->theta * ramp;
-  if (ramp > 0.0 && ramp < 1.0) y[RED_VTH] += e->theta / span; /* the rate says so too */
+  if (ramp > 0.0) y[RED_VTH] += e->theta / span; /* the rate says so too */
   double u[2];
   tangent(tr, i, u);
   y[RED_X] += e->phase * ramp * u[0];
