@@ -51,7 +51,7 @@ int main(void) {
   double v[3];
   nutation(&ref, T0, 0.5, 0.0, 0.7, 0.0);
   nutation(&slow, T0 + 0.02, 0.5, 0.0, 0.7, 0.0); /* 0.02 s longer */
-  nutation(&decaying, T0, 0.5, 0.001, 0.7, 0.0); /* loses 0.00174 rad a period */
+  nutation(&decaying, T0, 0.5, 0.001, 0.7, 0.0);  /* loses 0.00174 rad a period */
   nutation(&steady, T0, 0.0, 0.0, 0.7, 0.0);
   nutation(&noisy, T0, 0.0, 0.0, 0.7, 1e-5); /* contact-sized wiggles, 1e-5 rad */
 
@@ -69,7 +69,7 @@ int main(void) {
   /* turning points are paired by count: the k-th minimum at (k - 1/2) T
    * has amplitude a - 0.001 t; the largest difference is the last one inside 8 s */
   dv_run_turning_compare(&decaying, &ref, INFINITY, v);
-  const double last = 0.001 * T0 * 4.0; /* the fourth maximum, t = 4 T = 6.97 s */
+  const double last = 0.001 * T0 * 4.0;     /* the fourth maximum, t = 4 T = 6.97 s */
   const double last_min = 0.001 * T0 * 4.5; /* the fifth minimum, t = 4.5 T = 7.84 s */
   /* measured 7.8e-8 rad (the decay shifts each turn off c +- amp) and 5.5e-7 s */
   CHECK_NEAR(v[0], fmax(last, last_min), 1e-6, "decaying amplitude: turning error");
@@ -91,7 +91,8 @@ int main(void) {
   CHECK_NEAR(v[0], 0.0, 1e-9, "no turning point moved in 2 s");
   dv_run_turning_compare(&slow, &ref, 4.0, v);
   CHECK_NEAR(v[1], 0.02, 1e-8, "one period in 4 s");
-  CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / T0, 2e-6, "fastest rate"); /* 1.8e-7 */
+  CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / T0, 2e-6,
+             "fastest rate"); /* 1.8e-7 */
 
   /* a turn just inside the window, where the reference's comes just after
    * it: timing, not a turning point off (upright_unstable's MuJoCo: a minimum
@@ -119,7 +120,29 @@ int main(void) {
   dv_run_turning_compare(&early, &later, INFINITY, v);
   CHECK_NEAR(v[0], 0.01 * 0.1, 1e-5, "a maximum inside the first interval");
 
-  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy, &rising, &rising_fast, &early, &later};
-  for (size_t i = 0; i < 9; i++) dv_run_traj_free(all[i]);
+  /* an engine that drifts 0.02 rad in 1 s and then holds, its rate wiggling
+   * about 0 (1e-5 rad at 900 rad/s): its maximum is the plateau whatever the
+   * count of the wiggles' sign changes up to the window's end. Before, each
+   * small reversal dropped the turn before it, so the maximum came and went
+   * with that count's parity (0.02 at one end, none a sample later) */
+  dv_traj settles = {0};
+  for (double t = 0.0; t <= DURATION + 1e-9; t += DT) {
+    dv_sample s;
+    memset(&s, 0, sizeof s);
+    s.t = t;
+    s.y[RED_TH] = 0.9 + 0.02 * fmin(t, 1.0) + 1e-5 * sin(900 * t);
+    s.y[RED_VTH] = (t < 1.0 ? 0.02 : 0.0) + 9e-3 * cos(900 * t);
+    s.y[RED_PH] = 0.7 * t;
+    s.y[RED_VPH] = 0.7;
+    dv_run_traj_push(&settles, &s);
+  }
+  for (int k = 0; k < 12; k++) {
+    dv_run_turning_compare(&settles, &steady, 5.0 + k * DT, v);
+    CHECK_NEAR(v[0], 0.02, 1e-4, "a drift that settles: its maximum, at any window's end");
+  }
+
+  dv_traj *all[] = {&ref,    &slow,        &decaying, &steady, &noisy,
+                    &rising, &rising_fast, &early,    &later,  &settles};
+  for (size_t i = 0; i < 10; i++) dv_run_traj_free(all[i]);
   return TEST_RESULT();
 }
