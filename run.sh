@@ -54,6 +54,7 @@ case "${1:-run}" in
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$(nproc)"
     ;;
   bench)
+    "$BUILD_DIR/props/diskval_props" --seed 2026 --count 500 || true # failures are findings, printed
     "$BUILD_DIR/bench/bench_reduced"
     "$BUILD_DIR/bench/bench_engines"
     "$BUILD_DIR/bench/bench_sweep" scenarios tests/data

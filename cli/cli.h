@@ -17,6 +17,7 @@ int dv_cli_best(int argc, char **argv);
 int dv_cli_attribute(int argc, char **argv);
 int dv_cli_map(int argc, char **argv);
 int dv_cli_verify(int argc, char **argv);
+int dv_cli_generate(int argc, char **argv);
 
 /* print "diskval COMMAND: message (see diskval COMMAND --help)" on stderr;
  * returns DV_EXIT_ERROR */

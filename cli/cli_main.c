@@ -32,6 +32,7 @@ static const char HELP[] =
     "  attribute SCENARIO --engine NAME               why an engine disagrees, in shares\n"
     "  map [--c A..B:N] [--spin A..B:N]               stability map of upright rolling\n"
     "  verify SCENARIO [--engines LIST]               do the engines converge to the reference\n"
+    "  generate --seed N --count K --out DIR          real objects drawn at random, as scenarios\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cli_usage_error(const char *command, const char *fmt, ...) {
@@ -85,11 +86,12 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     int (*run)(int, char **);
-  } commands[] = {{"simulate", dv_cli_simulate},   {"analyze", dv_cli_analyze},
-                  {"compare", dv_cli_compare},     {"judge", dv_cli_judge},     {"suite", dv_cli_suite},
-                  {"sweep", dv_cli_sweep},         {"best", dv_cli_best},
-                  {"attribute", dv_cli_attribute}, {"map", dv_cli_map},
-                  {"engines", dv_cli_engines},     {"verify", dv_cli_verify}};
+  } commands[] = {{"simulate", dv_cli_simulate}, {"analyze", dv_cli_analyze},
+                  {"compare", dv_cli_compare},   {"judge", dv_cli_judge},
+                  {"suite", dv_cli_suite},       {"sweep", dv_cli_sweep},
+                  {"best", dv_cli_best},         {"attribute", dv_cli_attribute},
+                  {"map", dv_cli_map},           {"engines", dv_cli_engines},
+                  {"verify", dv_cli_verify},     {"generate", dv_cli_generate}};
   gsl_set_error_handler_off();
   dv_io_temp_clean_on_signals(); /* a run ended by SIGINT or SIGTERM leaves no temporary */
   dv_exec_mpi_init(&argc, &argv);

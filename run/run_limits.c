@@ -9,7 +9,9 @@
 
 double dv_run_distance_rolled(const dv_traj *tr, double t_end) {
   double d = 0.0;
-  for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++)
+  /* to the window's end as dv_run_compare pairs samples, 1e-9 s apart: a
+   * reference's event sample that lies just past the engine's is in it */
+  for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-9; i++)
     d += hypot(tr->s[i].contact[0] - tr->s[i - 1].contact[0],
                tr->s[i].contact[1] - tr->s[i - 1].contact[1]);
   return d;

@@ -46,21 +46,27 @@ static turn locate(const dv_sample *a, const dv_sample *b, int kind) {
 /* the turning points of tr up to t_end into out (tr->n of room), swings
  * below DV_TURNING_MIN_SWING (from the start or the turn before) removed;
  * their count. A start's rate of +-1e-17 (a start at a turn) is no turn, being
- * no swing from the start; a real turn in the first interval is one */
+ * no swing from the start; a real turn in the first interval is one. A small
+ * reversal is skipped and a turn of the last one's kind after it keeps the
+ * more extreme of the two: theta_dot's rounding noise on a plateau (a steady
+ * circle after a swing) changes sign any number of times, and the turn before
+ * it must not come and go with that count's parity */
 static size_t turning_points(const dv_traj *tr, double t_end, turn *out) {
   size_t n = 0;
+  const double theta0 = tr->n ? tr->s[0].y[RED_TH] : 0.0;
   for (size_t i = 1; i < tr->n && tr->s[i].t <= t_end + 1e-12; i++) {
     const double d0 = tr->s[i - 1].y[RED_VTH], d1 = tr->s[i].y[RED_VTH];
     const int kind = d0 > 0 && d1 <= 0 ? 1 : d0 < 0 && d1 >= 0 ? -1 : 0;
     if (!kind) continue;
     const turn p = locate(&tr->s[i - 1], &tr->s[i], kind);
-    if (n == 0 && fabs(p.theta - tr->s[0].y[RED_TH]) < DV_TURNING_MIN_SWING)
-      continue; /* a small swing from the start */
-    if (n > 0 && fabs(p.theta - out[n - 1].theta) < DV_TURNING_MIN_SWING) {
-      n--; /* a small swing: drop it and the turn before; keep the more extreme of p's kind */
-      if (n > 0 && kind * (p.theta - out[n - 1].theta) > 0) out[n - 1] = p;
+    if (n == 0 && kind * (p.theta - theta0) < DV_TURNING_MIN_SWING)
+      continue; /* a small swing from the start, or one away from p's kind */
+    if (n > 0 && kind == out[n - 1].kind) {
+      if (kind * (p.theta - out[n - 1].theta) > 0) out[n - 1] = p;
       continue;
     }
+    if (n > 0 && fabs(p.theta - out[n - 1].theta) < DV_TURNING_MIN_SWING)
+      continue; /* a small reversal: no turn */
     out[n++] = p;
   }
   return n;

@@ -134,7 +134,29 @@ int main(void) {
   dv_run_turning_compare(&early, &later, INFINITY, v);
   CHECK_NEAR(v[0], 0.01 * 0.1, 1e-5, "a maximum inside the first interval");
 
-  dv_traj *all[] = {&ref, &slow, &decaying, &steady, &noisy, &rising, &rising_fast, &early, &later};
-  for (size_t i = 0; i < 9; i++) dv_run_traj_free(all[i]);
+  /* an engine that drifts 0.02 rad in 1 s and then holds, its rate wiggling
+   * about 0 (1e-5 rad at 900 rad/s): its maximum is the plateau whatever the
+   * count of the wiggles' sign changes up to the window's end. Before, each
+   * small reversal dropped the turn before it, so the maximum came and went
+   * with that count's parity (0.02 at one end, none a sample later) */
+  dv_traj settles = {0};
+  for (double t = 0.0; t <= DURATION + 1e-9; t += DT) {
+    dv_sample s;
+    memset(&s, 0, sizeof s);
+    s.t = t;
+    s.y[RED_TH] = 0.9 + 0.02 * fmin(t, 1.0) + 1e-5 * sin(900 * t);
+    s.y[RED_VTH] = (t < 1.0 ? 0.02 : 0.0) + 9e-3 * cos(900 * t);
+    s.y[RED_PH] = 0.7 * t;
+    s.y[RED_VPH] = 0.7;
+    dv_run_traj_push(&settles, &s);
+  }
+  for (int k = 0; k < 12; k++) {
+    dv_run_turning_compare(&settles, &steady, 5.0 + k * DT, v);
+    CHECK_NEAR(v[0], 0.02, 1e-4, "a drift that settles: its maximum, at any window's end");
+  }
+
+  dv_traj *all[] = {&ref,    &slow,        &decaying, &steady, &noisy,
+                    &rising, &rising_fast, &early,    &later,  &settles};
+  for (size_t i = 0; i < 10; i++) dv_run_traj_free(all[i]);
   return TEST_RESULT();
 }
