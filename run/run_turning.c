@@ -155,8 +155,13 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
     ref_periods += mr > 1;
     for (size_t k = 0; k + 1 < paired; k++) {
       period_err = fmax(period_err, fabs((ke[k + 1].t - ke[k].t) - (kr[k + 1].t - kr[k].t)));
-      heading_err =
-          fmax(heading_err, fabs((ke[k + 1].phi - ke[k].phi) - (kr[k + 1].phi - kr[k].phi)));
+      /* mod 2 pi: a file's phi may be wrapped, or unwrapped to the nearest
+       * branch where rows do not resolve its turning (a fall near flat) */
+      if (fmin(fmin(sin(ke[k].theta), sin(ke[k + 1].theta)),
+               fmin(sin(kr[k].theta), sin(kr[k + 1].theta))) < DV_TURNING_FLAT)
+        continue;
+      const double dh = (ke[k + 1].phi - ke[k].phi) - (kr[k + 1].phi - kr[k].phi);
+      heading_err = fmax(heading_err, fabs(remainder(dh, 2.0 * M_PI)));
     }
     if (mr > 1 && me < 2) period_err = heading_err = INFINITY; /* the engine lost the nutation */
   }

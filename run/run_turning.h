@@ -30,6 +30,12 @@
 /* rad: a tenth of the default theta limit; smaller swings (contact noise on
  * a steady circle: measured up to 2.4e-5 rad, the early errors) are not turns */
 #define DV_TURNING_MIN_SWING 1e-3
+/* the heading advance between two turns is not compared where a turn of
+ * either run has sin theta below this: near flat phi whirls between the
+ * samples, and its value at the turn is the interpolant's guess (the column
+ * check's DV_TRAJ_FLAT_TURN: diskval_props, property a, seed 1 scenes 27, 33
+ * gave 0.84 and 1.84 rad for the reference against itself as poses) */
+#define DV_TURNING_FLAT 0.2
 
 /* the three measures of e against ref over samples up to t_end into out:
  * theta_turning_err, nutation_period_err, heading_period_err */

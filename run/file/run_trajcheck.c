@@ -44,19 +44,36 @@ double dv_run_trajcheck_centre(dv_trajfile *f, const dv_scenario *sc, const doub
   *k = 0;
   if (f->n) {
     const double dt = f->s[f->n].t - f->s[f->n - 1].t;
-    const double speed = fmax(sc->disk.r * rate_scale_of(sc),
-                              fmax(hypot(vel[0], vel[1]), hypot(f->centre_vel[0], f->centre_vel[1])));
+    const double speed =
+        fmax(sc->disk.r * rate_scale_of(sc),
+             fmax(hypot(vel[0], vel[1]), hypot(f->centre_vel[0], f->centre_vel[1])));
+    const dv_sample *a = &f->s[f->n - 1], *s = &f->s[f->n];
+    /* theta turning near flat within the step: the centre whirls with phi
+     * between the rows, unresolved by them (as in dv_run_trajcheck_columns) */
+    const int flat_turn = a->y[RED_VTH] * s->y[RED_VTH] < 0.0 &&
+                          fmin(sin(a->y[RED_TH]), sin(s->y[RED_TH])) < DV_TRAJ_FLAT_TURN;
     for (int i = 0; i < 2; i++) {
+      /* a velocity that changes by more than the allowance within the step
+       * is not resolved by the samples (a fall near lying down, as the
+       * angles' rates in dv_run_trajcheck_columns): the trapezoid says
+       * nothing there, nor about the next step's change of miss */
+      if (flat_turn || fabs(vel[i] - f->centre_vel[i]) > DV_TRAJ_CENTRE_TOL * speed) {
+        e[i] = NAN;
+        continue;
+      }
       /* the step's miss of the trapezoid, and its change from the step
        * before: smooth motion misses by a smooth amount, a centre sliding
        * back and forth under rolling velocities by turns */
       e[i] = (pos[i] - f->centre[i] - 0.5 * dt * (f->centre_vel[i] + vel[i])) / (dt * speed);
-      const double d = fmax(fabs(e[i]) / DV_TRAJ_CENTRE_TOL,
-                            f->n > 1 ? fabs(e[i] - f->centre_miss[i]) / DV_TRAJ_CENTRE_TURN : 0.0);
+      const double turn = f->n > 1 && !isnan(f->centre_miss[i])
+                              ? fabs(e[i] - f->centre_miss[i]) / DV_TRAJ_CENTRE_TURN
+                              : 0.0;
+      const double d = fmax(fabs(e[i]) / DV_TRAJ_CENTRE_TOL, turn);
       if (!(d <= worst)) worst = d, *k = i;
     }
   }
-  for (int i = 0; i < 2; i++) f->centre[i] = pos[i], f->centre_vel[i] = vel[i], f->centre_miss[i] = e[i];
+  for (int i = 0; i < 2; i++)
+    f->centre[i] = pos[i], f->centre_vel[i] = vel[i], f->centre_miss[i] = e[i];
   return worst;
 }
 
