@@ -17,7 +17,7 @@
 static void check_friction_cone(void) {
   dv_scenario sc;
   dv_engine_init_scenario(&sc);
-  const double mu = dv_matched_settings_of(&sc)->friction;
+  const double mu = dv_matched_friction(&sc);
   dv_sample s[3];
   memset(s, 0, sizeof s);
   const double each[3] = {0.5, 0.7, 0.72}; /* of mu Fz: magnitudes 0.71, 0.99, 1.018 */
