@@ -303,7 +303,7 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
     snprintf(left, sizeof left,
              "the reference leaves its validity window, the friction cone of mu %g, at t = %g "
              "s: too soon to measure",
-             dv_matched_settings_of(sc)->friction, pr.valid);
+             dv_matched_friction(sc), pr.valid);
     no_probe = left;
   } else if (status)
     no_probe = "the reference does not run through the probe";
