@@ -44,7 +44,7 @@ static int read_known(const char *path, props_tally *t) {
     char(*grown)[80] = realloc(t->known_list, (t->nknown + 1) * sizeof *grown);
     if (!grown) return fclose(fp), -1;
     t->known_list = grown;
-    snprintf(t->known_list[t->nknown++], 80, "%s", line);
+    snprintf(t->known_list[t->nknown++], 80, "%.79s", line);
   }
   return fclose(fp), 0;
 }
