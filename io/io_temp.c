@@ -73,7 +73,9 @@ int dv_io_temp_remove_stale(const char *dir) {
     struct stat st;
     if (lstat(path, &st)) continue;
     /* a directory: a report diskval marked (a dead run's, whatever it holds), or
-     * one that died before its mark */
+     * one that died before its mark, holding at most the mark's own temporary
+     * file (killed between its mkstemp and its rename) */
+    if (S_ISDIR(st.st_mode) && !dv_io_owned(path)) dv_io_temp_remove_stale(path);
     if (S_ISDIR(st.st_mode) ? (dv_io_owned(path) ? dv_io_remove_tree(path) : rmdir(path))
                             : S_ISREG(st.st_mode) ? unlink(path) : -1)
       continue;
