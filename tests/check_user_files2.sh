@@ -217,12 +217,15 @@ mkdir tm/.diskval-tmp.99998.abcdef # a dead run's report, half written: removed
 echo "diskval output directory, format 1" >tm/.diskval-tmp.99998.abcdef/.diskval-report
 echo "# r" >tm/.diskval-tmp.99998.abcdef/report.md
 echo half >tm/.diskval-tmp.99998.abcdef/.diskval-tmp.99998.Xyz123 # the file it was writing
+mkdir tm/.diskval-tmp.99998.ghijkl # killed before its mark's rename: only that temporary file
+echo "diskval output directory, format 1" >tm/.diskval-tmp.99998.ghijkl/.diskval-tmp.99998.Mark12
 sums=$(sha256sum tm/.diskval-tmp.099999.abcdef)
 if ! kill -0 99999 99998 2>/dev/null; then
   "$dv" simulate sc.ini --engine reduced --out tm/run.csv 2>/dev/null
   check '[ "$(sha256sum tm/.diskval-tmp.099999.abcdef)" = "$sums" ]' \
     "a user's file named like a stale temporary was removed"
   check '[ ! -e tm/.diskval-tmp.99998.abcdef ]' "a dead run's report was not removed"
+  check '[ ! -e tm/.diskval-tmp.99998.ghijkl ]' "a dead run's report killed before its mark stayed"
 fi
 mkdir lk
 echo "a user's notes" >lk/.diskval.lock
