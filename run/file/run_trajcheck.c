@@ -31,6 +31,13 @@ void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double heigh
   if (f->ground_fault) f->ground_row = f->n;
 }
 
+/* theta turns between rows a and s with sin theta below DV_TRAJ_FLAT_TURN:
+ * phi, psi and the centre whirl there, unresolved by the rows */
+static int turns_near_flat(const dv_sample *a, const dv_sample *s) {
+  return a->y[RED_VTH] * s->y[RED_VTH] < 0.0 &&
+         fmin(sin(a->y[RED_TH]), sin(s->y[RED_TH])) < DV_TRAJ_FLAT_TURN;
+}
+
 /* the scene's rate scale: sqrt(g/r), or a larger initial rate */
 static double rate_scale_of(const dv_scenario *sc) {
   double rate_scale = sqrt(sc->disk.g / sc->disk.r);
@@ -50,8 +57,7 @@ double dv_run_trajcheck_centre(dv_trajfile *f, const dv_scenario *sc, const doub
     const dv_sample *a = &f->s[f->n - 1], *s = &f->s[f->n];
     /* theta turning near flat within the step: the centre whirls with phi
      * between the rows, unresolved by them (as in dv_run_trajcheck_columns) */
-    const int flat_turn = a->y[RED_VTH] * s->y[RED_VTH] < 0.0 &&
-                          fmin(sin(a->y[RED_TH]), sin(s->y[RED_TH])) < DV_TRAJ_FLAT_TURN;
+    const int flat_turn = turns_near_flat(a, s);
     for (int i = 0; i < 2; i++) {
       /* a velocity that changes by more than the allowance within the step
        * is not resolved by the samples (a fall near lying down, as the
@@ -110,8 +116,7 @@ int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int cc
       continue; /* phi, psi undefined lying flat */
     /* theta turning near flat within the step: phi and psi whirl between the
      * rows (rates like 1 / sin^2 theta at the turn), unresolved by them */
-    const int flat_turn = a->y[RED_VTH] * s->y[RED_VTH] < 0.0 &&
-                          fmin(sin(a->y[RED_TH]), sin(s->y[RED_TH])) < DV_TRAJ_FLAT_TURN;
+    const int flat_turn = turns_near_flat(a, s);
     for (int k = 0; k < 3; k++) {
       if (k > 0 && flat_turn) continue;
       const double step = 0.5 * dt * (a->y[rate[k]] + s->y[rate[k]]);
