@@ -192,8 +192,8 @@ void diskval_scenario_free(diskval_scenario *sc) {
 
 /* the name of engine i of the registry */
 const char *diskval_engine_name(size_t i) {
-  for (size_t k = 0; dv_engines[k]; k++)
-    if (k == i) return dv_engines[k]->name;
+  for (size_t k = 0; dv_engine_list()[k]; k++)
+    if (k == i) return dv_engine_list()[k]->name;
   return NULL;
 }
 

@@ -57,9 +57,9 @@ int dv_cli_error(const char *command, const char *fmt, ...) {
 
 int dv_cli_unknown_engine(const char *command, const char *name) {
   char names[256] = "";
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
-             e == dv_engines ? "" : ", ", (*e)->name);
+             e == dv_engine_list() ? "" : ", ", (*e)->name);
   return dv_cli_error(command, "unknown engine '%s' (one of: %s)", name, names);
 }
 
@@ -70,9 +70,9 @@ int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_erro
     return status;
   }
   size_t n = 0;
-  _Static_assert(DV_NENGINES <= DV_MAX_ENGINES, "every engine fits in one comparison");
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
-    if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
+  _Static_assert(DV_NENGINES <= DV_MAX_ENGINES, "every linked engine fits in one comparison");
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) /* outside ones: by name */
+    if ((*e)->role == DV_ENGINE_CONTACT && !(*e)->outside) engines[n++] = *e;
   engines[n] = NULL;
   return DV_OK;
 }

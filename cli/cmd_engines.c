@@ -2,16 +2,44 @@
  * its settings table (key, default, range or choices, unit, what it is). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
+#include "adapter.h"
 #include "cli.h"
 #include "cli_args.h"
 #include "dv_engine.h"
 #include "red_solver.h"
 
 static const char HELP[] =
-    "usage: diskval engines\n\nList the engines, their library versions and settings\n"
+    "usage: diskval engines [--scene SCENARIO NAME]\n\n"
+    "List the engines, their library versions and settings\n"
     "([engines.NAME] KEY = VALUE in a scenario, or --set engines.NAME.KEY=VALUE), and\n"
-    "the reference's integrators.\n";
+    "the reference's integrators. Engines outside the build (adapters: the source tree's\n"
+    "adapters/ and the folders DISKVAL_ADAPTERS lists) say where they are, or why they\n"
+    "cannot run; they run only where named (--engines, [scenario] engines).\n"
+    "  --scene S NAME  print the lines adapter NAME is sent for scenario S, up to 'start'\n"
+    "                  (docs/adapters.md): run an adapter by hand with them\n";
+
+/* the scene's lines for adapter name in scenario path, as a run sends them */
+static int print_scene(const char *path, const char *name, const dv_cli_list *sets) {
+  const dv_engine_type *e = dv_engine_find(name);
+  const dv_adapter *a = e ? dv_adapter_of(e) : NULL;
+  if (!a) return dv_cli_error("engines", "'%s' is no adapter (diskval engines lists them)", name);
+  const dv_engine_type *const only[] = {e, NULL};
+  dv_engine_choose_only(only);
+  dv_scenario *sc = malloc(sizeof *sc);
+  char text[8192];
+  dv_error err;
+  if (!sc) return dv_cli_error("engines", "out of memory");
+  int status = dv_cli_load_scenario("engines", path, sets, sc, &err);
+  if (status != DV_OK)
+    status = dv_cli_error("engines", "%s", err.msg);
+  else if (dv_adapter_scene_text(a, sc, NULL, text, sizeof text, &err))
+    status = dv_cli_error("engines", "%s", err.msg);
+  if (status == DV_OK) fputs(text, stdout);
+  free(sc);
+  return status == DV_OK ? DV_EXIT_OK : status;
+}
 
 /* one setting: key, default, range or choices, unit and what it is */
 static void print_setting(const dv_setting_spec *sp) {
@@ -34,16 +62,32 @@ static void print_setting(const dv_setting_spec *sp) {
 }
 
 int dv_cli_engines(int argc, char **argv) {
-  const dv_cli_command cmd = {"engines", HELP, NULL, 0, 0, 0};
+  const char *scene = NULL;
+  const dv_cli_option options[] = {{"scene", DV_CLI_TEXT, &scene, 0, 0}};
+  const dv_cli_command cmd = {"engines", HELP, options, 1, 0, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
+  if (scene || a.args.n) {
+    const int status = scene && a.args.n == 1
+                           ? print_scene(scene, a.args.items[0], &a.sets)
+                           : dv_cli_error("engines", "--scene SCENARIO NAME takes both");
+    dv_cli_args_free(&cmd, &a);
+    return status;
+  }
   dv_cli_args_free(&cmd, &a);
-  for (const dv_engine_type *const *e = dv_engines; *e; e++) {
-    printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) {
+    const dv_adapter *ad = dv_adapter_of(*e);
+    if (ad && ad->missing[0])
+      printf("%-10s %s [not available: %s]\n", (*e)->name, (*e)->description, ad->missing);
+    else
+      printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
+    if (ad) printf("    (outside the build: %s, run as: %s)\n", ad->dir, ad->command);
     for (size_t i = 0; (*e)->settings && i < (*e)->settings->nspecs; i++)
       print_setting(&(*e)->settings->specs[i]);
   }
+  if (dv_adapter_problems()[0])
+    printf("\nadapters that cannot be read:\n%s", dv_adapter_problems());
   printf("\nreference integrators (default %s):\n", red_stepper_default()->name);
   for (const red_stepper_type *const *t = red_steppers; *t; t++)
     printf("  %-20s %s\n", (*t)->name, (*t)->description);

@@ -49,7 +49,7 @@ static int check_values(const dv_scenario *sc, const dv_vary *v, dv_error *err) 
 static const dv_engine_type *other_engine(const char *key, const dv_engine_type *engine) {
   const char *dot = strrchr(key, '.');
   if (strncmp(key, "engines.", 8) || !dot) return NULL;
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     if (*e != engine && (*e)->role == DV_ENGINE_CONTACT &&
         strlen((*e)->name) == (size_t)(dot - key - 8) &&
         !strncmp(key + 8, (*e)->name, (size_t)(dot - key - 8)))

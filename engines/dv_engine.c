@@ -2,26 +2,46 @@
 #include "dv_engine.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "dv_format.h"
 #include "dv_pose.h"
+#include "adapter.h"
 
 #define DV_ENGINE(name) &dv_engine_##name,
-const dv_engine_type *const dv_engines[] = {
+const dv_engine_type *const dv_engines_linked[] = {
 #include "dv_engines.def"
     NULL};
 #undef DV_ENGINE
 
+static const dv_engine_type *registry[DV_MAX_REGISTERED + 1];
+static pthread_once_t once = PTHREAD_ONCE_INIT;
+
+/* the linked engines, then the adapters found (adapter.h) */
+static void build(void) {
+  size_t n = 0;
+  const dv_adapter *const *a;
+  for (const dv_engine_type *const *e = dv_engines_linked; *e; e++) registry[n++] = *e;
+  const size_t na = dv_adapters(&a);
+  for (size_t i = 0; i < na; i++) registry[n++] = &a[i]->type;
+  registry[n] = NULL;
+}
+
+const dv_engine_type *const *dv_engine_list(void) {
+  pthread_once(&once, build);
+  return registry;
+}
+
 const dv_engine_type *dv_engine_find(const char *name) {
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     if (strcmp((*e)->name, name) == 0) return *e;
   return NULL;
 }
 
 const dv_engine_type *dv_engine_of_role(dv_engine_role role) {
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     if ((*e)->role == role) return *e;
   return NULL;
 }
@@ -48,6 +68,7 @@ void dv_engine_lay_down(dv_engine_stats *stats, int lower, double theta_limit, d
 int dv_engine_stand_in(const dv_engine_type *engine, const dv_scenario *sc) {
   const dv_engine_contact *k = engine->contact;
   if (!k) return 0;
+  if (!k->geom_key) return 1; /* an engine with no thin disk: a cylinder always */
   const dv_setting_spec *geom = dv_settings_find(engine->settings, k->geom_key);
   const char *shape =
       dv_setting_choice(geom, (size_t)dv_scenario_get(sc, engine->name, k->geom_key));
@@ -84,9 +105,10 @@ void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, c
 
 /* every engine's settings table, NULL-terminated */
 static void tables(const dv_settings_section **out) {
-  _Static_assert(DV_NENGINES <= DV_MAX_ENGINE_SECTIONS, "every engine's settings section fits");
+  _Static_assert(DV_MAX_REGISTERED <= DV_MAX_ENGINE_SECTIONS,
+                 "every engine's settings section fits");
   size_t n = 0;
-  for (const dv_engine_type *const *e = dv_engines; *e; e++)
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     if ((*e)->settings) out[n++] = (*e)->settings;
   out[n] = NULL;
 }
@@ -124,9 +146,9 @@ int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_
     const dv_engine_type *e = dv_engine_find(tok);
     if (!e) {
       char names[256] = "";
-      for (const dv_engine_type *const *k = dv_engines; *k; k++)
+      for (const dv_engine_type *const *k = dv_engine_list(); *k; k++)
         snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
-                 k == dv_engines ? "" : ", ", (*k)->name);
+                 k == dv_engine_list() ? "" : ", ", (*k)->name);
       return dv_fail(err, DV_EINPUT, "unknown engine '%s' (one of: %s)", tok, names);
     }
     for (size_t k = 0; k < n; k++) /* a report holds one result per engine */

@@ -92,6 +92,12 @@ typedef struct dv_engine_search {
   const char *work_precision;
 } dv_engine_search;
 
+/* a further knob attribution turns: key to value ("gyroscopic" to "on") */
+typedef struct dv_engine_extra_knob {
+  const char *what; /* "gyroscopic term" */
+  const char *key, *value;
+} dv_engine_extra_knob;
+
 /* a contact engine's keys of [engines.NAME] that attribution turns */
 typedef struct dv_engine_contact {
   const char *geom_key;      /* the body's shape, e.g. "geom" */
@@ -100,6 +106,10 @@ typedef struct dv_engine_contact {
   double stiffer;            /* factor on it for a stiffer contact (0.25, 0.01) */
   double softness_min_steps; /* the library raises the softness to this many steps (0: none) */
   const char *friction_key;  /* e.g. "friction" */
+  /* an adapter's: geom_key and thin_choice NULL where the engine has no thin
+   * disk (a cylinder always); softness_key NULL where it has no softness */
+  const dv_engine_extra_knob *extra;
+  size_t nextra;
 } dv_engine_contact;
 
 typedef struct dv_engine_type {
@@ -127,6 +137,10 @@ typedef struct dv_engine_type {
    * reads; NULL for the registry's engines, which use alloc */
   void *(*alloc_self)(const struct dv_engine_type *self, const dv_scenario *sc, dv_error *err);
   const void *data;
+  /* an engine outside the build (an adapter, engines/adapter/): run only
+   * where named, never by default; why it cannot run ("" where it can) */
+  int outside;
+  const char *missing;
 } dv_engine_type;
 
 /* every engine's table, dv_engine_NAME (engines/NAME/), as dv_engines.def lists them */
@@ -139,8 +153,15 @@ enum { DV_NENGINES = 0
 };
 #undef DV_ENGINE
 
-/* NULL-terminated list of every engine */
-extern const dv_engine_type *const dv_engines[];
+/* the engines linked in, NULL-terminated (dv_engines.def) */
+extern const dv_engine_type *const dv_engines_linked[];
+
+#define DV_MAX_ADAPTERS 12 /* engines outside the build a process takes (adapter.h) */
+#define DV_MAX_REGISTERED (DV_NENGINES + DV_MAX_ADAPTERS)
+
+/* every engine, NULL-terminated: the linked ones, then the adapters found
+ * (engines/adapter/adapter.h), read once per process */
+const dv_engine_type *const *dv_engine_list(void);
 
 /* the engine called name, or NULL */
 const dv_engine_type *dv_engine_find(const char *name);

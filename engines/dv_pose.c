@@ -112,3 +112,27 @@ void dv_pose_lowest_point(const dv_geometry *g, const dv_pose *p, double pt[3], 
   }
   *slip = sqrt(red_dot(v, v));
 }
+
+void dv_quat_to_matrix(const double q[4], double R[9]) {
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
+  R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
+  R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
+}
+
+void dv_matrix_to_quat(const double R[9], double q[4]) {
+  const double tr = R[0] + R[4] + R[8];
+  const double c[4] = {1 + tr, 1 + R[0] - R[4] - R[8], 1 - R[0] + R[4] - R[8],
+                       1 - R[0] - R[4] + R[8]}; /* 4 w^2, 4 x^2, 4 y^2, 4 z^2 */
+  int k = 0;
+  for (int i = 1; i < 4; i++)
+    if (c[i] > c[k]) k = i;
+  const double s = 0.5 / sqrt(c[k]);
+  const double wx = (R[7] - R[5]) * s, wy = (R[2] - R[6]) * s, wz = (R[3] - R[1]) * s;
+  const double xy = (R[1] + R[3]) * s, xz = (R[2] + R[6]) * s, yz = (R[5] + R[7]) * s;
+  const double big = 0.5 * sqrt(c[k]);
+  const double out[4][4] = {
+      {big, wx, wy, wz}, {wx, big, xy, xz}, {wy, xy, big, yz}, {wz, xz, yz, big}};
+  const double sign = out[k][0] < 0 ? -1.0 : 1.0;
+  for (int i = 0; i < 4; i++) q[i] = sign * out[k][i];
+}

@@ -50,4 +50,12 @@ double dv_pose_energy(const red_disk *disk, const dv_pose *pose);
 void dv_pose_lowest_point(const dv_geometry *geom, const dv_pose *pose, double p[3],
                           double *slip_speed);
 
+/* the body-to-world rotation (row-major, body axes as columns) of the unit
+ * quaternion q = (w, x, y, z) */
+void dv_quat_to_matrix(const double q[4], double R[9]);
+
+/* the unit quaternion (w, x, y, z), w >= 0, of the rotation R (Shepperd's
+ * method: from the largest of its four squared components) */
+void dv_matrix_to_quat(const double R[9], double q[4]);
+
 #endif

@@ -65,14 +65,14 @@ static uint64_t scene_key(const dv_scenario *sc, const dv_engine_type *engine,
   h = mix(h, &g.choice, sizeof g.choice);
   h = mix(h, &g.timestep, sizeof g.timestep);
   h = mix(h, &g.softness, sizeof g.softness);
-  const dv_settings_section *secs[3] = {
-      engine->settings, dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->settings,
-      dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->settings};
+  const dv_settings_section *secs[3] = {engine->settings,
+                                        dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->settings,
+                                        dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->settings};
   h = mix(h, &sc->thickness, sizeof sc->thickness);
   /* a shape given picks the probe's reference, even at its default value */
-  const int shape_given[2] = {
-      engine->contact && dv_scenario_is_given(sc, engine->name, engine->contact->geom_key),
-      dv_scenario_is_given(sc, engine->name, "half_thickness")};
+  const int shape_given[2] = {engine->contact && engine->contact->geom_key &&
+                                  dv_scenario_is_given(sc, engine->name, engine->contact->geom_key),
+                              dv_scenario_is_given(sc, engine->name, "half_thickness")};
   h = mix(h, shape_given, sizeof shape_given);
   for (int s = 0; s < 3; s++) {
     const void *block = dv_scenario_settings(sc, secs[s]->name);
@@ -88,7 +88,7 @@ static uint64_t scene_key(const dv_scenario *sc, const dv_engine_type *engine,
 static int run_samples(const dv_engine_type *type, const dv_scenario *sc, const probe *pr,
                        double theta[], double xy[][2], dv_sample *keep) {
   dv_error err = {{0}};
-  void *e = type->alloc(sc, &err);
+  void *e = type->alloc_self ? type->alloc_self(type, sc, &err) : type->alloc(sc, &err);
   int got = 0;
   if (e && type->reset(e, sc->initial, &err) == DV_OK) {
     for (int i = 0; i < pr->ns; i++) {
@@ -355,24 +355,26 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
 }
 
 /* the engines this process runs (dv_engine_choose_only); none set: every engine */
-static const dv_engine_type *running[DV_NENGINES + 1];
+static const dv_engine_type *running[DV_MAX_REGISTERED + 1];
 static int running_set;
 
 void dv_engine_choose_only(const dv_engine_type *const *engines) {
   size_t n = 0;
   running_set = engines != NULL;
-  for (; engines && engines[n] && n < DV_NENGINES; n++) running[n] = engines[n];
+  for (; engines && engines[n] && n < DV_MAX_REGISTERED; n++) running[n] = engines[n];
   running[n] = NULL;
 }
 
-/* does engine run in sc: this process's engines, or those sc names ([scenario] engines) */
+/* does engine run in sc: this process's engines, or those sc names ([scenario] engines);
+ * an engine outside the build runs only where named */
 static int runs_in(const dv_scenario *sc, const dv_engine_type *engine) {
-  if (!running_set) return 1;
+  if (!running_set && !engine->outside) return 1;
   for (size_t i = 0; running[i]; i++)
     if (running[i] == engine) return 1;
   char list[sizeof sc->engines];
   snprintf(list, sizeof list, "%s", sc->engines);
-  for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok; tok = strtok_r(NULL, ", ", &save))
+  for (char *save = NULL, *tok = strtok_r(list, ", ", &save); tok;
+       tok = strtok_r(NULL, ", ", &save))
     if (strcmp(tok, engine->name) == 0) return 1;
   return 0;
 }
@@ -381,7 +383,8 @@ void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
                       const dv_engine_knobs *knobs, int default_choice, const dv_knob_choice *given,
                       dv_knob_choice *out, char *why, size_t size, const char **keys) {
   const int runs = runs_in(sc, engine);
-  const uint64_t key = scene_key(sc, engine, given) ^ (uint64_t)!runs; /* an unprobed choice apart */
+  const uint64_t key =
+      scene_key(sc, engine, given) ^ (uint64_t)!runs; /* an unprobed choice apart */
   const memo_entry *hit = NULL;
   for (int i = 0; i < nmemo && !hit; i++)
     if (memo[i].key == key) hit = &memo[i];

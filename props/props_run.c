@@ -100,7 +100,7 @@ int props_judge(const dv_scenario *sc, const dv_traj *tr, const props_error *e, 
     dv_pose p;
     dv_pose_from_state(&geom, y, &p);
     double q[4];
-    dv_run_matrix_to_quat(p.R, q);
+    dv_matrix_to_quat(p.R, q);
     status = dv_run_trajfile_push_pose(&f, sc, t, p.pos, q, p.vel, p.omega, err);
   }
   if (!status) status = dv_run_trajfile_end(&f, sc, err);

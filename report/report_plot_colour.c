@@ -1,7 +1,7 @@
 /* dv_report_plot_engine_colour: one colour per engine in every plot.
  *
  * The thin-disk reference is black; the other engines of the registry
- * (dv_engines) take the palette's colours in turn, contact engines first,
+ * (dv_engine_list()) take the palette's colours in turn, contact engines first,
  * then the other references; a name the registry does not know gets one of
  * the colours after those, by a hash of its name.
  */
@@ -15,7 +15,7 @@
 static int registry_slot(const dv_engine_type *e, int *ncoloured) {
   int slot = -1, k = 0;
   for (int contact = 1; contact >= 0; contact--)
-    for (const dv_engine_type *const *t = dv_engines; *t; t++) {
+    for (const dv_engine_type *const *t = dv_engine_list(); *t; t++) {
       if ((*t)->role == DV_ENGINE_THIN_REFERENCE || ((*t)->role == DV_ENGINE_CONTACT) != contact)
         continue;
       if (*t == e) slot = k;

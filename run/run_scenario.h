@@ -30,7 +30,7 @@
 #include "dv_engine.h"
 #include "scenario.h"
 
-#define DV_MAX_ENGINES 8 /* engines compared in one run */
+#define DV_MAX_ENGINES 16 /* engines compared in one run */
 #define DV_MAX_FAILURES (DV_NMETRICS + 1)
 /* a compared window shorter than this share of the reference's run is not judged */
 #define DV_MIN_WINDOW_FRACTION 0.1

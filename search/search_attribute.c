@@ -82,7 +82,8 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   const double friction = dv_scenario_get(scenario, name, k->friction_key);
   /* an engine that simulates the scene's cylinder is measured against its own
    * reference, in its own shape: the thin disk is not its body */
-  const int own = scenario->thickness > 0.0 && dv_engine_own_body(engine, scenario);
+  const int own = (scenario->thickness > 0.0 && dv_engine_own_body(engine, scenario)) ||
+                  !k->thin_choice; /* an engine with no thin disk: its shape, its reference */
   const int stand_in = dv_engine_stand_in(engine, scenario) && !own;
   char thin[128], steps[4][128], softs[4][128], stiff[128], rough[128];
   snprintf(thin, sizeof thin, "engines.%s.%s=%s", name, k->geom_key, k->thin_choice);
@@ -129,7 +130,9 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   for (int i = 0; !status && i < 3; i++)
     status =
         dv_search_probe_theta(&pr, &e.dt[i], err, shape, steps[i], follows ? softs[i] : NULL, NULL);
-  if (!status) status = dv_search_probe_theta(&pr, &e.stiff, err, shape, steps[f], stiff, rough);
+  if (!status)
+    status = dv_search_probe_theta(&pr, &e.stiff, err, shape, steps[f],
+                                   k->softness_key ? stiff : NULL, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
   return dv_search_attribute_knobs(scenario, engine_name, out, err);

@@ -37,7 +37,7 @@ typedef struct dv_attribution_errors {
 } dv_attribution_errors;
 
 /* one knob the engine declares, changed alone (the rest as the scene derives it) */
-#define DV_MAX_KNOBS 8
+#define DV_MAX_KNOBS 12
 typedef struct dv_knob_probe {
   const char *knob; /* "integrator", "timestep", "contact softness", "friction", "geometry" */
   char change[64];  /* "rk4 -> implicit", "5e-05 -> 1.25e-05 s" */

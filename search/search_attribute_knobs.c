@@ -48,7 +48,8 @@ static void judge(const dv_attribution *a, dv_knob_probe *k) {
       /* an infinite base (a nutation the engine lost) is removed only within the limit */
       const double excess = isfinite(a->base[m])
                                 ? (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m])
-                                : k->metric[m] <= a->limit[m] ? 0.0 : INFINITY;
+                            : k->metric[m] <= a->limit[m] ? 0.0
+                                                          : INFINITY;
       k->worst = fmax(k->worst, k->metric[m] / a->limit[m]);
       if (!(excess <= RESIDUE)) k->removes = 0;
     }
@@ -84,14 +85,32 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   const double dt = dv_scenario_get(sc, name, se->step_key);
   const double soft = dv_scenario_get(sc, name, k->softness_key);
   const double friction = dv_scenario_get(sc, name, k->friction_key);
-  kn[n] = (knob){se->step_key, "", {""}, 2, 4.0};
+  kn[n] = (knob){se->step_key, "", {""}, k->softness_min_steps > 0.0 ? 2 : 1, 4.0};
   snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g s", dt, dt / 4);
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, se->step_key, dt / 4);
   snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, k->softness_key,
            fmax(soft, k->softness_min_steps * dt / 4));
   n++;
+  for (size_t x = 0; x < k->nextra && n < DV_MAX_KNOBS - 3; x++) { /* an adapter's own knobs */
+    const dv_setting_spec *sp = dv_settings_find(engine->settings, k->extra[x].key);
+    const double v = dv_scenario_get(sc, name, k->extra[x].key);
+    const char *now_text =
+        sp && sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
+    if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue; /* already so */
+    kn[n] = (knob){k->extra[x].what, "", {""}, 1, 1.0};
+    if (now_text)
+      snprintf(kn[n].change, sizeof kn[n].change, "%s %s -> %s", k->extra[x].key, now_text,
+               k->extra[x].value);
+    else
+      snprintf(kn[n].change, sizeof kn[n].change, "%s %.3g -> %s", k->extra[x].key, v,
+               k->extra[x].value);
+    snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, k->extra[x].key,
+             k->extra[x].value);
+    n++;
+  }
   /* a stiffer contact, at a step that resolves it where the library ties them */
   const double stiff = fmax(soft, k->softness_min_steps * dt) * k->stiffer;
+  if (!k->softness_key) goto friction; /* an engine with no softness to turn */
   const double step = k->softness_min_steps > 0.0 ? fmin(dt, stiff / k->softness_min_steps) : dt;
   kn[n] = (knob){"contact softness", "", {""}, 2, dt / step};
   snprintf(kn[n].change, sizeof kn[n].change, "%s %.3g -> %.3g", k->softness_key,
@@ -99,13 +118,14 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->softness_key, stiff);
   snprintf(kn[n].over[1], sizeof kn[n].over[1], "engines.%s.%s=%.9g", name, se->step_key, step);
   n++;
+friction:
   kn[n] = (knob){"friction", "", {""}, 1, 1.0};
   snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g", friction, 10 * friction);
   snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%.9g", name, k->friction_key,
            10 * friction);
   n++;
   /* the scene's own body (the cylinder of [disk] thickness) is no stand-in to remove */
-  if (dv_engine_stand_in(engine, sc) && !dv_engine_own_body(engine, sc)) {
+  if (k->thin_choice && dv_engine_stand_in(engine, sc) && !dv_engine_own_body(engine, sc)) {
     kn[n] = (knob){"geometry", "", {""}, 1, 1.0};
     snprintf(kn[n].change, sizeof kn[n].change, "stand-in -> %s", k->thin_choice);
     snprintf(kn[n].over[0], sizeof kn[n].over[0], "engines.%s.%s=%s", name, k->geom_key,

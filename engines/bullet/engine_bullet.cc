@@ -173,7 +173,7 @@ int bullet_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
 const dv_engine_search SEARCH = {"bullet", "body", "timestep", 1e-7, 0.02, NULL};
 
 /* a stiffer contact: a 100x smaller global CFM (0 by default: rigid already) */
-const dv_engine_contact CONTACT = {"geom", "thin", "cfm", 0.01, 0.0, "friction"};
+const dv_engine_contact CONTACT = {"geom", "thin", "cfm", 0.01, 0.0, "friction", NULL, 0};
 
 struct bullet_engine {
   bullet_settings set;
@@ -518,4 +518,6 @@ extern "C" const dv_engine_type dv_engine_bullet = {
     bullet_free,
     NULL, /* alloc_self: a replay's */
     NULL, /* data */
+    0,    /* outside: linked */
+    NULL, /* missing */
 };

@@ -220,7 +220,7 @@ int dart_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
 const dv_engine_search SEARCH = {"dart", "lcp", "timestep", 1e-7, 0.02, NULL};
 
 /* a stiffer contact: a 100x smaller CFM */
-const dv_engine_contact CONTACT = {"geom", "thin", "cfm", 0.01, 0.0, "friction"};
+const dv_engine_contact CONTACT = {"geom", "thin", "cfm", 0.01, 0.0, "friction", NULL, 0};
 
 using dart::collision::CollisionDetectorPtr;
 using dart::dynamics::BodyNode;
@@ -561,4 +561,6 @@ extern "C" const dv_engine_type dv_engine_dart = {
     dart_free,
     NULL, /* alloc_self: a replay's */
     NULL, /* data */
+    0,    /* outside: linked */
+    NULL, /* missing */
 };

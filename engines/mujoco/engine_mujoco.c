@@ -176,7 +176,7 @@ static const dv_engine_search SEARCH = {"mujoco", "integrator", "timestep", 1e-6
 
 /* MuJoCo raises the solref time constant to 2 timesteps */
 static const dv_engine_contact CONTACT = {"geom", "thin", "solref_timeconst",
-                                          0.25,   2.0,    "friction"};
+                                          0.25,   2.0,    "friction", NULL, 0};
 
 #define LOST_CONTACT_TIME 0.05 /* s the lowest point may stay above the gap before lost_contact */
 /* the full state checks every this many steps (each step: counters and lying down) */

@@ -150,7 +150,7 @@ static double ode_half_thickness(const dv_scenario *sc) {
 static const dv_engine_search SEARCH = {"ode", "stepper", "timestep", 1e-7, 0.02, NULL};
 
 /* a stiffer contact: a 100x smaller constraint force mixing (compliance) */
-static const dv_engine_contact CONTACT = {"geom", "thin", "soft_cfm", 0.01, 0.0, "friction"};
+static const dv_engine_contact CONTACT = {"geom", "thin", "soft_cfm", 0.01, 0.0, "friction", NULL, 0};
 
 typedef struct ode_engine {
   ode_settings set;

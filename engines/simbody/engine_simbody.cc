@@ -193,7 +193,7 @@ int simbody_check(dv_scenario *sc, void *block, dv_setting_issue *issue) {
 const dv_engine_search SEARCH = {"simbody", "integrator", "timestep", 1e-6, 0.02, NULL};
 
 /* no contact softness: the constraint's own slack, its projection tolerance */
-const dv_engine_contact CONTACT = {"geom", "thin", "constraint_tolerance", 0.01, 0.0, "friction"};
+const dv_engine_contact CONTACT = {"geom", "thin", "constraint_tolerance", 0.01, 0.0, "friction", NULL, 0};
 
 /* one no-slip equation, f(u) = u_P - r psi' s(phi) = 0 with s = sin (x) or
  * -cos (y); arguments (u_P, psi', phi); derivatives up to second order, as
@@ -598,4 +598,6 @@ extern "C" const dv_engine_type dv_engine_simbody = {
     simbody_free,
     NULL, /* alloc_self: a replay's */
     NULL, /* data */
+    0,    /* outside: linked */
+    NULL, /* missing */
 };

@@ -103,12 +103,5 @@ int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, c
                               dv_error *err);
 int dv_run_trajfile_end(dv_trajfile *f, const dv_scenario *sc, dv_error *err);
 
-/* the body-to-world rotation (row-major, body axes as columns) of the unit
- * quaternion q = (w, x, y, z) */
-void dv_run_quat_to_matrix(const double q[4], double R[9]);
-
-/* the unit quaternion (w, x, y, z), w >= 0, of the rotation R (Shepperd's
- * method: from the largest of its four squared components) */
-void dv_run_matrix_to_quat(const double R[9], double q[4]);
 
 #endif

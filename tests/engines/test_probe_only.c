@@ -25,7 +25,7 @@ int main(int argc, char **argv) {
   load(argv[1], NULL, 0, &ode);
   const char *const sets[] = {"scenario.engines=mujoco"};
   load(argv[1], sets, 1, &named);
-  for (const dv_engine_type *const *e = dv_engines; *e; e++) {
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) {
     if ((*e)->role != DV_ENGINE_CONTACT) continue;
     const char *name = (*e)->name;
     const int is_ode = strcmp(name, "ode") == 0, is_mujoco = strcmp(name, "mujoco") == 0;

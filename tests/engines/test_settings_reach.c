@@ -192,7 +192,7 @@ static void check_key(const char *path, const char *falling, const reach *r) {
 
 /* every key of every engine's table has an entry */
 static void check_covered(void) {
-  for (const dv_engine_type *const *e = dv_engines; *e; e++) {
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) {
     const dv_settings_section *sec = (*e)->settings;
     for (size_t k = 0; sec && k < sec->nspecs; k++) {
       int found = 0;

@@ -27,7 +27,7 @@ int main(int argc, char **argv) {
     dv_pose pose;
     dv_pose_from_state(&geom, y, &pose);
     double q[4];
-    dv_run_matrix_to_quat(pose.R, q);
+    dv_matrix_to_quat(pose.R, q);
     printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", v[0], pose.pos[0], pose.pos[1],
            pose.pos[2], q[0], q[1], q[2], q[3]);
     if (vel)

@@ -1,0 +1,114 @@
+/* adapter_settings: an adapter's settings for a scene, and the scene's lines
+ * it is sent (adapter.h; docs/adapters.md). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "adapter.h"
+#include "dv_format.h"
+#include "dv_pose.h"
+#include "engine_friction.h"
+
+static int index_of(const dv_adapter *a, const char *key) {
+  for (size_t i = 0; i < a->nsettings; i++)
+    if (strcmp(a->setting[i].key, key) == 0) return (int)i;
+  return -1;
+}
+
+static double *real_at(void *block, int i) {
+  return (double *)((char *)block + 8 * i);
+}
+static int *int_at(void *block, int i) {
+  return (int *)((char *)block + 8 * i);
+}
+
+int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setting_issue *issue) {
+  char why[DV_DERIVED_BYTES] = "", number[DV_FORMAT_SIZE];
+  const char *keys[10] = {NULL};
+  (void)issue;
+  const int ci = index_of(a, a->choice_key),
+            si = a->softness_key[0] ? index_of(a, a->softness_key) : -1;
+  double no_softness = NAN;
+  double *dt = real_at(block, index_of(a, a->step_key));
+  double *soft = si >= 0 ? real_at(block, si) : &no_softness;
+  int *choice = int_at(block, ci);
+  const int given = dv_scenario_is_given(sc, a->name, a->choice_key);
+  const dv_knob_choice in = {given ? *choice : -1, *dt, *soft};
+  dv_knob_choice out;
+  dv_engine_choose(sc, &a->type, &a->knobs, *choice, &in, &out, why, sizeof why, keys);
+  *choice = out.choice;
+  *dt = out.timestep;
+  if (si >= 0 && !isnan(out.softness)) *soft = out.softness;
+  size_t n = 0;
+  while (keys[n]) n++;
+  double *half = real_at(block, index_of(a, DV_ADAPTER_HALF_KEY));
+  if (!dv_scenario_is_given(sc, a->name, DV_ADAPTER_HALF_KEY)) {
+    const size_t used = strlen(why);
+    *half = sc->thickness > 0.0 ? 0.5 * sc->thickness : a->stand_in;
+    dv_format_double(*half, number, sizeof number);
+    snprintf(why + used, sizeof why - used, "%s%s %s m: %s", used ? "; " : "", DV_ADAPTER_HALF_KEY,
+             number,
+             sc->thickness > 0.0 ? "[disk] thickness / 2"
+                                 : "a stand-in for the thin disk, which the engine has not");
+    keys[n++] = DV_ADAPTER_HALF_KEY;
+    keys[n] = NULL;
+  }
+  dv_engine_derive_friction(sc, a->name, a->friction_key, 1.0, "",
+                            real_at(block, index_of(a, a->friction_key)), why, sizeof why,
+                            keys + n);
+  dv_scenario_set_derived(sc, a->name, keys, why);
+  return 0;
+}
+
+/* append to buf; -1 where it no longer fits */
+static int put(char *buf, size_t size, size_t *used, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+#include <stdarg.h>
+static int put(char *buf, size_t size, size_t *used, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  const int n = vsnprintf(buf + *used, size - *used, fmt, ap);
+  va_end(ap);
+  if (n < 0 || (size_t)n >= size - *used) return -1;
+  *used += (size_t)n;
+  return 0;
+}
+
+int dv_adapter_scene_text(const dv_adapter *a, const dv_scenario *sc, const double *state,
+                          char *buf, size_t size, dv_error *err) {
+  const void *block = dv_scenario_settings(sc, a->name);
+  const double h = dv_scenario_get(sc, a->name, DV_ADAPTER_HALF_KEY);
+  const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, h};
+  const red_disk *d = &sc->disk;
+  dv_pose p;
+  double q[4];
+  size_t used = 0;
+  if (!block) return dv_fail(err, DV_EINPUT, "the scenario has no [engines.%s]", a->name);
+  dv_pose_from_state(&geom, state ? state : sc->initial, &p);
+  dv_matrix_to_quat(p.R, q);
+  int bad = put(buf, size, &used,
+                "diskval-adapter %d\nradius %.17g\nmass %.17g\ninertia %.17g %.17g\n"
+                "half_thickness %.17g\ngravity %.17g\nfriction %.17g\n",
+                DV_ADAPTER_PROTOCOL, d->r, d->m, d->A, d->C, h, d->g,
+                dv_scenario_get(sc, a->name, a->friction_key));
+  bad |= put(buf, size, &used,
+             "position %.17g %.17g %.17g\nquaternion %.17g %.17g %.17g %.17g\n"
+             "velocity %.17g %.17g %.17g\nangular_velocity %.17g %.17g %.17g\n",
+             p.pos[0], p.pos[1], p.pos[2], q[0], q[1], q[2], q[3], p.vel[0], p.vel[1], p.vel[2],
+             p.omega[0], p.omega[1], p.omega[2]);
+  for (size_t i = 0; i < a->nsettings && !bad; i++) {
+    const dv_setting_spec *s = &a->specs[i];
+    const double v = dv_setting_value(s, block);
+    if (strcmp(s->key, DV_ADAPTER_HALF_KEY) == 0) continue;
+    if (!isfinite(v)) return dv_fail(err, DV_EINPUT, "engines.%s.%s: no value", a->name, s->key);
+    if (s->type == DV_SETTING_CHOICE)
+      bad |= put(buf, size, &used, "set %s %s\n", s->key, dv_setting_choice(s, (size_t)v));
+    else if (s->type == DV_SETTING_INT)
+      bad |= put(buf, size, &used, "set %s %d\n", s->key, (int)v);
+    else
+      bad |= put(buf, size, &used, "set %s %.17g\n", s->key, v);
+  }
+  if (bad || put(buf, size, &used, "start\n"))
+    return dv_fail(err, DV_EINPUT, "the scene for %s is longer than %zu bytes", a->name, size);
+  return 0;
+}

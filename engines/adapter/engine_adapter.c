@@ -1,0 +1,297 @@
+/* engine_adapter: an adapter's run, as an engine (adapter.h; docs/adapters.md).
+ *
+ * reset starts the adapter and sends the scene; advance asks for each sample
+ * and checks the row it gets as a linked engine's state is checked
+ * (engine_watch.h), plus what only a pipe can get wrong: an answer that never
+ * comes (the manifest's timeout), a line that is not 16 numbers, a time that
+ * is not the one asked, a quaternion off the unit sphere, the adapter's own
+ * "error" line, its exit. Every one ends the run as failed with the reason
+ * and the adapter's last line on standard error; the adapter is then killed.
+ * The lying down is seen at the samples (the rows are all diskval sees).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adapter.h"
+#include "adapter_child.h"
+#include "dv_pose.h"
+#include "dv_reference.h"
+#include "engine_watch.h"
+
+#define ROW_FIELDS 16
+#define QUAT_TOL 1e-6  /* a row's quaternion norm off 1 (float32 engines: ~1e-7) */
+#define STOP_GRACE 2.0 /* s an adapter has to exit once its input is closed */
+#define SCENE_BYTES 8192
+
+typedef struct adapter_run {
+  const dv_adapter *a;
+  red_disk disk;
+  dv_geometry geom;
+  double timestep, theta_limit, time_tol;
+  char scene[SCENE_BYTES]; /* the settings' lines, then start */
+  const dv_scenario *sc;
+  dv_child child;
+  dv_engine_watch watch;
+  dv_engine_stats st;
+  double prev_y[RED_NSTATE];
+  int status; /* DV_OK, DV_EVENT, or the failure's code */
+  int started;
+} adapter_run;
+
+static int failed(adapter_run *r, dv_failure why, dv_error *err, const char *fmt,
+                  const char *what) {
+  char tail[200] = "";
+  if (r->child.pid) dv_child_stop(&r->child, 0.0);
+  if (r->child.err_tail[0]) snprintf(tail, sizeof tail, " (its stderr: %.160s)", r->child.err_tail);
+  r->st.failure = why;
+  r->st.outcome = dv_failure_outcome(why);
+  snprintf(r->st.detail, sizeof r->st.detail, "%s: %s%.150s%s", r->a->name, fmt, what, tail);
+  r->status = why == DV_FAILURE_NAN ? DV_ENUMERIC : DV_ESYSTEM;
+  return dv_fail(err, r->status, "%s", r->st.detail);
+}
+
+/* the adapter ended its output: how, and what it said */
+static int ended(adapter_run *r, dv_error *err) {
+  char how[64];
+  dv_child_stop(&r->child, STOP_GRACE);
+  dv_child_end_text(&r->child, how, sizeof how);
+  return failed(r, DV_FAILURE_LIBRARY, err, "the adapter stopped answering: ", how);
+}
+
+static void *adapter_alloc(const dv_adapter *a, const dv_scenario *sc, dv_error *err) {
+  adapter_run *r = calloc(1, sizeof *r);
+  if (!r) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
+  r->a = a;
+  r->sc = sc;
+  r->disk = sc->disk;
+  r->timestep = dv_scenario_get(sc, a->name, a->step_key);
+  r->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r,
+                          dv_scenario_get(sc, a->name, DV_ADAPTER_HALF_KEY)};
+  r->theta_limit = dv_reference_settings(sc)->theta_limit;
+  r->time_tol = 1e-6 * r->timestep;
+  r->child.in = r->child.out = r->child.err = -1;
+  if (a->missing[0]) {
+    dv_fail(err, DV_EINPUT, "%s is not available: %s", a->name, a->missing);
+    free(r);
+    return NULL;
+  }
+  return r;
+}
+
+static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err) {
+  adapter_run *r = p;
+  char what[256], line[DV_CHILD_LINE];
+  char *argv[32];
+  char words[sizeof r->a->command];
+  size_t n = 0;
+  dv_child_stop(&r->child, 0.0);
+  memset(&r->st, 0, sizeof r->st);
+  r->status = DV_OK;
+  if (dv_adapter_scene_text(r->a, r->sc, state, r->scene, sizeof r->scene, err))
+    return failed(r, DV_FAILURE_SETUP, err, "", err->msg);
+  memcpy(r->prev_y, state, sizeof r->prev_y);
+  snprintf(words, sizeof words, "%s", r->a->command);
+  for (char *save = NULL, *w = strtok_r(words, " ", &save); w && n < 31;
+       w = strtok_r(NULL, " ", &save))
+    argv[n++] = w;
+  argv[n] = NULL;
+  if (dv_child_start(&r->child, r->a->dir, argv, what, sizeof what))
+    return failed(r, DV_FAILURE_SETUP, err, "", what);
+  r->started = 1;
+  if (dv_child_write(&r->child, r->scene, what, sizeof what)) return ended(r, err);
+  const int got =
+      dv_child_read_line(&r->child, r->a->timeout, line, sizeof line, what, sizeof what);
+  if (got > 0) return ended(r, err);
+  if (got < 0) return failed(r, DV_FAILURE_SETUP, err, "while it built the model: ", what);
+  if (strncmp(line, "error", 5) == 0) return failed(r, DV_FAILURE_SETUP, err, "", line);
+  if (strcmp(line, "ready") != 0)
+    return failed(r, DV_FAILURE_SETUP, err, "expected 'ready', got: ", line);
+  return DV_OK;
+}
+
+/* the row's 16 numbers; 0, or -1 with what set */
+static int parse_row(const char *line, double v[ROW_FIELDS], char *what, size_t size) {
+  const char *s = line;
+  for (int k = 0; k < ROW_FIELDS; k++) {
+    char *end;
+    v[k] = strtod(s, &end);
+    if (end == s || (*end && *end != ' ' && *end != '\t'))
+      return snprintf(what, size, "field %d is not a number in: %.80s", k + 1, line), -1;
+    s = end;
+  }
+  while (*s == ' ' || *s == '\t') s++;
+  if (*s) return snprintf(what, size, "more than %d fields in: %.80s", ROW_FIELDS, line), -1;
+  return 0;
+}
+
+static int adapter_advance(void *p, double t, dv_sample *out, dv_error *err) {
+  adapter_run *r = p;
+  char what[256], line[DV_CHILD_LINE], ask[64];
+  double v[ROW_FIELDS];
+  if (r->status < 0) return dv_fail(err, r->status, "%s", r->st.detail);
+  if (r->status == DV_EVENT) return DV_EVENT;
+  snprintf(ask, sizeof ask, "advance %.17g\n", t);
+  if (dv_child_write(&r->child, ask, what, sizeof what)) return ended(r, err);
+  const int got =
+      dv_child_read_line(&r->child, r->a->timeout, line, sizeof line, what, sizeof what);
+  if (got > 0) return ended(r, err);
+  if (got < 0) return failed(r, DV_FAILURE_LIBRARY, err, "hung or garbled: ", what);
+  if (strncmp(line, "error", 5) == 0) return failed(r, DV_FAILURE_LIBRARY, err, "", line);
+  if (parse_row(line, v, what, sizeof what))
+    return failed(r, DV_FAILURE_LIBRARY, err, "a row that is not 16 numbers: ", what);
+  const double asked = round(t / r->timestep) * r->timestep;
+  if (!(fabs(v[0] - asked) <= r->time_tol + 1e-12 * fabs(asked))) {
+    snprintf(what, sizeof what, "asked for t = %.17g s, the row is at %.17g s", t, v[0]);
+    return failed(r, DV_FAILURE_LIBRARY, err, "", what);
+  }
+  dv_pose pose = {{v[1], v[2], v[3]}, {0}, {v[8], v[9], v[10]}, {v[11], v[12], v[13]}};
+  double q[4] = {v[4], v[5], v[6], v[7]};
+  const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int k = 0; k < 4; k++) q[k] /= norm;
+  dv_quat_to_matrix(q, pose.R);
+  if (!dv_pose_finite(&pose) || !isfinite(norm)) {
+    snprintf(what, sizeof what, "a non-finite state at t = %g s", t);
+    return failed(r, DV_FAILURE_NAN, err, "", what);
+  }
+  if (!(fabs(norm - 1.0) <= QUAT_TOL)) {
+    snprintf(what, sizeof what, "the quaternion's norm is %.9g at t = %g s, not 1 within %g", norm,
+             t, QUAT_TOL);
+    return failed(r, DV_FAILURE_LIBRARY, err, "", what);
+  }
+  const long steps = (long)v[15];
+  r->st.steps = steps;
+  if (t == 0.0) {
+    const dv_failure f = dv_engine_watch_start(&r->watch, &r->disk, &pose, what, sizeof what);
+    if (f) return failed(r, f, err, "", what);
+  } else {
+    const dv_failure f = dv_engine_watch_check(&r->watch, &r->disk, &r->geom, &pose, steps,
+                                               r->timestep, what, sizeof what);
+    if (f) return failed(r, f, err, "", what);
+  }
+  dv_sample_from_pose(&r->disk, &r->geom, &pose, t, r->prev_y, out);
+  out->contacts = (int)v[14];
+  memcpy(r->prev_y, out->y, sizeof r->prev_y);
+  dv_stats_add_sample(&r->st, out);
+  const double theta = out->y[0];
+  if (theta < r->theta_limit || theta > M_PI - r->theta_limit) {
+    dv_engine_lay_down(&r->st, theta < r->theta_limit, r->theta_limit, t);
+    r->status = DV_EVENT;
+    dv_child_stop(&r->child, STOP_GRACE);
+    return DV_EVENT;
+  }
+  return DV_OK;
+}
+
+static void adapter_stats(const void *p, dv_engine_stats *out) {
+  const adapter_run *r = p;
+  *out = r->st;
+  if (!r->st.detail[0] && r->a->version[0])
+    snprintf(out->method, sizeof out->method, "%s through its adapter", r->a->version);
+}
+
+static void adapter_free(void *p) {
+  adapter_run *r = p;
+  if (!r) return;
+  dv_child_stop(&r->child, STOP_GRACE);
+  free(r);
+}
+
+/* the engine's own words: COMMAND --version's first line (asked once) */
+static const char *adapter_version(dv_adapter *a) {
+  char what[256], line[DV_CHILD_LINE], words[sizeof a->command];
+  char *argv[33];
+  size_t n = 0;
+  dv_child c;
+  if (a->version[0]) return a->version;
+  if (a->missing[0]) return snprintf(a->version, sizeof a->version, "not available"), a->version;
+  snprintf(words, sizeof words, "%s", a->command);
+  for (char *save = NULL, *w = strtok_r(words, " ", &save); w && n < 31;
+       w = strtok_r(NULL, " ", &save))
+    argv[n++] = w;
+  argv[n++] = "--version";
+  argv[n] = NULL;
+  snprintf(a->version, sizeof a->version, "version unknown");
+  if (dv_child_start(&c, a->dir, argv, what, sizeof what)) return a->version;
+  if (dv_child_read_line(&c, a->timeout, line, sizeof line, what, sizeof what) == 0 && line[0])
+    snprintf(a->version, sizeof a->version, "%.159s", line);
+  dv_child_stop(&c, STOP_GRACE);
+  return a->version;
+}
+
+/* the slots' methods: the interface has no self argument, so each adapter is
+ * served by the functions of its slot in the registry */
+static dv_adapter *slots[DV_MAX_ADAPTERS];
+
+#define SLOT(i)                                                                 \
+  static void *alloc_##i(const dv_scenario *sc, dv_error *err) {                \
+    return adapter_alloc(slots[i], sc, err);                                    \
+  }                                                                             \
+  static const char *version_##i(void) {                                        \
+    return adapter_version(slots[i]);                                           \
+  }                                                                             \
+  static double half_##i(const dv_scenario *sc) {                               \
+    return dv_scenario_get(sc, slots[i]->name, DV_ADAPTER_HALF_KEY);            \
+  }                                                                             \
+  static int check_##i(dv_scenario *sc, void *block, dv_setting_issue *issue) { \
+    return dv_adapter_check(slots[i], sc, block, issue);                        \
+  }
+SLOT(0)
+SLOT(1) SLOT(2) SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
+#undef SLOT
+#define SLOT(i) \
+  { alloc_##i, version_##i, half_##i, check_##i }
+
+    static const struct {
+  void *(*alloc)(const dv_scenario *, dv_error *);
+  const char *(*version)(void);
+  double (*half)(const dv_scenario *);
+  int (*check)(dv_scenario *, void *, dv_setting_issue *);
+} METHODS[DV_MAX_ADAPTERS] = {SLOT(0), SLOT(1), SLOT(2), SLOT(3), SLOT(4),  SLOT(5),
+                              SLOT(6), SLOT(7), SLOT(8), SLOT(9), SLOT(10), SLOT(11)};
+#undef SLOT
+
+void dv_adapter_make_type(dv_adapter *a, size_t i) {
+  slots[i] = a;
+  const int choice = a->choice_key[0] != '\0';
+  size_t nchoices = 1;
+  for (size_t k = 0; choice && k < a->nsettings; k++)
+    if (strcmp(a->setting[k].key, a->choice_key) == 0)
+      for (nchoices = 0; a->specs[k].choices[nchoices];) nchoices++;
+  for (size_t v = 0; v < nchoices; v++) {
+    a->models[v].engine = a->name;
+    a->models[v].soft_key = a->models[v].soft_steps > 0.0 ? a->softness_key : NULL;
+  }
+  a->section =
+      (dv_settings_section){a->name, a->specs, a->nsettings, 8 * a->nsettings, METHODS[i].check};
+  if (!a->search.hi) a->search.lo = 1e-7, a->search.hi = 0.02;
+  a->search.section = a->name;
+  a->search.choice_key = choice ? a->choice_key : NULL;
+  a->search.step_key = a->step_key;
+  a->contact.geom_key = NULL;
+  a->contact.thin_choice = NULL;
+  a->contact.softness_key = a->softness_key[0] ? a->softness_key : NULL;
+  a->contact.friction_key = a->friction_key;
+  a->contact.extra = a->extra;
+  a->contact.nextra = a->nextra;
+  a->knobs = (dv_engine_knobs){
+      a->name, choice ? a->choice_key : NULL, a->models, (int)nchoices, a->model_given, 2};
+  a->type = (dv_engine_type){
+      .name = a->name,
+      .description = a->description,
+      .role = DV_ENGINE_CONTACT,
+      .settings = &a->section,
+      .search = &a->search,
+      .contact = &a->contact,
+      .half_thickness = METHODS[i].half,
+      .version = METHODS[i].version,
+      .alloc = METHODS[i].alloc,
+      .reset = adapter_reset,
+      .advance = adapter_advance,
+      .stats = adapter_stats,
+      .free = adapter_free,
+      .outside = 1,
+      .missing = a->missing,
+  };
+}

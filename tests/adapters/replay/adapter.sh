@@ -1,0 +1,49 @@
+#!/bin/sh
+# A test adapter (docs/adapters.md) in POSIX sh: it answers every "advance T"
+# with the row of $DV_REPLAY_POSE (a pose-form CSV with velocities) at time T,
+# and misbehaves as $DV_REPLAY_FAULT says, from $DV_REPLAY_AT s on: crash,
+# hang, garbage, columns, nan, early, time, error, quat, or at the start:
+# noready, hangstart.
+if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
+dt=
+while read -r key value rest; do
+  [ "$key" = set ] && [ "$value" = timestep ] && dt=$rest
+  [ "$key" = start ] && break
+done
+case $DV_REPLAY_FAULT in
+  noready) echo "hello"; exit 0 ;;
+  hangstart) sleep 60 ;;
+esac
+echo ready
+# mawk reads its input in blocks unless interactive: a row must answer each line
+case $(awk -W version 2>&1 | head -1) in mawk*) interactive="-W interactive" ;; esac
+exec awk $interactive -v file="$DV_REPLAY_POSE" -v fault="$DV_REPLAY_FAULT" -v at="${DV_REPLAY_AT:-0.1}" \
+  -v dt="$dt" '
+BEGIN {
+  FS = ","
+  n = 0
+  getline header < file
+  while ((getline line < file) > 0) { split(line, f, ","); t[n] = f[1]; row[n] = line; n++ }
+  FS = " "
+}
+$1 == "advance" {
+  k = 0
+  while (k < n && (t[k] - $2 > 1e-9 || $2 - t[k] > 1e-9)) k++
+  if (k == n) { print "error no row at t = " $2; exit 1 }
+  split(row[k], v, ","); v[2] = v[2] + 1e-7  # not the reference exactly: judged, not "identical"
+  out = v[1]; for (i = 2; i <= 14; i++) out = out " " v[i]
+  out = out " 1 " int($2 / dt + 0.5)
+  if ($2 + 1e-12 >= at) {
+    if (fault == "crash") exit 3
+    if (fault == "hang") system("sleep 60")
+    if (fault == "garbage") out = "the solver says hello"
+    if (fault == "columns") sub(/ [^ ]+$/, "", out)
+    if (fault == "nan") { split(out, v, " "); v[2] = "nan"; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "early") exit 0
+    if (fault == "time") { split(out, v, " "); v[1] = v[1] + 2 * dt; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "error") out = "error the solver failed at t = " $2
+    if (fault == "quat") { split(out, v, " "); v[5] = v[5] * 1.1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+  }
+  print out
+  fflush()
+}'
