@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# check_adapter_faults.sh DISKVAL JUDGE_TO_POSE SCENARIO ADAPTERS: an engine
+# outside the build (docs/adapters.md) is judged like a linked one, and every
+# way an adapter can misbehave is a failed run with its reason, never a pass,
+# a hang or a crash of diskval. The test adapter (tests/adapters/replay, POSIX
+# sh: no Node needed) replays the matched reference of SCENARIO made 2 mm
+# thick, its centre moved 1e-7 m (so it is judged, not "identical"):
+#   - it passes compare, next to a linked engine, exit 0;
+#   - crash, hang (timeout 2 s), garbage, a short row, NaN, an early exit, a
+#     row at the wrong time, an "error" line, a quaternion off the unit sphere,
+#     no "ready", silence at the start: each FAILs with its own words, exit 1,
+#     within 20 s, the report written;
+#   - a manifest that cannot be read, or an adapter whose command is missing,
+#     does not stop diskval: `engines` says why, naming the line; a run of it
+#     fails with the reason;
+#   - no adapter runs unless named: a compare without --engines starts none.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+diskval=$1
+to_pose=$2
+scenario=$3
+adapters=$4
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+awk '/^\[disk\]/{print; print "thickness = 0.002"; next} {print}' "$scenario" >"$work/thick.ini"
+"$diskval" simulate "$work/thick.ini" --engine matched --out "$work/ref.csv" --quiet ||
+  { echo "FAIL: the matched reference did not run"; exit 1; }
+"$to_pose" 0.1 0.001 <"$work/ref.csv" >"$work/pose.csv"
+export DISKVAL_ADAPTERS=$adapters DV_REPLAY_POSE=$work/pose.csv
+
+run() { # run NAME [FAULT]: compare with the replay; sets code, out
+  DV_REPLAY_FAULT=${2:-} timeout -k 2 20 "$diskval" compare "$work/thick.ini" --engines "$1" \
+    --out "$work/out" --quiet >"$work/stdout" 2>&1
+  code=$?
+  out=$(cat "$work/stdout")
+}
+
+run replay,ode
+check '[ $code -eq 0 ] && grep -q "replay .*pass" "$work/stdout" && grep -q "ode .*pass" "$work/stdout"' \
+  "the replayed reference and ODE pass: exit $code: $out"
+check 'grep -q "\"replay\"" "$work/out/short_circle/report.json"' "report.json names the adapter"
+
+while IFS='|' read -r fault words; do
+  run replay "$fault"
+  check '[ $code -eq 1 ] && grep -q "replay .*FAIL" "$work/stdout" && grep -q -e "$words" "$work/stdout"' \
+    "$fault: exit $code, want 1, FAIL and '$words': $out"
+  check '[ -s "$work/out/short_circle/report.md" ]' "$fault: no report written"
+done <<'FAULTS'
+crash|stopped answering: exited with status 3
+hang|no answer within 2 s
+garbage|not 16 numbers: field 1 is not a number
+columns|not 16 numbers
+nan|non-finite state
+early|stopped answering: exited with status 0
+time|the row is at
+error|error the solver failed
+quat|the quaternion's norm is
+noready|expected 'ready', got: hello
+hangstart|while it built the model: no answer within 2 s
+FAULTS
+
+# a broken manifest and a missing program: listed with why, diskval still runs
+mkdir -p "$work/more/broken" "$work/more/absent"
+printf '[adapter]\nname = broken\ncolour = blue\n' >"$work/more/broken/manifest.ini"
+sed 's/^name = replay/name = absent/; s/^command = .*/command = no-such-program-here x/' \
+  "$adapters/replay/manifest.ini" >"$work/more/absent/manifest.ini"
+export DISKVAL_ADAPTERS=$adapters:$work/more
+"$diskval" engines >"$work/engines" 2>&1
+code=$?
+check '[ $code -eq 0 ] && grep -q "broken/manifest.ini:3: colour: unknown key" "$work/engines"' \
+  "engines names the bad manifest's line: exit $code: $(grep -i broken "$work/engines")"
+check 'grep -q "^absent .*not available: no-such-program-here is not on PATH" "$work/engines"' \
+  "engines says the absent adapter's program is missing: $(grep absent "$work/engines")"
+run absent
+check '[ $code -eq 1 ] && grep -q "absent is not available" "$work/stdout"' \
+  "a run of an unavailable adapter fails with why: exit $code: $out"
+
+# nothing outside the build runs unless named
+DV_REPLAY_FAULT=hangstart "$diskval" compare "$work/thick.ini" --engines ode --out "$work/o2" \
+  --quiet >/dev/null 2>&1
+check '! grep -q replay "$work/o2/short_circle/report.json"' "a compare of ode ran the adapter"
+exit $fail
