@@ -38,6 +38,28 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 }
 
+# the engines outside Debian (adapters/) run on Node: the machine's where it has one (18 or
+# newer), else Debian's; their packages from the committed lockfile. Without them every
+# other engine still runs (diskval engines says why an adapter cannot).
+setup_adapters() {
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    install_missing nodejs npm || echo "adapters: Node could not be installed; they will not run" >&2
+  fi
+  command -v node >/dev/null && command -v npm >/dev/null || return 0
+  if [ "$(node -p 'process.versions.node.split(".")[0]' 2>/dev/null || echo 0)" -lt 18 ]; then
+    echo "adapters: Node $(node --version) is older than 18; they will not run" >&2
+    return 0
+  fi
+  # npm ci replaces node_modules whole: only when the lockfile changed since the last install
+  if ! cmp -s adapters/package-lock.json adapters/node_modules/.diskval-lock 2>/dev/null; then
+    if (cd adapters && npm ci --no-audit --no-fund --loglevel=error >/dev/null); then
+      cp adapters/package-lock.json adapters/node_modules/.diskval-lock
+    else
+      echo "adapters: npm ci failed; the engines outside Debian will not run" >&2
+    fi
+  fi
+}
+
 build() {
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${CMAKE_FLAGS[@]}" >/dev/null
   cmake --build "$BUILD_DIR" -j "$(nproc)"
@@ -48,6 +70,7 @@ if [ "${1:-run}" = test ]; then
 else
   install_missing "${PACKAGES[@]}"
 fi
+setup_adapters
 build
 case "${1:-run}" in
   test)

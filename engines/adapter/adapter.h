@@ -25,7 +25,7 @@
 typedef struct dv_adapter_setting {
   char key[DV_ADAPTER_NAME];
   char unit[16];
-  char doc[160];
+  char doc[320];
   char names[DV_ADAPTER_MAX_CHOICES][DV_ADAPTER_NAME]; /* a choice's values */
   const char *choices[DV_ADAPTER_MAX_CHOICES + 1];
 } dv_adapter_setting;
