@@ -58,7 +58,9 @@ async function create(scene) {
   ground.mRestitution = 0;
   bodies.CreateAndAddBody(ground, J.EActivation_DontActivate);
 
-  const cyl = new J.CylinderShapeSettings(scene.half_thickness, scene.radius, number(scene, 'convex_radius'));
+  const convexRadius = number(scene, 'convex_radius');
+  if (!(convexRadius >= 0 && convexRadius <= scene.half_thickness)) throw new Error('convex_radius must lie in [0, half_thickness]');
+  const cyl = new J.CylinderShapeSettings(scene.half_thickness, scene.radius, convexRadius);
   const made = cyl.Create();
   if (made.HasError()) throw new Error(`cylinder: ${made.GetError().c_str()}`);
   const q = quat.mul(scene.quaternion, quat.conj(TO_Z));
