@@ -16,7 +16,7 @@
 
 #define DV_ADAPTER_MAX_SETTINGS 24 /* 8 bytes a value: within DV_SETTINGS_BYTES */
 #define DV_ADAPTER_MAX_CHOICES 8
-#define DV_ADAPTER_MAX_EXTRA 4
+#define DV_ADAPTER_MAX_EXTRA 6
 #define DV_ADAPTER_NAME 32
 #define DV_ADAPTER_PROTOCOL 1
 #define DV_ADAPTER_HALF_KEY "half_thickness"
@@ -51,7 +51,7 @@ typedef struct dv_adapter {
   unsigned model_given; /* bit v: [model.VALUE] was given */
   /* attribution's further knobs */
   size_t nextra;
-  char extra_what[DV_ADAPTER_MAX_EXTRA][64];
+  char extra_what[DV_ADAPTER_MAX_EXTRA][128];
   char extra_key[DV_ADAPTER_MAX_EXTRA][DV_ADAPTER_NAME];
   char extra_value[DV_ADAPTER_MAX_EXTRA][DV_ADAPTER_NAME];
   dv_engine_extra_knob extra[DV_ADAPTER_MAX_EXTRA];
