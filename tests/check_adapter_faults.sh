@@ -13,6 +13,7 @@
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
 #     fails with the reason;
+#   - every setting reaches the adapter as given (engines --scene);
 #   - no adapter runs unless named: a compare without --engines starts none.
 set -u
 . "$(dirname "$0")/check_lib.sh"
@@ -59,6 +60,13 @@ quat|the quaternion's norm is
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 FAULTS
+
+# every setting reaches the adapter, as given: --set and the scene's body
+"$diskval" engines --scene "$work/thick.ini" replay --set engines.replay.timestep=0.002 \
+  --set engines.replay.half_thickness=0.003 --set engines.replay.friction=0.7 >"$work/scene"
+check 'grep -qx "set timestep 0.002" "$work/scene" && grep -qx "half_thickness 0.003" "$work/scene" &&
+  grep -qx "friction 0.7" "$work/scene" && grep -qx "set mode replay" "$work/scene" &&
+  [ "$(tail -n 1 "$work/scene")" = start ]' "the scene sent: $(cat "$work/scene")"
 
 # a broken manifest and a missing program: listed with why, diskval still runs
 mkdir -p "$work/more/broken" "$work/more/absent"

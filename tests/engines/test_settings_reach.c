@@ -194,6 +194,7 @@ static void check_key(const char *path, const char *falling, const reach *r) {
 static void check_covered(void) {
   for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) {
     const dv_settings_section *sec = (*e)->settings;
+    if ((*e)->outside) continue; /* an adapter is sent every key: check_adapter_faults.sh */
     for (size_t k = 0; sec && k < sec->nspecs; k++) {
       int found = 0;
       for (size_t i = 0; i < NTABLE && !found; i++)

@@ -86,27 +86,58 @@ int dv_adapter_scene_text(const dv_adapter *a, const dv_scenario *sc, const doub
   if (!block) return dv_fail(err, DV_EINPUT, "the scenario has no [engines.%s]", a->name);
   dv_pose_from_state(&geom, state ? state : sc->initial, &p);
   dv_matrix_to_quat(p.R, q);
-  int bad = put(buf, size, &used,
-                "diskval-adapter %d\nradius %.17g\nmass %.17g\ninertia %.17g %.17g\n"
-                "half_thickness %.17g\ngravity %.17g\nfriction %.17g\n",
-                DV_ADAPTER_PROTOCOL, d->r, d->m, d->A, d->C, h, d->g,
-                dv_scenario_get(sc, a->name, a->friction_key));
-  bad |= put(buf, size, &used,
-             "position %.17g %.17g %.17g\nquaternion %.17g %.17g %.17g %.17g\n"
-             "velocity %.17g %.17g %.17g\nangular_velocity %.17g %.17g %.17g\n",
-             p.pos[0], p.pos[1], p.pos[2], q[0], q[1], q[2], q[3], p.vel[0], p.vel[1], p.vel[2],
-             p.omega[0], p.omega[1], p.omega[2]);
+  const double v[] = {d->r,
+                      d->m,
+                      d->A,
+                      d->C,
+                      h,
+                      d->g,
+                      dv_scenario_get(sc, a->name, a->friction_key),
+                      p.pos[0],
+                      p.pos[1],
+                      p.pos[2],
+                      q[0],
+                      q[1],
+                      q[2],
+                      q[3],
+                      p.vel[0],
+                      p.vel[1],
+                      p.vel[2],
+                      p.omega[0],
+                      p.omega[1],
+                      p.omega[2]};
+  /* each line's name and how many of v it takes: shortest round-trip numbers */
+  static const struct {
+    const char *name;
+    int n;
+  } LINES[] = {{"radius", 1},          {"mass", 1},       {"inertia", 2},
+               {"half_thickness", 1},  {"gravity", 1},    {"friction", 1},
+               {"position", 3},        {"quaternion", 4}, {"velocity", 3},
+               {"angular_velocity", 3}};
+  int bad = put(buf, size, &used, "diskval-adapter %d\n", DV_ADAPTER_PROTOCOL);
+  for (size_t l = 0, k = 0; l < sizeof LINES / sizeof LINES[0]; l++) {
+    bad |= put(buf, size, &used, "%s", LINES[l].name);
+    for (int j = 0; j < LINES[l].n; j++, k++) {
+      char number[DV_FORMAT_SIZE];
+      dv_format_double(v[k] == 0.0 ? 0.0 : v[k], number, sizeof number); /* no "-0" */
+      bad |= put(buf, size, &used, " %s", number);
+    }
+    bad |= put(buf, size, &used, "\n");
+  }
   for (size_t i = 0; i < a->nsettings && !bad; i++) {
     const dv_setting_spec *s = &a->specs[i];
-    const double v = dv_setting_value(s, block);
+    const double x = dv_setting_value(s, block);
     if (strcmp(s->key, DV_ADAPTER_HALF_KEY) == 0) continue;
-    if (!isfinite(v)) return dv_fail(err, DV_EINPUT, "engines.%s.%s: no value", a->name, s->key);
+    if (!isfinite(x)) return dv_fail(err, DV_EINPUT, "engines.%s.%s: no value", a->name, s->key);
     if (s->type == DV_SETTING_CHOICE)
-      bad |= put(buf, size, &used, "set %s %s\n", s->key, dv_setting_choice(s, (size_t)v));
+      bad |= put(buf, size, &used, "set %s %s\n", s->key, dv_setting_choice(s, (size_t)x));
     else if (s->type == DV_SETTING_INT)
-      bad |= put(buf, size, &used, "set %s %d\n", s->key, (int)v);
-    else
-      bad |= put(buf, size, &used, "set %s %.17g\n", s->key, v);
+      bad |= put(buf, size, &used, "set %s %d\n", s->key, (int)x);
+    else {
+      char number[DV_FORMAT_SIZE];
+      dv_format_double(x, number, sizeof number);
+      bad |= put(buf, size, &used, "set %s %s\n", s->key, number);
+    }
   }
   if (bad || put(buf, size, &used, "start\n"))
     return dv_fail(err, DV_EINPUT, "the scene for %s is longer than %zu bytes", a->name, size);
