@@ -12,16 +12,9 @@ const PKG = new URL('../node_modules/@dimforge/rapier3d-compat/package.json', im
 const vec = (v) => ({ x: v[0], y: v[1], z: v[2] });
 const arr = (v) => [v.x, v.y, v.z];
 
+// compiles the embedded wasm, once (its warnings go to stderr)
 let ready = null;
-// init() compiles the embedded wasm; it may warn on the console, which must not reach stdout
-function init() {
-  if (!ready) {
-    const log = console.log;
-    console.log = console.error;
-    ready = RAPIER.init().finally(() => (console.log = log));
-  }
-  return ready;
-}
+const init = () => (ready ??= RAPIER.init());
 
 export async function version() {
   await init();
@@ -46,7 +39,6 @@ export async function create(scene) {
   p.contact_natural_frequency = 1 / softness;
   p.normalizedAllowedLinearError = number(scene, 'allowed_error');
   p.normalizedPredictionDistance = number(scene, 'prediction');
-  p.maxCcdSubsteps = 1;
 
   const ground = world.createRigidBody(RAPIER.RigidBodyDesc.fixed());
   const groundCollider = world.createCollider(
@@ -92,6 +84,8 @@ export async function create(scene) {
   return {
     world,
     body,
+    // no torque of ours: the engine keeps the world angular momentum of a free spinning body
+    // (its gyroscopic term is in), and adding -omega x (I omega) would count it twice
     step() {
       world.step();
     },
