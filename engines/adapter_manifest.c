@@ -13,6 +13,7 @@
 typedef struct reader {
   FILE *fp;
   int line;
+  int too_long; /* the line that was */
 } reader;
 
 typedef struct parse {
@@ -26,10 +27,16 @@ typedef struct parse {
   char knob_name[DV_ADAPTER_MAX_EXTRA][DV_ADAPTER_NAME]; /* [knob.NAME]'s NAME */
 } parse;
 
+/* inih's reader, counting lines; a line longer than inih takes is an error, not two lines */
 static char *read_line(char *buf, int size, void *stream) {
   reader *rd = stream;
   rd->line++;
-  return fgets(buf, size, rd->fp);
+  if (!fgets(buf, size, rd->fp)) return NULL;
+  if (!strchr(buf, '\n') && !feof(rd->fp)) {
+    rd->too_long = rd->line;
+    return NULL;
+  }
+  return buf;
 }
 
 static int fail(parse *p, const char *key, const char *fmt, const char *what) {
@@ -285,11 +292,14 @@ int dv_adapter_load(const char *dir, dv_adapter *a, dv_error *err) {
   a->contact.stiffer = 0.25;
   if (!realpath(dir, a->dir)) snprintf(a->dir, sizeof a->dir, "%s", dir);
   snprintf(path, sizeof path, "%s/manifest.ini", a->dir);
-  parse p = {a, {fopen(path, "r"), 0}, path, err, 0, {{0}}, 0, {{0}}};
+  parse p = {a, {fopen(path, "r"), 0, 0}, path, err, 0, {{0}}, 0, {{0}}};
   if (!p.rd.fp) return dv_fail(err, DV_EINPUT, "%s: cannot be read", path);
   const int r = ini_parse_stream(read_line, &p.rd, handler, &p);
   fclose(p.rd.fp);
   if (p.failed) return -1;
+  if (p.rd.too_long)
+    return dv_fail(err, DV_EINPUT, "%s:%d: syntax: a line longer than %d characters", path,
+                   p.rd.too_long, INI_MAX_LINE - 2);
   if (r) return dv_fail(err, DV_EINPUT, "%s:%d: syntax: not KEY = VALUE nor [SECTION]", path, r);
   p.rd.line = 0;
   if (!finish(&p)) return -1;
