@@ -62,7 +62,9 @@ function modelXml(scene) {
 
 let mj = null;
 async function mujoco() {
-  mj ??= await load_mujoco();
+  // MuJoCo prints its warnings: keep them off the protocol's standard output
+  const toStderr = (line) => process.stderr.write(line + '\n');
+  mj ??= await load_mujoco({ print: toStderr, printErr: toStderr });
   return mj;
 }
 
@@ -83,6 +85,7 @@ async function create(scene) {
   try {
     m = mj.MjModel.loadFromXML('/disk.xml');
   } catch (e) {
+    // the build throws the compiler's exception type (mjCError) without its text
     throw new Error(`MuJoCo cannot load the disk model: ${e.message ?? e}`);
   }
   const d = new mj.MjData(m);
@@ -92,12 +95,20 @@ async function create(scene) {
   });
   // the free joint: centre, quaternion (w x y z); centre velocity (world), angular velocity (body)
   const q = unit(scene.quaternion);
-  const qpos = d.qpos;
-  qpos.set([...scene.position, ...q]);
+  d.qpos.set([...scene.position, ...q]);
   d.qvel.set([...scene.velocity, ...quat.rotate(quat.conj(q), scene.angular_velocity)]);
   mj.mj_forward(m, d);
   const BAD = ['mjWARN_BADQPOS', 'mjWARN_BADQVEL', 'mjWARN_BADQACC'].map((k) => mj.mjtWarning[k].value);
-  const bad = () => BAD.reduce((n, i) => n + d.warning.get(i).number, 0);
+  // d.warning is a copy: read afresh
+  const count = (i) => {
+    const all = d.warning;
+    const w = all.get(i);
+    const n = w.number;
+    w.delete();
+    all.delete();
+    return n;
+  };
+  const bad = () => BAD.reduce((n, i) => n + count(i), 0);
   return {
     step() {
       mj.mj_step(m, d);
