@@ -1,5 +1,6 @@
 /* cli_explain: the cause of an engine's excess, by attribution (search layer). */
 #include <stdio.h>
+#include <string.h>
 
 #include "cli.h"
 #include "cli_args.h"
@@ -19,7 +20,20 @@ static int attribute(void *ctx, const dv_scenario *sc, const char *engine, char 
   return 0;
 }
 
-void dv_cli_explainer(const dv_cli_list *sets, dv_report_explain *out) {
-  out->cause = attribute;
+/* --cause none: no attribution run; the failure says so */
+static int not_searched(void *ctx, const dv_scenario *sc, const char *engine, char *out,
+                        size_t size) {
+  (void)ctx, (void)sc, (void)engine;
+  snprintf(out, size, "not searched (--cause none)");
+  return 0;
+}
+
+int dv_cli_explainer(const char *command, const char *mode, const dv_cli_list *sets,
+                     dv_report_explain *out) {
   out->ctx = (void *)sets;
+  out->cause = attribute;
+  if (!mode || strcmp(mode, "full") == 0) return DV_OK;
+  out->cause = not_searched;
+  if (strcmp(mode, "none") == 0) return DV_OK;
+  return dv_cli_usage_error(command, "--cause %s: full or none", mode);
 }

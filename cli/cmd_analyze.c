@@ -81,7 +81,8 @@ static int analyse_thick(const dv_scenario *sc, analysis *an, dv_error *err) {
              red_rolling_event_names[o.event]);
   else if (!o.steady && !o.nutates && !o.falls)
     snprintf(an->ended, sizeof an->ended, "no whole period within %.6g s", o.t_end);
-  if (an->ended[0]) snprintf(an->nutation_why, sizeof an->nutation_why, "not seen: %.140s", an->ended);
+  if (an->ended[0])
+    snprintf(an->nutation_why, sizeof an->nutation_why, "not seen: %.140s", an->ended);
   return DV_OK;
 }
 

@@ -13,7 +13,7 @@
 
 static const char HELP[] =
     "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S]\n"
-    "                       [--set section.key=value]...\n"
+    "                       [--cause full|none] [--set section.key=value]...\n"
     "\n"
     "Run SCENARIO in the engines (default: every contact engine) and in the references, compare\n"
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
@@ -21,18 +21,21 @@ static const char HELP[] =
     "report.json and report.md. Prints one line per engine.\n"
     "--timeout S: stop the comparison after S s of wall time (an error report); one whose\n"
     "probed cost is more than twice S is not started. Default 0: no limit.\n"
+    "--cause full (default): each failing engine's cause, by turning each of its knobs alone\n"
+    "(diskval attribute); none: no cause searched, the report says so.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 
 int dv_cli_compare(int argc, char **argv) {
-  const char *out = "report", *list = NULL;
+  const char *out = "report", *list = NULL, *cause = NULL;
   double timeout = 0.0;
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &out, 0, 0},
       {"engines", DV_CLI_TEXT, &list, 0, 0},
       {"timeout", DV_CLI_REAL, &timeout, 0, 1e9},
+      {"cause", DV_CLI_TEXT, &cause, 0, 0},
   };
-  const dv_cli_command cmd = {"compare", HELP, options, 3, 1, 1};
+  const dv_cli_command cmd = {"compare", HELP, options, 4, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
@@ -41,9 +44,10 @@ int dv_cli_compare(int argc, char **argv) {
   dv_scenario sc;
   dv_error err = {{0}};
   dv_report_explain explain;
-  dv_cli_explainer(&a.sets, &explain);
   int code, lock = -1;
-  if (dv_cli_engine_list(list, engines, &err))
+  if ((code = dv_cli_explainer("compare", cause, &a.sets, &explain)) != DV_OK)
+    ;
+  else if (dv_cli_engine_list(list, engines, &err))
     code = dv_cli_error("compare", "%s", err.msg);
   else if (dv_cli_load_scenario("compare", a.args.items[0], &a.sets, &sc, &err))
     code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);

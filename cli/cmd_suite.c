@@ -25,7 +25,7 @@
 
 static const char HELP[] =
     "usage: diskval suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N] [--engines LIST]\n"
-    "                     [--timeout S] [--stability | --verify]\n"
+    "                     [--timeout S] [--cause full|none] [--stability | --verify]\n"
     "\n"
     "Compare every scenario (the *.ini files of each DIR, and each FILE) as diskval\n"
     "compare does, N at a time in separate processes (default: the number of cores),\n"
@@ -42,6 +42,7 @@ static const char HELP[] =
     "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
     "a failure wherever an engine does not converge to the reference. One of the two:\n"
     "both together are refused.\n"
+    "--cause: as compare's (full: each failing engine's cause; none: no cause searched).\n"
     "--quiet: no progress line on a terminal (scenarios done, time left), no warning\n"
     "before a suite longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
@@ -49,9 +50,10 @@ static const char HELP[] =
 typedef struct suite_opts {
   const char *out, *junit, *engines;
   int jobs;
-  int stability;  /* also the largest stable timesteps and failure modes */
-  int verify;     /* instead: do the engines converge to the reference */
-  double timeout; /* s of wall time a scenario may take (0: no limit) */
+  int stability;     /* also the largest stable timesteps and failure modes */
+  int verify;        /* instead: do the engines converge to the reference */
+  double timeout;    /* s of wall time a scenario may take (0: no limit) */
+  const char *cause; /* --cause: full (NULL) or none */
 } suite_opts;
 
 static int by_name(const void *a, const void *b) {
@@ -209,7 +211,7 @@ static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_typ
                const dv_scenario *scs, size_t n, int *codes, dv_error *causes) {
   dv_error err = {{0}};
   dv_report_explain explain;
-  dv_cli_explainer(sets, &explain);
+  dv_cli_explainer("suite", o->cause, sets, &explain); /* checked when parsed */
   const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, o->timeout, &explain,
                                           codes, causes, &err);
   if (ran == DV_SUITE_RUN_WORKER) return DV_EXIT_OK; /* an MPI worker rank: rank 0 reports */
@@ -250,7 +252,7 @@ int dv_cli_suite(int argc, char **argv) {
   /* a stop before the scenarios run ends the suite as one while they run:
    * exit 130 and a line, never a silent death of the signal */
   dv_exec_hold_stops();
-  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0, 600.0};
+  suite_opts o = {"report", NULL, NULL, dv_cli_default_jobs(), 0, 0, 600.0, NULL};
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &o.out, 0, 0},
       {"junit", DV_CLI_TEXT, &o.junit, 0, 0},
@@ -259,14 +261,20 @@ int dv_cli_suite(int argc, char **argv) {
       {"stability", DV_CLI_FLAG, &o.stability, 0, 0},
       {"verify", DV_CLI_FLAG, &o.verify, 0, 0},
       {"timeout", DV_CLI_REAL, &o.timeout, 0, 1e9},
+      {"cause", DV_CLI_TEXT, &o.cause, 0, 0},
   };
-  const dv_cli_command cmd = {"suite", HELP, options, 7, 1, (size_t)-1};
+  const dv_cli_command cmd = {"suite", HELP, options, 8, 1, (size_t)-1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   if (o.stability && o.verify) { /* two different runs: one would be dropped */
     dv_cli_args_free(&cmd, &a);
     return dv_cli_usage_error("suite", "--stability and --verify: one at a time, not both");
+  }
+  dv_report_explain check;
+  if (dv_cli_explainer("suite", o.cause, &a.sets, &check) != DV_OK) {
+    dv_cli_args_free(&cmd, &a);
+    return DV_EXIT_ERROR;
   }
   if ((o.junit && !o.junit[0]) || !o.out[0]) {
     dv_cli_args_free(&cmd, &a);

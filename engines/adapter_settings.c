@@ -1,6 +1,7 @@
 /* adapter_settings: an adapter's settings for a scene, and the scene's lines
  * it is sent (adapter.h; docs/adapters.md). */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,6 +33,23 @@ int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setti
   double *dt = real_at(block, index_of(a, a->step_key));
   double *soft = si >= 0 ? real_at(block, si) : &no_softness;
   int *choice = int_at(block, ci);
+  /* the body first: the probe judges the cylinder against its matched reference */
+  char body[160] = "";
+  double *half = real_at(block, index_of(a, DV_ADAPTER_HALF_KEY));
+  const int half_derived = !dv_scenario_is_given(sc, a->name, DV_ADAPTER_HALF_KEY);
+  if (half_derived) {
+    *half = sc->thickness > 0.0 ? 0.5 * sc->thickness : a->stand_in;
+    dv_format_double(*half, number, sizeof number);
+    snprintf(body, sizeof body, "%s %s m: %s", DV_ADAPTER_HALF_KEY, number,
+             sc->thickness > 0.0 ? "[disk] thickness / 2"
+                                 : "a stand-in for the thin disk, which the engine has not");
+  }
+  char rough[160] = "";
+  const char *friction_key[2] = {NULL, NULL};
+  dv_engine_derive_friction(sc, a->name, a->friction_key, 1.0, "",
+                            real_at(block, index_of(a, a->friction_key)), rough, sizeof rough,
+                            friction_key);
+  const int friction_derived = friction_key[0] != NULL;
   const int given = dv_scenario_is_given(sc, a->name, a->choice_key);
   const dv_knob_choice in = {given ? *choice : -1, *dt, *soft};
   dv_knob_choice out;
@@ -41,21 +59,18 @@ int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setti
   if (si >= 0 && !isnan(out.softness)) *soft = out.softness;
   size_t n = 0;
   while (keys[n]) n++;
-  double *half = real_at(block, index_of(a, DV_ADAPTER_HALF_KEY));
-  if (!dv_scenario_is_given(sc, a->name, DV_ADAPTER_HALF_KEY)) {
+  if (half_derived) {
     const size_t used = strlen(why);
-    *half = sc->thickness > 0.0 ? 0.5 * sc->thickness : a->stand_in;
-    dv_format_double(*half, number, sizeof number);
-    snprintf(why + used, sizeof why - used, "%s%s %s m: %s", used ? "; " : "", DV_ADAPTER_HALF_KEY,
-             number,
-             sc->thickness > 0.0 ? "[disk] thickness / 2"
-                                 : "a stand-in for the thin disk, which the engine has not");
+    snprintf(why + used, sizeof why - used, "%s%s", used ? "; " : "", body);
     keys[n++] = DV_ADAPTER_HALF_KEY;
     keys[n] = NULL;
   }
-  dv_engine_derive_friction(sc, a->name, a->friction_key, 1.0, "",
-                            real_at(block, index_of(a, a->friction_key)), why, sizeof why,
-                            keys + n);
+  if (friction_derived) {
+    const size_t used = strlen(why);
+    snprintf(why + used, sizeof why - used, "%s%s", used ? "; " : "", rough);
+    keys[n++] = a->friction_key;
+    keys[n] = NULL;
+  }
   dv_scenario_set_derived(sc, a->name, keys, why);
   return 0;
 }
@@ -63,7 +78,6 @@ int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setti
 /* append to buf; -1 where it no longer fits */
 static int put(char *buf, size_t size, size_t *used, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
-#include <stdarg.h>
 static int put(char *buf, size_t size, size_t *used, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);

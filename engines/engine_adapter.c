@@ -92,6 +92,10 @@ static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   if (dv_adapter_scene_text(r->a, r->sc, state, r->scene, sizeof r->scene, err))
     return failed(r, DV_FAILURE_SETUP, err, "", err->msg);
   memcpy(r->prev_y, state, sizeof r->prev_y);
+  dv_pose start; /* watched from the state sent, whatever times are asked for */
+  dv_pose_from_state(&r->geom, state, &start);
+  const dv_failure f = dv_engine_watch_start(&r->watch, &r->disk, &start, what, sizeof what);
+  if (f) return failed(r, f, err, "", what);
   snprintf(words, sizeof words, "%s", r->a->command);
   for (char *save = NULL, *w = strtok_r(words, " ", &save); w && n < 31;
        w = strtok_r(NULL, " ", &save))
@@ -162,14 +166,9 @@ static int adapter_advance(void *p, double t, dv_sample *out, dv_error *err) {
   }
   const long steps = (long)v[15];
   r->st.steps = steps;
-  if (t == 0.0) {
-    const dv_failure f = dv_engine_watch_start(&r->watch, &r->disk, &pose, what, sizeof what);
-    if (f) return failed(r, f, err, "", what);
-  } else {
-    const dv_failure f = dv_engine_watch_check(&r->watch, &r->disk, &r->geom, &pose, steps,
-                                               r->timestep, what, sizeof what);
-    if (f) return failed(r, f, err, "", what);
-  }
+  const dv_failure f = dv_engine_watch_check(&r->watch, &r->disk, &r->geom, &pose, steps,
+                                             r->timestep, what, sizeof what);
+  if (f) return failed(r, f, err, "", what);
   dv_sample_from_pose(&r->disk, &r->geom, &pose, t, r->prev_y, out);
   out->contacts = (int)v[14];
   memcpy(r->prev_y, out->y, sizeof r->prev_y);
@@ -238,7 +237,8 @@ static dv_adapter *slots[DV_MAX_ADAPTERS];
     return dv_adapter_check(slots[i], sc, block, issue);                        \
   }
 SLOT(0)
-SLOT(1) SLOT(2) SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
+SLOT(1)
+SLOT(2) SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
 #undef SLOT
 #define SLOT(i) \
   { alloc_##i, version_##i, half_##i, check_##i }
