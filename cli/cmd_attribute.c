@@ -38,13 +38,15 @@ static void print_knobs(const dv_attribution *at) {
   for (int m = 0; m < DV_NMETRICS; m++)
     if (at->judged >> m & 1u)
       printf("over its limit: %s = %.4g > %.4g\n", dv_metric_names[m], at->base[m], at->limit[m]);
-  printf("%-17s %-28s %10s  %s\n", "knob", "change", "worst",
-         at->judged          ? "(value / limit over the metrics over their limits)"
-         : at->own_reference ? "(theta against its own reference / the scenario's)"
-                             : "(theta against the thin disk / the scenario's)");
+  /* theta beside the worst: what a knob does where it does not remove the error */
+  printf("%-17s %-28s %10s %11s  %s\n", "knob", "change", "worst", "theta (rad)",
+         at->judged          ? "(worst: value / limit over the metrics over their limits)"
+         : at->own_reference ? "(worst: theta against its own reference / the scenario's)"
+                             : "(worst: theta against the thin disk / the scenario's)");
+  printf("%-17s %-28s %10s %11.3g\n", "(none)", "the scenario's settings", "", at->base_theta_thin);
   for (size_t i = 0; i < at->nknobs; i++)
-    printf("%-17s %-28s %10.3g  %s\n", at->knobs[i].knob, at->knobs[i].change, at->knobs[i].worst,
-           at->knobs[i].removes ? "removes it" : "");
+    printf("%-17s %-28s %10.3g %11.3g  %s\n", at->knobs[i].knob, at->knobs[i].change,
+           at->knobs[i].worst, at->knobs[i].theta_thin, at->knobs[i].removes ? "removes it" : "");
   dv_search_attribute_cause(at, cause, sizeof cause);
   printf("cause: %s\n", cause);
 }
@@ -62,7 +64,7 @@ static void print_attribution(const char *engine, const dv_attribution *at) {
     const char *how;
   } rows[] = {
       {"geometry", at->has_stand_in ? at->geometry : NAN,
-       at->own_reference   ? "n/a: the engine simulates the scene's own cylinder, no stand-in"
+       at->own_reference ? "n/a: measured in the engine's own shape, against its matched reference"
        : !at->has_stand_in ? "n/a: the scenario uses the exact thin disk, no stand-in"
        : at->geometry < 0  ? "stand-in against the exact thin disk; negative: its geometry "
                              "cancels part of the engine's other error"

@@ -78,7 +78,7 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
                    engine->name);
   const char *name = engine->name;
   const double dt = dv_scenario_get(scenario, name, engine->search->step_key);
-  const double soft = dv_scenario_get(scenario, name, k->softness_key);
+  const double soft = k->softness_key ? dv_scenario_get(scenario, name, k->softness_key) : NAN;
   const double friction = dv_scenario_get(scenario, name, k->friction_key);
   /* an engine that simulates the scene's cylinder is measured against its own
    * reference, in its own shape: the thin disk is not its body */

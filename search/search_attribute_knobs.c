@@ -83,7 +83,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
     n++;
   }
   const double dt = dv_scenario_get(sc, name, se->step_key);
-  const double soft = dv_scenario_get(sc, name, k->softness_key);
+  const double soft = k->softness_key ? dv_scenario_get(sc, name, k->softness_key) : NAN;
   const double friction = dv_scenario_get(sc, name, k->friction_key);
   kn[n] = (knob){se->step_key, "", {""}, k->softness_min_steps > 0.0 ? 2 : 1, 4.0};
   snprintf(kn[n].change, sizeof kn[n].change, "%.3g -> %.3g s", dt, dt / 4);

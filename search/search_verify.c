@@ -109,7 +109,7 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to verify", engine->name);
   const char *name = engine->name;
   const double dt = dv_scenario_get(sc, name, engine->search->step_key);
-  const double soft = dv_scenario_get(sc, name, k->softness_key);
+  const double soft = k->softness_key ? dv_scenario_get(sc, name, k->softness_key) : NAN;
   const dv_prober pr = {sc, engine, 1};
   for (int i = 0; i < DV_VERIFY_LEVELS; i++) {
     const double h = dt / (1 << i);
@@ -118,7 +118,8 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
     snprintf(softness, sizeof softness, "engines.%s.%s=%.9g", name, k->softness_key,
              fmax(soft * h / dt, k->softness_min_steps * h));
     out->step[i] = h;
-    const int status = dv_search_probe_theta(&pr, &out->error[i], err, step, softness, NULL, NULL);
+    const int status = dv_search_probe_theta(&pr, &out->error[i], err, step,
+                                             k->softness_key ? softness : NULL, NULL, NULL);
     if (status) return status;
   }
   dv_search_verify_judge(out);
