@@ -6,7 +6,7 @@
 # sh: no Node needed) replays the matched reference of SCENARIO made 2 mm
 # thick, its centre moved 1e-7 m (so it is judged, not "identical"):
 #   - it passes compare, next to a linked engine, exit 0;
-#   - crash, hang (timeout 2 s), garbage, a short row, NaN, an early exit, a
+#   - crash, hang (timeout 2 s), garbage, a short row, a long one, NaN, an early exit, a
 #     row at the wrong time, an "error" line, a quaternion off the unit sphere,
 #     no "ready", silence at the start: each FAILs with its own words, exit 1,
 #     within 20 s, the report written;
@@ -52,10 +52,11 @@ crash|stopped answering: exited with status 3
 hang|no answer within 2 s
 garbage|not 16 numbers: field 1 is not a number
 columns|not 16 numbers
-nan|non-finite state
+extra|not 16 numbers: more than 16 fields
+nan|replay: a non-finite state
 early|stopped answering: exited with status 0
 time|the row is at
-error|error the solver failed
+error|replay: error the solver failed
 quat|the quaternion's norm is
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
@@ -85,7 +86,12 @@ check '[ $code -eq 1 ] && grep -q "absent is not available" "$work/stdout"' \
   "a run of an unavailable adapter fails with why: exit $code: $out"
 
 # nothing outside the build runs unless named
-DV_REPLAY_FAULT=hangstart "$diskval" compare "$work/thick.ini" --engines ode --out "$work/o2" \
+DV_REPLAY_MARK=$work/started "$diskval" compare "$work/thick.ini" --out "$work/o2" \
+  --set scenario.duration=0.2 \
   --quiet >/dev/null 2>&1
-check '! grep -q replay "$work/o2/short_circle/report.json"' "a compare of ode ran the adapter"
+check '[ ! -e "$work/started" ] && ! grep -q replay "$work/o2/short_circle/report.json"' \
+  "a compare with the default engines started the adapter (probe or run)"
+DV_REPLAY_MARK=$work/started "$diskval" compare "$work/thick.ini" --engines replay \
+  --out "$work/o3" --quiet >/dev/null 2>&1
+check '[ -e "$work/started" ]' "a compare of the adapter did not start it (the mark's own check)"
 exit $fail

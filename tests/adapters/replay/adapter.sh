@@ -2,9 +2,10 @@
 # A test adapter (docs/adapters.md) in POSIX sh: it answers every "advance T"
 # with the row of $DV_REPLAY_POSE (a pose-form CSV with velocities) at time T,
 # and misbehaves as $DV_REPLAY_FAULT says, from $DV_REPLAY_AT s on: crash,
-# hang, garbage, columns, nan, early, time, error, quat, or at the start:
-# noready, hangstart.
+# hang, garbage, columns, extra, nan, early, time, error, quat, or at the start:
+# noready, hangstart. $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
+[ -n "${DV_REPLAY_MARK:-}" ] && : >"$DV_REPLAY_MARK" # a run started (not a version query)
 dt=
 while read -r key value rest; do
   [ "$key" = set ] && [ "$value" = timestep ] && dt=$rest
@@ -38,6 +39,7 @@ $1 == "advance" {
     if (fault == "hang") system("sleep 60")
     if (fault == "garbage") out = "the solver says hello"
     if (fault == "columns") sub(/ [^ ]+$/, "", out)
+    if (fault == "extra") out = out " 0"
     if (fault == "nan") { split(out, v, " "); v[2] = "nan"; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "early") exit 0
     if (fault == "time") { split(out, v, " "); v[1] = v[1] + 2 * dt; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
