@@ -69,9 +69,10 @@ int dv_cli_engines(int argc, char **argv) {
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   if (scene || a.args.n) {
-    const int status = scene && a.args.n == 1
-                           ? print_scene(scene, a.args.items[0], &a.sets)
-                           : dv_cli_error("engines", "--scene SCENARIO NAME takes both");
+    const int status =
+        !scene ? dv_cli_usage_error("engines", "unexpected argument '%s'", a.args.items[0])
+        : a.args.n == 1 ? print_scene(scene, a.args.items[0], &a.sets)
+                        : dv_cli_usage_error("engines", "--scene SCENARIO NAME: give the NAME");
     dv_cli_args_free(&cmd, &a);
     return status;
   }

@@ -256,6 +256,12 @@ static int finish(parse *p) {
   for (size_t m = 0; m < p->nmodels; m++)
     if (!p->model_c[m][0]) a->model_given = (1u << nvalues) - 1u;
   if (!a->model_given) return fail(p, "model", "no [model] section", "");
+  /* a value with no model of its own is no candidate, but runs when given: its
+   * step and softness derived from the first model */
+  size_t first = 0;
+  while (!(a->model_given >> first & 1u)) first++;
+  for (size_t v = 0; v < nvalues; v++)
+    if (!(a->model_given >> v & 1u)) a->models[v] = a->models[first];
   for (size_t e = 0; e < a->nextra; e++) {
     const int k = find(a, a->extra_key[e]);
     dv_settings_block block;

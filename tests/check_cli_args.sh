@@ -72,10 +72,10 @@ expect "no scenario given" suite
 expect "unknown engine 'Mujoco' \(one of: .*mujoco" simulate "$sc" --engine Mujoco
 # an engine list names the valid engines once, and nothing after them
 for cmd in compare suite verify; do
-  expect "^diskval $cmd: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody\)\$" \
+  expect "^diskval $cmd: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody[a-z0-9_, ]*\)\$" \
     $cmd "$sc" --engines ode,Mujoco
 done
-expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody\)\$" map --engines Mujoco
+expect "^diskval map: unknown engine 'Mujoco' \(one of: reduced, matched, mujoco, ode, bullet, dart, simbody[a-z0-9_, ]*\)\$" map --engines Mujoco
 # an engine named twice would be two results under one key in report.json
 for cmd in compare suite verify; do
   expect "^diskval $cmd: engine 'ode' listed twice\$" $cmd "$sc" --engines ode,mujoco,ode
@@ -108,7 +108,8 @@ expect "^diskval judge: --name gives 2 names for 1 trajectories" judge "$sc" a.c
 expect "^diskval judge: name 'mujoco' is a linked engine's" judge "$sc" mujoco.csv
 expect "^diskval judge: two trajectories named 'a'" judge "$sc" a.csv x/a.csv
 expect "^diskval judge: name 'a b': only letters" judge "$sc" a.csv --name 'a b'
-expect "^diskval judge: 9 trajectories: at most 8" judge "$sc" a.csv b.csv c.csv d.csv e.csv f.csv g.csv h.csv i.csv
+expect "^diskval judge: 17 trajectories: at most 16" judge "$sc" a.csv b.csv c.csv d.csv e.csv f.csv g.csv \
+  h.csv i.csv j.csv k.csv l.csv m.csv n.csv o.csv p.csv q.csv
 expect "^diskval judge: nosuch.csv: cannot open: No such file or directory\$" judge "$sc" nosuch.csv
 [ $fail -eq 0 ] && echo "every bad argument refused in one line, exit 2, nothing written"
 exit $fail
