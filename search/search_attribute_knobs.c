@@ -32,6 +32,15 @@ static int run_knob(const dv_scenario *sc, const char *engine, const char *const
   return DV_OK;
 }
 
+/* does k bring metric m of a's excess within its limit, or cut its excess to RESIDUE */
+static int removes_metric(const dv_attribution *a, const dv_knob_probe *k, int m) {
+  const double excess = isfinite(a->base[m])
+                            ? (k->metric[m] - a->limit[m]) / (a->base[m] - a->limit[m])
+                        : k->metric[m] <= a->limit[m] ? 0.0
+                                                      : INFINITY;
+  return excess <= RESIDUE;
+}
+
 /* how far k leaves the error: the worst value / limit over the judged metrics;
  * it removes the error where each judged metric is within its limit or has lost
  * at least 1 - RESIDUE of its excess over it (a regression limit of 3x a
@@ -97,6 +106,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
     const char *now_text =
         sp && sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
     if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue; /* already so */
+    if (se->choice_key && strcmp(k->extra[x].key, se->choice_key) == 0) continue; /* turned above */
     kn[n] = (knob){k->extra[x].what, "", {""}, 1, 1.0};
     if (now_text)
       snprintf(kn[n].change, sizeof kn[n].change, "%s %s -> %s", k->extra[x].key, now_text,
@@ -206,7 +216,22 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
     for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
       if (i == 0 || strcmp(a->knobs[i].knob, a->knobs[i - 1].knob))
         n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
-    if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " tried)");
+    if (n > 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, " tried)");
+    /* a knob that removes part of the excess is the cause of that part, named with it */
+    for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++) {
+      const dv_knob_probe *k = &a->knobs[i];
+      int named = 0;
+      for (int m = 0; m < DV_NMETRICS && k->ok && n > 0 && (size_t)n < size; m++) {
+        if (!(a->judged >> m & 1u) || !removes_metric(a, k, m)) continue;
+        n += snprintf(out + n, size - (size_t)n, named ? ", " : "; %s (%s) removes ", k->knob,
+                      k->change);
+        if (n > 0 && (size_t)n < size)
+          n += metric_change(m, a->base[m], k->metric[m], out + n, size - (size_t)n);
+        named = 1;
+      }
+      if (named && n > 0 && (size_t)n < size)
+        n += snprintf(out + n, size - (size_t)n, ", not the rest");
+    }
     return;
   }
   const dv_knob_probe *k = &a->knobs[a->cause];
