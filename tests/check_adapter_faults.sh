@@ -13,6 +13,8 @@
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
 #     fails with the reason;
+#   - a run 5 cm off its path fails, its cause searched over the adapter's
+#     knobs (none removes it), or with --cause none not searched;
 #   - every setting reaches the adapter as given (engines --scene);
 #   - no adapter runs unless named: a compare without --engines starts none.
 set -u
@@ -61,6 +63,16 @@ quat|the quaternion's norm is
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 FAULTS
+
+# a run that exceeds its limits: its cause searched over the adapter's knobs, or not (--cause none)
+run replay offset
+check '[ $code -eq 1 ] && grep -q "path_max_err = .*; cause: none of the knobs removes it (timestep, friction tried)" "$work/stdout"' \
+  "offset: the knobs tried, none the cause: $out"
+DV_REPLAY_FAULT=offset "$diskval" compare "$work/thick.ini" --engines replay --cause none \
+  --out "$work/out" --quiet >"$work/stdout" 2>&1
+code=$?
+check '[ $code -eq 1 ] && grep -q "path_max_err = .*; cause: not searched (--cause none)" "$work/stdout"' \
+  "offset, --cause none: $(cat "$work/stdout")"
 
 # every setting reaches the adapter, as given: --set and the scene's body
 "$diskval" engines --scene "$work/thick.ini" replay --set engines.replay.timestep=0.002 \
