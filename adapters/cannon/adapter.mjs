@@ -16,9 +16,7 @@ function create(scene) {
   const contactTime = number(scene, 'contact_time');
   const stiffness = number(scene, 'stiffness');
   const { radius: r, mass: m, A, C } = scene;
-  // diskval may send the half-length as a setting (a thin scene's stand-in): it wins
-  const h = 'half_thickness' in scene.settings ? number(scene, 'half_thickness') : scene.half_thickness;
-  if (!(h > 0)) throw new Error(`half_thickness ${h}: the prism needs a thickness`);
+  const h = scene.half_thickness;
   if (!Number.isInteger(segments) || segments < 3) throw new Error(`setting segments: ${segments} is not an integer >= 3`);
 
   const world = new World({ gravity: new Vec3(0, 0, -scene.gravity), allowSleep: false });

@@ -44,6 +44,7 @@ function parseScene(lines) {
   for (const key of [...SCALARS, ...Object.keys(VECTORS)])
     if (!(key in scene)) throw new Error(`the scene gives no ${key}`);
   [scene.A, scene.C] = scene.inertia;
+  if (!(scene.half_thickness > 0)) throw new Error('half_thickness: every adapter models a cylinder of some thickness');
   return scene;
 }
 

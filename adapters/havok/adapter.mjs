@@ -45,9 +45,7 @@ async function create(scene) {
   const shapeKind = text(scene, 'shape');
   const segments = number(scene, 'segments');
   const { radius: r, mass: m, A, C } = scene;
-  // diskval may send the half-length as a setting (a thin scene's stand-in): it wins
-  const h = 'half_thickness' in scene.settings ? number(scene, 'half_thickness') : scene.half_thickness;
-  if (!(h > 0)) throw new Error(`half_thickness ${h}: the prism needs a thickness`);
+  const h = scene.half_thickness;
 
   const world = check(hk.HP_World_Create(), 'world')[1];
   check(hk.HP_World_SetGravity(world, [0, 0, -scene.gravity]), 'gravity');

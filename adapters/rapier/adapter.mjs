@@ -28,7 +28,7 @@ export async function create(scene) {
   const mu = number(scene, 'friction');
   const softness = number(scene, 'contact_time');
   const { A, C, mass } = scene;
-  const halfThickness = 'half_thickness' in scene.settings ? number(scene, 'half_thickness') : scene.half_thickness;
+  const halfThickness = scene.half_thickness;
 
   const world = new RAPIER.World(vec([0, 0, -scene.gravity]));
   const p = world.integrationParameters;
