@@ -97,6 +97,13 @@ run absent
 check '[ $code -eq 1 ] && grep -q "absent is not available" "$work/stdout"' \
   "a run of an unavailable adapter fails with why: exit $code: $out"
 
+# a machine without Node: the shipped adapters are listed as not available, the rest runs
+PATH=/nonexistent "$(command -v env)" "$diskval" engines >"$work/engines" 2>&1
+code=$?
+check '[ $code -eq 0 ] && grep -q "^ode " "$work/engines" &&
+  { ! grep -q "^mujoco3 " "$work/engines" || grep -q "^mujoco3 .*not available" "$work/engines"; }' \
+  "engines without Node on PATH: exit $code: $(grep "^mujoco3" "$work/engines")"
+
 # nothing outside the build runs unless named
 DV_REPLAY_MARK=$work/started "$diskval" compare "$work/thick.ini" --out "$work/o2" \
   --set scenario.duration=0.2 \
