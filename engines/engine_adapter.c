@@ -31,7 +31,7 @@ typedef struct adapter_run {
   dv_geometry geom;
   double timestep, theta_limit, time_tol;
   char scene[SCENE_BYTES]; /* the settings' lines, then start */
-  const dv_scenario *sc;
+  dv_scenario sc; /* a copy: reset may come after the caller's scenario is gone */
   dv_child child;
   dv_engine_watch watch;
   dv_engine_stats st;
@@ -64,7 +64,7 @@ static void *adapter_alloc(const dv_adapter *a, const dv_scenario *sc, dv_error 
   adapter_run *r = calloc(1, sizeof *r);
   if (!r) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
   r->a = a;
-  r->sc = sc;
+  r->sc = *sc;
   r->disk = sc->disk;
   r->timestep = dv_scenario_get(sc, a->name, a->step_key);
   r->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r,
@@ -89,7 +89,7 @@ static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   dv_child_stop(&r->child, 0.0);
   memset(&r->st, 0, sizeof r->st);
   r->status = DV_OK;
-  if (dv_adapter_scene_text(r->a, r->sc, state, r->scene, sizeof r->scene, err))
+  if (dv_adapter_scene_text(r->a, &r->sc, state, r->scene, sizeof r->scene, err))
     return failed(r, DV_FAILURE_SETUP, err, "", err->msg);
   memcpy(r->prev_y, state, sizeof r->prev_y);
   dv_pose start; /* watched from the state sent, whatever times are asked for */
