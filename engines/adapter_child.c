@@ -100,7 +100,8 @@ static int take_line(dv_child *c, char *line, size_t size) {
   char *nl = memchr(c->buf, '\n', c->len);
   if (!nl) return 0;
   const size_t n = (size_t)(nl - c->buf);
-  snprintf(line, size, "%.*s", (int)n, c->buf);
+  const size_t keep = n && c->buf[n - 1] == '\r' ? n - 1 : n; /* a CRLF line is a line */
+  snprintf(line, size, "%.*s", (int)keep, c->buf);
   memmove(c->buf, nl + 1, c->len - n - 1);
   c->len -= n + 1;
   return 1;

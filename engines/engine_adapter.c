@@ -31,7 +31,7 @@ typedef struct adapter_run {
   dv_geometry geom;
   double timestep, theta_limit, time_tol;
   char scene[SCENE_BYTES]; /* the settings' lines, then start */
-  dv_scenario sc; /* a copy: reset may come after the caller's scenario is gone */
+  dv_scenario sc;          /* a copy: reset may come after the caller's scenario is gone */
   dv_child child;
   dv_engine_watch watch;
   dv_engine_stats st;
@@ -164,6 +164,12 @@ static int adapter_advance(void *p, double t, dv_sample *out, dv_error *err) {
              t, QUAT_TOL);
     return failed(r, DV_FAILURE_LIBRARY, err, "", what);
   }
+  if (!(v[14] == floor(v[14]) && v[14] >= -1 && v[14] < 1e6 && v[15] == floor(v[15]) &&
+        v[15] >= 0 && v[15] < 1e15)) {
+    snprintf(what, sizeof what, "contacts %g and steps %g at t = %g s: not whole counts", v[14],
+             v[15], t);
+    return failed(r, DV_FAILURE_LIBRARY, err, "", what);
+  }
   const long steps = (long)v[15];
   r->st.steps = steps;
   const dv_failure f = dv_engine_watch_check(&r->watch, &r->disk, &r->geom, &pose, steps,
@@ -238,7 +244,8 @@ static dv_adapter *slots[DV_MAX_ADAPTERS];
   }
 SLOT(0)
 SLOT(1)
-SLOT(2) SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
+SLOT(2)
+SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
 #undef SLOT
 #define SLOT(i) \
   { alloc_##i, version_##i, half_##i, check_##i }

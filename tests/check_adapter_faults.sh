@@ -8,7 +8,8 @@
 #   - it passes compare, next to a linked engine, exit 0;
 #   - crash, hang (timeout 2 s), garbage, a short row, a long one, NaN, an early exit, a
 #     row at the wrong time, an "error" line, a quaternion off the unit sphere,
-#     no "ready", silence at the start: each FAILs with its own words, exit 1,
+#     counts that are not whole, no "ready", silence at the start (a CR LF
+#     line end is no fault: it passes): each FAILs with its own words, exit 1,
 #     within 20 s, the report written;
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
@@ -43,6 +44,8 @@ run replay,ode
 check '[ $code -eq 0 ] && grep -q "replay .*pass" "$work/stdout" && grep -q "ode .*pass" "$work/stdout"' \
   "the replayed reference and ODE pass: exit $code: $out"
 check 'grep -q "\"replay\"" "$work/out/short_circle/report.json"' "report.json names the adapter"
+run replay crlf
+check '[ $code -eq 0 ] && grep -q "replay .*pass" "$work/stdout"' "lines ending in CR LF: exit $code: $out"
 
 while IFS='|' read -r fault words; do
   run replay "$fault"
@@ -60,6 +63,7 @@ early|stopped answering: exited with status 0
 time|the row is at
 error|replay: error the solver failed
 quat|the quaternion's norm is
+counts|not whole counts
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 FAULTS

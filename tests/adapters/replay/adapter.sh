@@ -3,7 +3,8 @@
 # with the row of $DV_REPLAY_POSE (a pose-form CSV with velocities) at time T,
 # and misbehaves as $DV_REPLAY_FAULT says, from $DV_REPLAY_AT s on: crash,
 # hang, garbage, columns, extra, nan, early, time, error, quat, offset (the
-# centre 5 cm off: a run that exceeds its path limit), or at the start:
+# centre 5 cm off: a run that exceeds its path limit), counts (steps 1.5),
+# crlf (lines ending in CR LF, which must pass), or at the start:
 # noready, hangstart. $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
 [ -n "${DV_REPLAY_MARK:-}" ] && : >"$DV_REPLAY_MARK" # a run started (not a version query)
@@ -41,6 +42,8 @@ $1 == "advance" {
     if (fault == "garbage") out = "the solver says hello"
     if (fault == "columns") sub(/ [^ ]+$/, "", out)
     if (fault == "extra") out = out " 0"
+    if (fault == "counts") out = out ".5"
+    if (fault == "crlf") out = out "\r"
     if (fault == "offset") { split(out, v, " "); v[2] = v[2] + 0.05; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "nan") { split(out, v, " "); v[2] = "nan"; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "early") exit 0
