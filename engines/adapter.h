@@ -47,7 +47,7 @@ typedef struct dv_adapter {
   dv_adapter_setting setting[DV_ADAPTER_MAX_SETTINGS];
   dv_setting_spec specs[DV_ADAPTER_MAX_SETTINGS];
   /* step models, by the choice key's value (one where there is none) */
-  dv_step_model models[DV_ADAPTER_MAX_CHOICES];
+  dv_step_model models[DV_ADAPTER_MAX_CHOICES + 1];
   unsigned model_given; /* bit v: [model.VALUE] was given */
   /* attribution's further knobs */
   size_t nextra;

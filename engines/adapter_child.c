@@ -1,4 +1,5 @@
 /* adapter_child: a child process spoken to by lines (adapter_child.h). */
+#define _GNU_SOURCE /* pipe2 */
 #include "adapter_child.h"
 
 #include <errno.h>
@@ -8,10 +9,13 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+
+#define EXIT_POLL 0.25 /* s between looks at whether a silent adapter has exited */
 
 static double now(void) {
   struct timespec ts;
@@ -28,21 +32,25 @@ int dv_child_start(dv_child *c, const char *dir, char *const argv[], char *what,
   int in[2], out[2], err[2];
   memset(c, 0, sizeof *c);
   c->in = c->out = c->err = -1;
-  if (socketpair(AF_UNIX, SOCK_STREAM, 0, in)) goto fail;
-  if (pipe(out)) goto fail_in;
-  if (pipe(err)) goto fail_out;
+  /* close-on-exec from birth: another run's adapter, started meanwhile, inherits none */
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, in)) goto fail;
+  if (pipe2(out, O_CLOEXEC)) goto fail_in;
+  if (pipe2(err, O_CLOEXEC)) goto fail_out;
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) goto fail_err;
   if (pid == 0) {
-    dup2(in[1], 0), dup2(out[1], 1), dup2(err[1], 2);
-    for (int k = 0; k < 2; k++) close(in[k]), close(out[k]), close(err[k]);
+    setpgid(0, 0);                    /* its own group: whatever it starts is killed with it */
+    prctl(PR_SET_PDEATHSIG, SIGKILL); /* and it outlives no diskval, even a killed one */
+    if (getppid() != parent) _exit(1);
+    dup2(in[1], 0), dup2(out[1], 1), dup2(err[1], 2); /* dup2 clears close-on-exec */
     if (chdir(dir) == 0) execvp(argv[0], argv);
     dprintf(2, "cannot run %s in %s: %s\n", argv[0], dir, strerror(errno));
     _exit(127);
   }
+  setpgid(pid, pid); /* as the child does: whichever runs first */
   close(in[1]), close(out[1]), close(err[1]);
   c->pid = pid, c->in = in[0], c->out = out[0], c->err = err[0];
-  for (int *fd = &c->in; fd <= &c->err; fd++) fcntl(*fd, F_SETFD, FD_CLOEXEC);
   fcntl(c->err, F_SETFL, O_NONBLOCK);
   return 0;
 fail_err:
@@ -92,6 +100,11 @@ static void drain_err(dv_child *c) {
       }
     }
   }
+  if (c->err_len) { /* a last line without its newline is still its last line */
+    c->err_line[c->err_len] = '\0';
+    snprintf(c->err_tail, sizeof c->err_tail, "%s", c->err_line);
+    c->err_len = 0;
+  }
   close_fd(&c->err); /* its end */
 }
 
@@ -123,11 +136,14 @@ int dv_child_read_line(dv_child *c, double timeout, char *line, size_t size, cha
       snprintf(what, wsize, "no answer within %g s", timeout);
       return -1;
     }
-    const int r = poll(fds, c->err >= 0 ? 2 : 1, (int)ceil(fmin(left, 3600.0) * 1000));
+    const int r = poll(fds, c->err >= 0 ? 2 : 1, (int)ceil(fmin(left, EXIT_POLL) * 1000));
     if (r < 0 && errno != EINTR) {
       snprintf(what, wsize, "poll: %s", strerror(errno));
       return -1;
     }
+    /* exited, though something it started may hold its output open: its end */
+    if (r == 0 && !c->reaped && waitpid(c->pid, &c->status, WNOHANG) == c->pid) c->reaped = 1;
+    if (r == 0 && c->reaped) return take_line(c, line, size) ? 0 : 1;
     if (r <= 0) continue;
     if (c->err >= 0 && fds[1].revents) drain_err(c);
     if (fds[0].revents) {
@@ -158,22 +174,26 @@ void dv_child_stop(dv_child *c, double grace) {
       break;
     }
     if (now() >= end) {
+      kill(-c->pid, SIGKILL);
       kill(c->pid, SIGKILL);
       while (waitpid(c->pid, &c->status, 0) < 0 && errno == EINTR) {
       }
-      c->reaped = 1;
+      c->reaped = c->killed = 1;
       break;
     }
     struct timespec nap = {0, 2000000};
     nanosleep(&nap, NULL);
   }
+  kill(-c->pid, SIGKILL); /* what it left running in its group */
   if (c->err >= 0) drain_err(c);
   close_fd(&c->err);
   c->pid = 0;
 }
 
 void dv_child_end_text(const dv_child *c, char *buf, size_t size) {
-  if (WIFSIGNALED(c->status))
+  if (c->killed)
+    snprintf(buf, size, "it did not exit once its input was closed: killed");
+  else if (WIFSIGNALED(c->status))
     snprintf(buf, size, "killed by signal %d", WTERMSIG(c->status));
   else
     snprintf(buf, size, "exited with status %d", WEXITSTATUS(c->status));

@@ -3,7 +3,8 @@
  * Its standard input is a socket (written with MSG_NOSIGNAL: a child that
  * died is a failed run, never a SIGPIPE that kills diskval); its standard
  * output is read line by line with a time-out; its standard error is drained
- * as it comes and its last line kept for the report.
+ * as it comes and its last line kept for the report. It runs in a process
+ * group of its own, killed whole when it stops, and dies with diskval.
  */
 #ifndef DV_ADAPTER_CHILD_H
 #define DV_ADAPTER_CHILD_H
@@ -23,6 +24,7 @@ typedef struct dv_child {
   size_t err_len;
   int status; /* as waitpid gave it, once reaped */
   int reaped;
+  int killed; /* dv_child_stop killed it: it did not exit in its grace */
 } dv_child;
 
 /* run argv (argv[0] looked up on PATH) in dir; 0, or -1 with what set */

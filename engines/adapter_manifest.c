@@ -22,9 +22,10 @@ typedef struct parse {
   const char *path;
   dv_error *err;
   int failed;
-  char model_c[DV_ADAPTER_MAX_CHOICES + 1][DV_ADAPTER_NAME]; /* [model.VALUE]'s VALUE */
+  char model_c[DV_ADAPTER_MAX_CHOICES + 1][DV_ADAPTER_NAME]; /* [model] and [model.VALUE]s */
   size_t nmodels;
   char knob_name[DV_ADAPTER_MAX_EXTRA][DV_ADAPTER_NAME]; /* [knob.NAME]'s NAME */
+  unsigned given; /* [adapter] keys given (bits 0-15), [roles] keys (16-31) */
 } parse;
 
 /* inih's reader, counting lines; a line longer than inih takes is an error, not two lines */
@@ -93,6 +94,8 @@ static int choices(parse *p, dv_adapter_setting *set, dv_setting_spec *s, const 
 }
 
 static int setting_key(parse *p, const char *name, const char *key, const char *value) {
+  if (!name[0] || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_") != strlen(name))
+    return fail(p, name, "a setting's name: lower-case letters, digits and '_' only", "");
   const size_t i = setting_index(p, name);
   if (i == (size_t)-1) return 0;
   dv_adapter_setting *set = &p->a->setting[i];
@@ -125,7 +128,7 @@ static int model_key(parse *p, const char *value_name, const char *key, const ch
   size_t m = 0;
   while (m < p->nmodels && strcmp(p->model_c[m], value_name) != 0) m++;
   if (m == p->nmodels) {
-    if (m == DV_ADAPTER_MAX_CHOICES) return fail(p, key, "too many [model] sections", "");
+    if (m == DV_ADAPTER_MAX_CHOICES + 1) return fail(p, key, "too many [model] sections", "");
     copy(p, p->model_c[p->nmodels++], DV_ADAPTER_NAME, "model", value_name);
   }
   dv_step_model *sm = &p->a->models[m];
@@ -135,8 +138,24 @@ static int model_key(parse *p, const char *value_name, const char *key, const ch
   return fail(p, key, "unknown key in [model]", "");
 }
 
+/* a key of [adapter] or [roles] given a second time (one key a bit) */
+static int twice(parse *p, const char *section, const char *key) {
+  static const char *const keys[] = {
+      "name",   "description", "command", "requires", "timeout", "stand_in",           "protocol",
+      "step",   "friction",    "choice",  "softness", "stiffer", "softness_min_steps", "step_lo",
+      "step_hi"};
+  for (unsigned k = 0; k < sizeof keys / sizeof keys[0]; k++)
+    if (strcmp(keys[k], key) == 0) {
+      const unsigned bit = 1u << (k + (section[0] == 'r' ? 16 : 0));
+      if (p->given & bit) return fail(p, key, "given twice", "");
+      p->given |= bit;
+    }
+  return 1;
+}
+
 static int adapter_key(parse *p, const char *key, const char *value) {
   dv_adapter *a = p->a;
+  if (!twice(p, "adapter", key)) return 0;
   if (strcmp(key, "name") == 0) {
     if (!value[0] || strspn(value, "abcdefghijklmnopqrstuvwxyz0123456789_") != strlen(value))
       return fail(p, key, "lower-case letters, digits and '_' only: ", value);
@@ -144,7 +163,11 @@ static int adapter_key(parse *p, const char *key, const char *value) {
   }
   if (strcmp(key, "description") == 0)
     return copy(p, a->description, sizeof a->description, key, value);
-  if (strcmp(key, "command") == 0) return copy(p, a->command, sizeof a->command, key, value);
+  if (strcmp(key, "command") == 0) {
+    if (!value[0] || strpbrk(value, "\"'")) /* run as words, by no shell */
+      return fail(p, key, "words separated by spaces, no quotes: ", value[0] ? value : "(empty)");
+    return copy(p, a->command, sizeof a->command, key, value);
+  }
   if (strcmp(key, "requires") == 0) return copy(p, a->requires, sizeof a->requires, key, value);
   if (strcmp(key, "timeout") == 0) return number(p, key, value, 0.001, &a->timeout);
   if (strcmp(key, "stand_in") == 0) return number(p, key, value, 1e-9, &a->stand_in);
@@ -158,6 +181,7 @@ static int adapter_key(parse *p, const char *key, const char *value) {
 
 static int roles_key(parse *p, const char *key, const char *value) {
   dv_adapter *a = p->a;
+  if (!twice(p, "roles", key)) return 0;
   if (strcmp(key, "step") == 0) return copy(p, a->step_key, sizeof a->step_key, key, value);
   if (strcmp(key, "friction") == 0)
     return copy(p, a->friction_key, sizeof a->friction_key, key, value);
@@ -212,8 +236,24 @@ static int find(const dv_adapter *a, const char *key) {
 }
 
 /* the checks across sections, and the tables built from them */
+/* each setting on its own: choices, a range, a default inside it */
+static int check_setting(parse *p, const dv_setting_spec *s) {
+  char range[64];
+  if (s->type == DV_SETTING_CHOICE && !(s->choices && s->choices[0]))
+    return fail(p, s->key, "a choice with no choices = line", "");
+  if (s->type == DV_SETTING_INT && !(s->lo >= -2147483647.0 && s->hi <= 2147483647.0))
+    return fail(p, s->key, "an int's lo and hi must be given, within the int range", "");
+  if (!(s->lo <= s->hi)) return fail(p, s->key, "lo is above hi", "");
+  snprintf(range, sizeof range, "[%g, %g]", s->lo, s->hi);
+  if (!isnan(s->def) && !(s->def >= s->lo && s->def <= s->hi))
+    return fail(p, s->key, "the default is outside its range ", range);
+  return 1;
+}
+
 static int finish(parse *p) {
   dv_adapter *a = p->a;
+  for (size_t i = 0; i < a->nsettings; i++)
+    if (!check_setting(p, &a->specs[i])) return 0;
   static const char *const required[] = {"name", "command"};
   const char *const given[] = {a->name, a->command};
   for (size_t k = 0; k < 2; k++)
@@ -229,13 +269,16 @@ static int finish(parse *p) {
     if ((k < 2 || roles[k][0]) && find(a, roles[k]) < 0)
       return fail(p, k < 2 ? (k ? "friction" : "step") : roles[k],
                   "a role names no [setting.KEY] (or none is given): ", roles[k]);
+  for (size_t k = 0; k < 4; k++) /* the step, friction and softness are numbers diskval sets */
+    if (k != 2 && roles[k][0] && a->specs[find(a, roles[k])].type != DV_SETTING_REAL)
+      return fail(p, roles[k], "a role's setting must be of type real", "");
   if (find(a, DV_ADAPTER_HALF_KEY) >= 0)
     return fail(p, DV_ADAPTER_HALF_KEY, "diskval sets it from the scene", "");
   const int choice = a->choice_key[0] ? find(a, a->choice_key) : -1;
   if (choice >= 0 && a->specs[choice].type != DV_SETTING_CHOICE)
     return fail(p, "choice", "names a setting that is not a choice: ", a->choice_key);
   /* every model sits at its choice value's index */
-  dv_step_model models[DV_ADAPTER_MAX_CHOICES];
+  dv_step_model models[DV_ADAPTER_MAX_CHOICES + 1];
   memcpy(models, a->models, sizeof models);
   memset(a->models, 0, sizeof a->models);
   size_t nvalues = 1;
@@ -298,7 +341,7 @@ int dv_adapter_load(const char *dir, dv_adapter *a, dv_error *err) {
   a->contact.stiffer = 0.25;
   if (!realpath(dir, a->dir)) snprintf(a->dir, sizeof a->dir, "%s", dir);
   snprintf(path, sizeof path, "%s/manifest.ini", a->dir);
-  parse p = {a, {fopen(path, "r"), 0, 0}, path, err, 0, {{0}}, 0, {{0}}};
+  parse p = {a, {fopen(path, "r"), 0, 0}, path, err, 0, {{0}}, 0, {{0}}, 0};
   if (!p.rd.fp) return dv_fail(err, DV_EINPUT, "%s: cannot be read", path);
   const int r = ini_parse_stream(read_line, &p.rd, handler, &p);
   fclose(p.rd.fp);

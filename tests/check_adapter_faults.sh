@@ -66,7 +66,9 @@ quat|the quaternion's norm is
 counts|not whole counts
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
+bgchild|stopped answering: exited with status 0
 FAULTS
+check '! pgrep -f "sleep 67" >/dev/null' "an adapter's own children outlived it: $(pgrep -af 'sleep 67')"
 
 # a run that exceeds its limits: its cause searched over the adapter's knobs, or not (--cause none)
 run replay offset
@@ -86,8 +88,16 @@ check 'grep -qx "set timestep 0.002" "$work/scene" && grep -qx "half_thickness 0
   [ "$(tail -n 1 "$work/scene")" = start ]' "the scene sent: $(cat "$work/scene")"
 
 # a broken manifest and a missing program: listed with why, diskval still runs
-mkdir -p "$work/more/broken" "$work/more/absent"
+mkdir -p "$work/more/broken" "$work/more/absent" "$work/more/nochoices" "$work/more/intstep" \
+  "$work/more/outside"
 printf '[adapter]\nname = broken\ncolour = blue\n' >"$work/more/broken/manifest.ini"
+sed 's/^name = replay/name = nochoices/; /^choices = replay$/d; /^default = replay$/d' \
+  "$adapters/replay/manifest.ini" \
+  >"$work/more/nochoices/manifest.ini"
+sed 's/^name = replay/name = intstep/; /^\[setting.timestep\]/,/^type/ s/^type = real/type = int/' \
+  "$adapters/replay/manifest.ini" >"$work/more/intstep/manifest.ini"
+sed 's/^name = replay/name = outside/; /^\[setting.timestep\]/,/^unit/ s/^default = scene/default = 5/' \
+  "$adapters/replay/manifest.ini" >"$work/more/outside/manifest.ini"
 sed 's/^name = replay/name = absent/; s/^command = .*/command = no-such-program-here x/' \
   "$adapters/replay/manifest.ini" >"$work/more/absent/manifest.ini"
 export DISKVAL_ADAPTERS=$adapters:$work/more
@@ -95,6 +105,12 @@ export DISKVAL_ADAPTERS=$adapters:$work/more
 code=$?
 check '[ $code -eq 0 ] && grep -q "broken/manifest.ini:3: colour: unknown key" "$work/engines"' \
   "engines names the bad manifest's line: exit $code: $(grep -i broken "$work/engines")"
+check 'grep -q "nochoices/manifest.ini: mode: a choice with no choices = line" "$work/engines" &&
+  grep -q "intstep/manifest.ini: timestep: a role.s setting must be of type real" "$work/engines" &&
+  grep -q "outside/manifest.ini: timestep: the default is outside its range" "$work/engines"' \
+  "bad settings in manifests named: $(grep manifest.ini "$work/engines")"
+"$diskval" analyze "$work/thick.ini" >/dev/null 2>&1
+check '[ $? -eq 0 ]' "analyze with bad manifests around: exit not 0"
 check 'grep -q "^absent .*not available: no-such-program-here is not on PATH" "$work/engines"' \
   "engines says the absent adapter's program is missing: $(grep absent "$work/engines")"
 run absent

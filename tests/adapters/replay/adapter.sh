@@ -5,7 +5,7 @@
 # hang, garbage, columns, extra, nan, early, time, error, quat, offset (the
 # centre 5 cm off: a run that exceeds its path limit), counts (steps 1.5),
 # crlf (lines ending in CR LF, which must pass), or at the start:
-# noready, hangstart. $DV_REPLAY_MARK, when set, is created when a run starts.
+# noready, hangstart, bgchild (exits, a child of its own holding its output). $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
 [ -n "${DV_REPLAY_MARK:-}" ] && : >"$DV_REPLAY_MARK" # a run started (not a version query)
 dt=
@@ -15,7 +15,8 @@ while read -r key value rest; do
 done
 case $DV_REPLAY_FAULT in
   noready) echo "hello"; exit 0 ;;
-  hangstart) sleep 60 ;;
+  hangstart) sleep 67 ;;
+  bgchild) sleep 67 & exit 0 ;; # exits, its child holding the output open
 esac
 echo ready
 # mawk reads its input in blocks unless interactive: a row must answer each line
@@ -38,7 +39,7 @@ $1 == "advance" {
   out = out " 1 " int($2 / dt + 0.5)
   if ($2 + 1e-12 >= at) {
     if (fault == "crash") exit 3
-    if (fault == "hang") system("sleep 60")
+    if (fault == "hang") system("sleep 67")
     if (fault == "garbage") out = "the solver says hello"
     if (fault == "columns") sub(/ [^ ]+$/, "", out)
     if (fault == "extra") out = out " 0"
