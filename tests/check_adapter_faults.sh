@@ -68,6 +68,7 @@ noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 bgchild|stopped answering: exited with status 0
 FAULTS
+for _ in 1 2 3 4 5 6 7 8 9 10; do pgrep -f "sleep 67" >/dev/null || break; sleep 0.2; done # SIGKILL lands
 check '! pgrep -f "sleep 67" >/dev/null' "an adapter's own children outlived it: $(pgrep -af 'sleep 67')"
 
 # a run that exceeds its limits: its cause searched over the adapter's knobs, or not (--cause none)
