@@ -60,6 +60,16 @@ static int ended(adapter_run *r, dv_error *err) {
   return failed(r, DV_FAILURE_LIBRARY, err, "the adapter stopped answering: ", how);
 }
 
+/* the manifest's command split into argv (in buf), at most 30 words; their count */
+static size_t command_words(const char *command, char *buf, size_t size, char *argv[32]) {
+  size_t n = 0;
+  snprintf(buf, size, "%s", command);
+  for (char *save = NULL, *w = strtok_r(buf, " ", &save); w && n < 30;
+       w = strtok_r(NULL, " ", &save))
+    argv[n++] = w;
+  return n;
+}
+
 static void *adapter_alloc(const dv_adapter *a, const dv_scenario *sc, dv_error *err) {
   adapter_run *r = calloc(1, sizeof *r);
   if (!r) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
@@ -96,10 +106,7 @@ static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   dv_pose_from_state(&r->geom, state, &start);
   const dv_failure f = dv_engine_watch_start(&r->watch, &r->disk, &start, what, sizeof what);
   if (f) return failed(r, f, err, "", what);
-  snprintf(words, sizeof words, "%s", r->a->command);
-  for (char *save = NULL, *w = strtok_r(words, " ", &save); w && n < 31;
-       w = strtok_r(NULL, " ", &save))
-    argv[n++] = w;
+  n = command_words(r->a->command, words, sizeof words, argv);
   argv[n] = NULL;
   if (dv_child_start(&r->child, r->a->dir, argv, what, sizeof what))
     return failed(r, DV_FAILURE_SETUP, err, "", what);
@@ -206,15 +213,12 @@ static void adapter_free(void *p) {
 /* the engine's own words: COMMAND --version's first line (asked once) */
 static const char *adapter_version(dv_adapter *a) {
   char what[256], line[DV_CHILD_LINE], words[sizeof a->command];
-  char *argv[33];
-  size_t n = 0;
+  char *argv[32];
+  size_t n;
   dv_child c;
   if (a->version[0]) return a->version;
   if (a->missing[0]) return snprintf(a->version, sizeof a->version, "not available"), a->version;
-  snprintf(words, sizeof words, "%s", a->command);
-  for (char *save = NULL, *w = strtok_r(words, " ", &save); w && n < 31;
-       w = strtok_r(NULL, " ", &save))
-    argv[n++] = w;
+  n = command_words(a->command, words, sizeof words, argv);
   argv[n++] = "--version";
   argv[n] = NULL;
   snprintf(a->version, sizeof a->version, "version unknown");
@@ -245,7 +249,8 @@ static dv_adapter *slots[DV_MAX_ADAPTERS];
 SLOT(0)
 SLOT(1)
 SLOT(2)
-SLOT(3) SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
+SLOT(3)
+SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
 #undef SLOT
 #define SLOT(i) \
   { alloc_##i, version_##i, half_##i, check_##i }
