@@ -61,11 +61,18 @@ static int number(parse *p, const char *key, const char *value, double lo, doubl
   return 1;
 }
 
+/* the index of key among a's settings, or -1 */
+static int find(const dv_adapter *a, const char *key) {
+  const dv_settings_section read = {a->name, a->specs, a->nsettings, 0, NULL};
+  const dv_setting_spec *s = dv_settings_find(&read, key);
+  return s ? (int)(s - a->specs) : -1;
+}
+
 /* the setting called key, added when new */
 static size_t setting_index(parse *p, const char *key) {
   dv_adapter *a = p->a;
-  for (size_t i = 0; i < a->nsettings; i++)
-    if (strcmp(a->setting[i].key, key) == 0) return i;
+  const int known = find(a, key);
+  if (known >= 0) return (size_t)known;
   if (a->nsettings == DV_ADAPTER_MAX_SETTINGS - 1) /* one is kept for half_thickness */
     return fail(p, key, "too many settings", ""), (size_t)-1;
   const size_t i = a->nsettings++;
@@ -226,13 +233,6 @@ static int handler(void *user, const char *section, const char *key, const char 
   if (strncmp(section, "setting.", 8) == 0) return setting_key(p, section + 8, key, value);
   if (strncmp(section, "knob.", 5) == 0) return knob_key(p, section + 5, key, value);
   return fail(p, key, "unknown section ", section);
-}
-
-/* the index of key among a's settings, or -1 */
-static int find(const dv_adapter *a, const char *key) {
-  for (size_t i = 0; i < a->nsettings; i++)
-    if (strcmp(a->setting[i].key, key) == 0) return (int)i;
-  return -1;
 }
 
 /* the checks across sections, and the tables built from them */

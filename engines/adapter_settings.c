@@ -10,32 +10,31 @@
 #include "dv_pose.h"
 #include "engine_friction.h"
 
-static int index_of(const dv_adapter *a, const char *key) {
-  for (size_t i = 0; i < a->nsettings; i++)
-    if (strcmp(a->setting[i].key, key) == 0) return (int)i;
-  return -1;
+/* where key's value lives in a's settings block (every key a manifest's roles name exists) */
+static void *field(const dv_adapter *a, void *block, const char *key) {
+  return (char *)block + dv_settings_find(&a->section, key)->offset;
 }
 
-static double *real_at(void *block, int i) {
-  return (double *)((char *)block + 8 * i);
-}
-static int *int_at(void *block, int i) {
-  return (int *)((char *)block + 8 * i);
+/* append "; text" to why and key to keys (n of them so far) */
+static void add_reason(char *why, size_t size, const char **keys, size_t *n, const char *key,
+                       const char *text) {
+  const size_t used = strlen(why);
+  snprintf(why + used, size - used, "%s%s", used ? "; " : "", text);
+  keys[(*n)++] = key;
+  keys[*n] = NULL;
 }
 
 int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setting_issue *issue) {
   char why[DV_DERIVED_BYTES] = "", number[DV_FORMAT_SIZE];
   const char *keys[10] = {NULL};
   (void)issue;
-  const int ci = index_of(a, a->choice_key),
-            si = a->softness_key[0] ? index_of(a, a->softness_key) : -1;
   double no_softness = NAN;
-  double *dt = real_at(block, index_of(a, a->step_key));
-  double *soft = si >= 0 ? real_at(block, si) : &no_softness;
-  int *choice = int_at(block, ci);
+  double *dt = field(a, block, a->step_key);
+  double *soft = a->softness_key[0] ? field(a, block, a->softness_key) : &no_softness;
+  int *choice = field(a, block, a->choice_key);
   /* the body first: the probe judges the cylinder against its matched reference */
   char body[160] = "";
-  double *half = real_at(block, index_of(a, DV_ADAPTER_HALF_KEY));
+  double *half = field(a, block, DV_ADAPTER_HALF_KEY);
   const int half_derived = !dv_scenario_is_given(sc, a->name, DV_ADAPTER_HALF_KEY);
   if (half_derived) {
     *half = sc->thickness > 0.0 ? 0.5 * sc->thickness : a->stand_in;
@@ -46,9 +45,8 @@ int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setti
   }
   char rough[160] = "";
   const char *friction_key[2] = {NULL, NULL};
-  dv_engine_derive_friction(sc, a->name, a->friction_key, 1.0, "",
-                            real_at(block, index_of(a, a->friction_key)), rough, sizeof rough,
-                            friction_key);
+  dv_engine_derive_friction(sc, a->name, a->friction_key, 1.0, "", field(a, block, a->friction_key),
+                            rough, sizeof rough, friction_key);
   const int friction_derived = friction_key[0] != NULL;
   const int given = dv_scenario_is_given(sc, a->name, a->choice_key);
   const dv_knob_choice in = {given ? *choice : -1, *dt, *soft};
@@ -56,21 +54,11 @@ int dv_adapter_check(const dv_adapter *a, dv_scenario *sc, void *block, dv_setti
   dv_engine_choose(sc, &a->type, &a->knobs, *choice, &in, &out, why, sizeof why, keys);
   *choice = out.choice;
   *dt = out.timestep;
-  if (si >= 0 && !isnan(out.softness)) *soft = out.softness;
+  if (a->softness_key[0] && !isnan(out.softness)) *soft = out.softness;
   size_t n = 0;
   while (keys[n]) n++;
-  if (half_derived) {
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used, "%s%s", used ? "; " : "", body);
-    keys[n++] = DV_ADAPTER_HALF_KEY;
-    keys[n] = NULL;
-  }
-  if (friction_derived) {
-    const size_t used = strlen(why);
-    snprintf(why + used, sizeof why - used, "%s%s", used ? "; " : "", rough);
-    keys[n++] = a->friction_key;
-    keys[n] = NULL;
-  }
+  if (half_derived) add_reason(why, sizeof why, keys, &n, DV_ADAPTER_HALF_KEY, body);
+  if (friction_derived) add_reason(why, sizeof why, keys, &n, a->friction_key, rough);
   dv_scenario_set_derived(sc, a->name, keys, why);
   return 0;
 }

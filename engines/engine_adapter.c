@@ -27,7 +27,6 @@
 
 typedef struct adapter_run {
   const dv_adapter *a;
-  red_disk disk;
   dv_geometry geom;
   double timestep, theta_limit, time_tol;
   char scene[SCENE_BYTES]; /* the settings' lines, then start */
@@ -37,7 +36,6 @@ typedef struct adapter_run {
   dv_engine_stats st;
   double prev_y[RED_NSTATE];
   int status; /* DV_OK, DV_EVENT, or the failure's code */
-  int started;
 } adapter_run;
 
 static int failed(adapter_run *r, dv_failure why, dv_error *err, const char *fmt,
@@ -75,7 +73,6 @@ static void *adapter_alloc(const dv_adapter *a, const dv_scenario *sc, dv_error 
   if (!r) return dv_fail(err, DV_ESYSTEM, "out of memory"), NULL;
   r->a = a;
   r->sc = *sc;
-  r->disk = sc->disk;
   r->timestep = dv_scenario_get(sc, a->name, a->step_key);
   r->geom = (dv_geometry){DV_SHAPE_CYLINDER, sc->disk.r,
                           dv_scenario_get(sc, a->name, DV_ADAPTER_HALF_KEY)};
@@ -104,13 +101,12 @@ static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   memcpy(r->prev_y, state, sizeof r->prev_y);
   dv_pose start; /* watched from the state sent, whatever times are asked for */
   dv_pose_from_state(&r->geom, state, &start);
-  const dv_failure f = dv_engine_watch_start(&r->watch, &r->disk, &start, what, sizeof what);
+  const dv_failure f = dv_engine_watch_start(&r->watch, &r->sc.disk, &start, what, sizeof what);
   if (f) return failed(r, f, err, "", what);
   n = command_words(r->a->command, words, sizeof words, argv);
   argv[n] = NULL;
   if (dv_child_start(&r->child, r->a->dir, argv, what, sizeof what))
     return failed(r, DV_FAILURE_SETUP, err, "", what);
-  r->started = 1;
   if (dv_child_write(&r->child, r->scene, what, sizeof what)) return ended(r, err);
   const int got =
       dv_child_read_line(&r->child, r->a->timeout, line, sizeof line, what, sizeof what);
@@ -179,10 +175,10 @@ static int adapter_advance(void *p, double t, dv_sample *out, dv_error *err) {
   }
   const long steps = (long)v[15];
   r->st.steps = steps;
-  const dv_failure f = dv_engine_watch_check(&r->watch, &r->disk, &r->geom, &pose, steps,
+  const dv_failure f = dv_engine_watch_check(&r->watch, &r->sc.disk, &r->geom, &pose, steps,
                                              r->timestep, what, sizeof what);
   if (f) return failed(r, f, err, "", what);
-  dv_sample_from_pose(&r->disk, &r->geom, &pose, t, r->prev_y, out);
+  dv_sample_from_pose(&r->sc.disk, &r->geom, &pose, t, r->prev_y, out);
   out->contacts = (int)v[14];
   memcpy(r->prev_y, out->y, sizeof r->prev_y);
   dv_stats_add_sample(&r->st, out);
@@ -250,7 +246,8 @@ SLOT(0)
 SLOT(1)
 SLOT(2)
 SLOT(3)
-SLOT(4) SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
+SLOT(4)
+SLOT(5) SLOT(6) SLOT(7) SLOT(8) SLOT(9) SLOT(10) SLOT(11)
 #undef SLOT
 #define SLOT(i) \
   { alloc_##i, version_##i, half_##i, check_##i }
