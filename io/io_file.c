@@ -95,9 +95,8 @@ int dv_io_open(dv_io_file *out, const char *path, dv_error *err) {
   const char *where = dirname(dir);
   dv_io_temp_remove_stale(where); /* what runs killed while writing here left */
   if (dv_io_temp_template(out->tmp_path, sizeof out->tmp_path, where, err)) return DV_EINPUT;
-  int fd = mkstemp(out->tmp_path);
+  int fd = dv_io_temp_make(out->tmp_path, 0);
   if (fd < 0) return dv_fail(err, DV_ESYSTEM, "%s: cannot create: %s", path, strerror(errno));
-  dv_io_temp_track(out->tmp_path);
   const mode_t mask = umask(0);
   umask(mask);
   fchmod(fd, 0666 & ~mask); /* mkstemp makes it private; outputs are for reading */

@@ -267,8 +267,7 @@ int dv_io_check_inputs(const char *dir, const char *const *names, const char *co
 int dv_io_dir_begin(char *tmp, size_t size, const char *parent, dv_error *err) {
   if (dv_io_temp_template(tmp, size, parent, err)) return DV_EINPUT;
   dv_io_temp_remove_stale(parent); /* what runs killed while writing here left */
-  if (!mkdtemp(tmp)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno));
-  dv_io_temp_track(tmp);
+  if (dv_io_temp_make(tmp, 1)) return dv_fail(err, DV_ESYSTEM, "%s: %s", tmp, strerror(errno));
   const mode_t mask = umask(0);
   umask(mask);
   chmod(tmp, 0777 & ~mask); /* mkdtemp makes it private; a report is for reading */

@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -85,6 +86,31 @@ int dv_io_temp_remove_stale(const char *dir) {
   return removed;
 }
 
+static const int cleaning_signals[] = {SIGINT, SIGTERM, SIGHUP};
+enum { NSIGNALS = sizeof cleaning_signals / sizeof *cleaning_signals };
+
+void dv_io_temp_hold_signals(sigset_t *old) {
+  sigset_t held;
+  sigemptyset(&held);
+  for (int i = 0; i < NSIGNALS; i++) sigaddset(&held, cleaning_signals[i]);
+  pthread_sigmask(SIG_BLOCK, &held, old);
+}
+
+void dv_io_temp_release_signals(const sigset_t *old) {
+  pthread_sigmask(SIG_SETMASK, old, NULL);
+}
+
+int dv_io_temp_make(char *templ, int dir) {
+  sigset_t old;
+  dv_io_temp_hold_signals(&old);
+  const int fd = dir ? (mkdtemp(templ) ? 0 : -1) : mkstemp(templ);
+  if (fd >= 0) dv_io_temp_track(templ);
+  const int e = errno;
+  dv_io_temp_release_signals(&old); /* a signal held meanwhile is handled here */
+  errno = e;
+  return fd;
+}
+
 void dv_io_temp_track(const char *path) {
   if (strlen(path) >= TRACKED_PATH) return; /* left to a later run's clean-up */
   for (int i = 0; i < MAX_TRACKED; i++)
@@ -127,14 +153,13 @@ static void clean_and_die(int sig) {
 }
 
 void dv_io_temp_clean_on_signals(void) {
-  static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-  for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
+  for (int i = 0; i < NSIGNALS; i++) {
     struct sigaction old, sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = clean_and_die;
     sigemptyset(&sa.sa_mask);
-    for (size_t k = 0; k < sizeof sigs / sizeof *sigs; k++) sigaddset(&sa.sa_mask, sigs[k]);
-    if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
-      sigaction(sigs[i], &sa, NULL);
+    for (int k = 0; k < NSIGNALS; k++) sigaddset(&sa.sa_mask, cleaning_signals[k]);
+    if (sigaction(cleaning_signals[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+      sigaction(cleaning_signals[i], &sa, NULL);
   }
 }

@@ -18,6 +18,7 @@
 #ifndef DV_IO_TEMP_H
 #define DV_IO_TEMP_H
 
+#include <signal.h>
 #include <stddef.h>
 
 #include "dv_error.h"
@@ -36,6 +37,16 @@ int dv_io_temp_remove_stale(const char *dir);
 
 /* rm -r path (a file or a directory); 0 or -1 */
 int dv_io_remove_tree(const char *path);
+
+/* mkstemp (dir 0: returns the descriptor) or mkdtemp (dir 1: returns 0) on
+ * templ, tracked for removal on a signal; the signals wait meanwhile, so a
+ * temporary exists only once it is tracked. -1 with errno on failure */
+int dv_io_temp_make(char *templ, int dir);
+
+/* hold SIGINT, SIGTERM and SIGHUP back (old: the mask to restore), and let
+ * them through again: around making a file and tracking it */
+void dv_io_temp_hold_signals(sigset_t *old);
+void dv_io_temp_release_signals(const sigset_t *old);
 
 /* remember path (a temporary of this process, or its lock file) for
  * removal on a signal; forget it once it is renamed or removed */
