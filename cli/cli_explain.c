@@ -5,14 +5,16 @@
 #include "cli.h"
 #include "cli_args.h"
 #include "report_suite_run.h"
+#include "run_scenario.h"
 #include "search_attribute.h"
 
 /* dv_report_explain's cause: the dominant share of the engine's attribution */
-static int attribute(void *ctx, const dv_scenario *sc, const char *engine, char *out, size_t size) {
+static int attribute(void *ctx, const dv_scenario *sc, const dv_comparison *c,
+                     const dv_engine_result *r, char *out, size_t size) {
   dv_attribution a;
   dv_error err = {{0}};
-  (void)ctx;
-  if (dv_search_attribute(sc, engine, &a, &err)) {
+  (void)ctx, (void)c;
+  if (dv_search_attribute(sc, r->engine->name, &a, &err)) {
     snprintf(out, size, "unknown (%s)", err.msg);
     return 0;
   }
@@ -21,9 +23,9 @@ static int attribute(void *ctx, const dv_scenario *sc, const char *engine, char 
 }
 
 /* --cause none: no attribution run; the failure says so */
-static int not_searched(void *ctx, const dv_scenario *sc, const char *engine, char *out,
-                        size_t size) {
-  (void)ctx, (void)sc, (void)engine;
+static int not_searched(void *ctx, const dv_scenario *sc, const dv_comparison *c,
+                        const dv_engine_result *r, char *out, size_t size) {
+  (void)ctx, (void)sc, (void)c, (void)r;
   snprintf(out, size, "not searched (--cause none)");
   return 0;
 }

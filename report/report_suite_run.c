@@ -18,7 +18,7 @@ static void explain_failures(const dv_scenario *sc, const dv_report_explain *exp
   for (size_t i = 0; explain && i < c->n; i++) {
     dv_engine_result *r = &c->r[i];
     if (r->verdict != DV_VERDICT_EXCEEDS ||
-        explain->cause(explain->ctx, sc, r->engine->name, r->cause, sizeof r->cause))
+        explain->cause(explain->ctx, sc, c, r, r->cause, sizeof r->cause))
       continue;
     for (size_t k = 0; k < r->nfailures; k++) {
       const size_t len = strlen(r->failures[k]);

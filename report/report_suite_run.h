@@ -26,9 +26,13 @@ typedef enum dv_suite_result {
 } dv_suite_result;
 
 /* explains why an engine exceeds its limits (attribution lives above this
- * layer): the dominant cause in words into out; 0, or < 0 when it cannot */
+ * layer): the cause of r's excess in c (the comparison it was judged in, its
+ * runs reusable) in words into out; 0, or < 0 when it cannot */
+struct dv_comparison;
+struct dv_engine_result;
 typedef struct dv_report_explain {
-  int (*cause)(void *ctx, const dv_scenario *sc, const char *engine, char *out, size_t size);
+  int (*cause)(void *ctx, const dv_scenario *sc, const struct dv_comparison *c,
+               const struct dv_engine_result *r, char *out, size_t size);
   void *ctx;
 } dv_report_explain;
 
