@@ -1,50 +1,12 @@
-/* dv_engine: the registry of engines and what they share. */
+/* dv_engine: what every engine shares (the registry is engine_registry.c). */
 #include "dv_engine.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "dv_format.h"
 #include "dv_pose.h"
-#include "adapter.h"
-
-#define DV_ENGINE(name) &dv_engine_##name,
-const dv_engine_type *const dv_engines_linked[] = {
-#include "dv_engines.def"
-    NULL};
-#undef DV_ENGINE
-
-static const dv_engine_type *registry[DV_MAX_REGISTERED + 1];
-static pthread_once_t once = PTHREAD_ONCE_INIT;
-
-/* the linked engines, then the adapters found (adapter.h) */
-static void build(void) {
-  size_t n = 0;
-  const dv_adapter *const *a;
-  for (const dv_engine_type *const *e = dv_engines_linked; *e; e++) registry[n++] = *e;
-  const size_t na = dv_adapters(&a);
-  for (size_t i = 0; i < na; i++) registry[n++] = &a[i]->type;
-  registry[n] = NULL;
-}
-
-const dv_engine_type *const *dv_engine_list(void) {
-  pthread_once(&once, build);
-  return registry;
-}
-
-const dv_engine_type *dv_engine_find(const char *name) {
-  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
-    if (strcmp((*e)->name, name) == 0) return *e;
-  return NULL;
-}
-
-const dv_engine_type *dv_engine_of_role(dv_engine_role role) {
-  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
-    if ((*e)->role == role) return *e;
-  return NULL;
-}
 
 double dv_engine_half_thickness(const dv_engine_type *engine, const dv_scenario *sc) {
   return engine->half_thickness ? engine->half_thickness(sc) : 0.0;
@@ -101,64 +63,6 @@ void dv_engine_knobs_text(const dv_engine_type *engine, const dv_scenario *sc, c
     if (w < 0) return;
     n += (size_t)w;
   }
-}
-
-/* every engine's settings table, NULL-terminated */
-static void tables(const dv_settings_section **out) {
-  _Static_assert(DV_MAX_REGISTERED <= DV_MAX_ENGINE_SECTIONS,
-                 "every engine's settings section fits");
-  size_t n = 0;
-  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
-    if ((*e)->settings) out[n++] = (*e)->settings;
-  out[n] = NULL;
-}
-
-int dv_engine_load_scenario(const char *path, const char *const *overrides, size_t noverrides,
-                            dv_scenario *sc, dv_error *err) {
-  const dv_settings_section *t[DV_MAX_ENGINE_SECTIONS + 1];
-  tables(t);
-  return dv_scenario_load(t, path, overrides, noverrides, sc, err);
-}
-
-void dv_engine_init_scenario(dv_scenario *sc) {
-  const dv_settings_section *t[DV_MAX_ENGINE_SECTIONS + 1];
-  tables(t);
-  dv_scenario_init(sc, t);
-}
-
-int dv_engine_derive_settings(dv_scenario *sc, dv_error *err) {
-  for (size_t i = 0; i < sc->nsections; i++) {
-    dv_setting_issue issue = {0};
-    if (dv_scenario_check_engine(sc, i, &issue)) /* "initial.theta" is no engine's */
-      return dv_fail(err, DV_EINPUT, "%s%s.%s: %s", dv_engine_find(issue.section) ? "engines." : "",
-                     issue.section, issue.key, issue.what);
-  }
-  return DV_OK;
-}
-
-int dv_engine_parse_list(const char *list, const dv_engine_type **engines, size_t max,
-                         dv_error *err) {
-  char buf[256];
-  size_t n = 0;
-  snprintf(buf, sizeof buf, "%s", list);
-  for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
-       tok = strtok_r(NULL, ", ", &save)) {
-    const dv_engine_type *e = dv_engine_find(tok);
-    if (!e) {
-      char names[256] = "";
-      for (const dv_engine_type *const *k = dv_engine_list(); *k; k++)
-        snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
-                 k == dv_engine_list() ? "" : ", ", (*k)->name);
-      return dv_fail(err, DV_EINPUT, "unknown engine '%s' (one of: %s)", tok, names);
-    }
-    for (size_t k = 0; k < n; k++) /* a report holds one result per engine */
-      if (engines[k] == e) return dv_fail(err, DV_EINPUT, "engine '%s' listed twice", tok);
-    if (n + 1 >= max) return dv_fail(err, DV_EINPUT, "too many engines");
-    engines[n++] = e;
-  }
-  if (!n) return dv_fail(err, DV_EINPUT, "no engine in '%s'", list);
-  engines[n] = NULL;
-  return DV_OK;
 }
 
 const char *dv_failure_name(dv_failure failure) {

@@ -141,6 +141,8 @@ typedef struct dv_engine_type {
    * where named, never by default; why it cannot run ("" where it can) */
   int outside;
   const char *missing;
+  /* its calls go to a module opened when it first runs (engine_module.h) */
+  int module;
 } dv_engine_type;
 
 /* every engine's table, dv_engine_NAME (engines/NAME/), as dv_engines.def lists them */
@@ -165,6 +167,10 @@ const dv_engine_type *const *dv_engine_list(void);
 
 /* the engine called name, or NULL */
 const dv_engine_type *dv_engine_find(const char *name);
+
+/* why engine cannot run: its module is missing or broken, or the adapter's
+ * program is (opens the module); NULL where it can run */
+const char *dv_engine_unavailable(const dv_engine_type *engine);
 
 /* the first engine of role (every role has one) */
 const dv_engine_type *dv_engine_of_role(dv_engine_role role);
