@@ -34,9 +34,17 @@ typedef struct dv_module_calls {
   void (*free)(void *engine);
 } dv_module_calls;
 
+/* a const's external linkage: C++ gives it internal linkage unless extern */
+#ifdef __cplusplus
+#define DV_MODULE_LINKAGE extern
+#else
+#define DV_MODULE_LINKAGE
+#endif
+
 /* in a module: its export, from its functions */
 #define DV_ENGINE_MODULE_EXPORT(version_, alloc_, reset_, advance_, stats_, free_)            \
-  __attribute__((visibility("default"))) const dv_module_calls dv_engine_module = {           \
+  __attribute__((visibility("default"))) DV_MODULE_LINKAGE const dv_module_calls          \
+      dv_engine_module = {                                                                 \
       DV_ENGINE_MODULE_ABI, sizeof(dv_scenario), sizeof(dv_sample), sizeof(dv_engine_stats), \
       sizeof(dv_error),     version_,            alloc_,            reset_,                  \
       advance_,             stats_,              free_}
