@@ -1,5 +1,5 @@
 /* dv_dart: what the DART engine (engine_dart.cc) shows its tests beyond the
- * engine table. */
+ * engine table: a symbol of its module (dv_engine_module_symbol, engine_module.h). */
 #ifndef DV_DART_H
 #define DV_DART_H
 
@@ -15,6 +15,8 @@ extern "C" {
  * penetration depth (m) */
 int dv_dart_contacts(const dv_scenario *sc, const double y[RED_NSTATE], double sink,
                      double mean[3], double *depth, dv_error *err);
+typedef int dv_dart_contacts_fn(const dv_scenario *sc, const double y[RED_NSTATE], double sink,
+                                double mean[3], double *depth, dv_error *err);
 
 #ifdef __cplusplus
 }

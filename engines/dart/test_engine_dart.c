@@ -23,6 +23,7 @@
 
 #include "dv_dart.h"
 #include "dv_engine.h"
+#include "engine_module.h"
 #include "dv_pose.h"
 #include "dv_test.h"
 #include "dv_test_traj.h"
@@ -139,7 +140,8 @@ static double contact_error(const char *detector, double h, double sink, int n, 
     dv_pose_from_state(&g, y, &pose);
     dv_pose_lowest_point(&g, &pose, p, &slip);
     p[2] -= sink;
-    const int nc = dv_dart_contacts(&sc, y, sink, mean, &depth, &err);
+    dv_dart_contacts_fn *contacts_of = dv_engine_module_symbol("dart", "dv_dart_contacts", &err);
+    const int nc = contacts_of ? contacts_of(&sc, y, sink, mean, &depth, &err) : -1;
     CHECK(nc > 0, "%s: pose %d: %d contacts %s", detector, k, nc, err.msg);
     if (nc <= 0) return INFINITY;
     if (k == 0) *contacts = nc;
