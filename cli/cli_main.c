@@ -71,8 +71,14 @@ int dv_cli_engine_list(const char *list, const dv_engine_type **engines, dv_erro
   }
   size_t n = 0;
   _Static_assert(DV_NENGINES <= DV_MAX_ENGINES, "every linked engine fits in one comparison");
-  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) /* outside ones: by name */
-    if ((*e)->role == DV_ENGINE_CONTACT && !(*e)->outside) engines[n++] = *e;
+  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) { /* outside ones: by name */
+    if ((*e)->role != DV_ENGINE_CONTACT || (*e)->outside) continue;
+    const char *why = dv_engine_unavailable(*e); /* its module missing or broken: left out */
+    if (why)
+      fprintf(stderr, "diskval: %s: not available: %s\n", (*e)->name, why);
+    else
+      engines[n++] = *e;
+  }
   engines[n] = NULL;
   return DV_OK;
 }

@@ -79,8 +79,9 @@ int dv_cli_engines(int argc, char **argv) {
   dv_cli_args_free(&cmd, &a);
   for (const dv_engine_type *const *e = dv_engine_list(); *e; e++) {
     const dv_adapter *ad = dv_adapter_of(*e);
-    if (ad && ad->missing[0])
-      printf("%-10s %s [not available: %s]\n", (*e)->name, (*e)->description, ad->missing);
+    const char *why = dv_engine_unavailable(*e); /* a module missing or broken, an adapter's program */
+    if (why)
+      printf("%-10s %s [not available: %s]\n", (*e)->name, (*e)->description, why);
     else
       printf("%-10s %s [%s]\n", (*e)->name, (*e)->description, (*e)->version());
     if (ad) printf("    (outside the build: %s, run as: %s)\n", ad->dir, ad->command);
