@@ -37,14 +37,18 @@ const dv_engine_type *const *dv_engine_list(void) {
   return registry;
 }
 
+/* the linked engines first: a run of one of them reads no adapter's manifest
+ * (an adapter never takes a linked engine's name, adapter_registry.c) */
 const dv_engine_type *dv_engine_find(const char *name) {
+  for (const dv_engine_type *const *e = dv_engines_linked; *e; e++)
+    if (strcmp((*e)->name, name) == 0) return *e;
   for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
     if (strcmp((*e)->name, name) == 0) return *e;
   return NULL;
 }
 
 const dv_engine_type *dv_engine_of_role(dv_engine_role role) {
-  for (const dv_engine_type *const *e = dv_engine_list(); *e; e++)
+  for (const dv_engine_type *const *e = dv_engines_linked; *e; e++)
     if ((*e)->role == role) return *e;
   return NULL;
 }
