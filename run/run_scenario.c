@@ -423,6 +423,7 @@ static int matched_for(dv_comparison *c, const dv_comparison *refs, const dv_sce
     r->matched_stats = m->stats;
     r->matched_wall_s = m->wall_s;
     r->matched.n = 0;
+    status = DV_OK; /* the run's DV_EVENT (it ended at an event) is no failure */
     for (size_t i = 0; i < m->traj.n && !status; i++)
       if (dv_run_traj_push(&r->matched, &m->traj.s[i]))
         status = dv_fail(err, DV_ESYSTEM, "out of memory");
