@@ -86,6 +86,7 @@ case "${1:-run}" in
     bash bench/bench_forecast.sh "$BUILD_DIR/cli/diskval" .
     bash bench/bench_harness.sh "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/bare_mujoco" \
       "$BUILD_DIR/bench/bare_ode" .
+    bash bench/bench_compare.sh "$BUILD_DIR/cli/diskval" .
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI

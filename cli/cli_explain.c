@@ -13,8 +13,9 @@ static int attribute(void *ctx, const dv_scenario *sc, const dv_comparison *c,
                      const dv_engine_result *r, char *out, size_t size) {
   dv_attribution a;
   dv_error err = {{0}};
-  (void)ctx, (void)c;
-  if (dv_search_attribute(sc, r->engine->name, &a, &err)) {
+  (void)ctx;
+  /* the comparison's references serve every probe: they do not depend on the engine's settings */
+  if (dv_search_attribute_in(c, sc, r->engine->name, &a, &err)) {
     snprintf(out, size, "unknown (%s)", err.msg);
     return 0;
   }

@@ -12,7 +12,7 @@
 #include "run_scenario.h"
 
 static const char HELP[] =
-    "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S]\n"
+    "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S] [--jobs N]\n"
     "                       [--cause full|none] [--set section.key=value]...\n"
     "\n"
     "Run SCENARIO in the engines (default: every contact engine) and in the references, compare\n"
@@ -21,6 +21,9 @@ static const char HELP[] =
     "report.json and report.md. Prints one line per engine.\n"
     "--timeout S: stop the comparison after S s of wall time (an error report); one whose\n"
     "probed cost is more than twice S is not started. Default 0: no limit.\n"
+    "--jobs N: run the engines (each with its settings probes), the references, then the\n"
+    "failing engines' causes in up to N processes (default: the cores); the report is the\n"
+    "same whatever N.\n"
     "--cause full (default): each failing engine's cause, by turning each of its knobs alone\n"
     "(diskval attribute); none: no cause searched, the report says so.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
@@ -29,13 +32,15 @@ static const char HELP[] =
 int dv_cli_compare(int argc, char **argv) {
   const char *out = "report", *list = NULL, *cause = NULL;
   double timeout = 0.0;
+  int jobs = dv_cli_default_jobs();
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &out, 0, 0},
       {"engines", DV_CLI_TEXT, &list, 0, 0},
       {"timeout", DV_CLI_REAL, &timeout, 0, 1e9},
       {"cause", DV_CLI_TEXT, &cause, 0, 0},
+      {"jobs", DV_CLI_INT, &jobs, 1, 1024},
   };
-  const dv_cli_command cmd = {"compare", HELP, options, 4, 1, 1};
+  const dv_cli_command cmd = {"compare", HELP, options, 5, 1, 1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
@@ -54,7 +59,7 @@ int dv_cli_compare(int argc, char **argv) {
   else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
            dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if ((code = dv_report_compare_within(&sc, engines, out, &explain, timeout, &err)) ==
+  else if ((code = dv_report_compare_within(&sc, engines, out, &explain, jobs, timeout, &err)) ==
            DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.path, err.msg);
   else

@@ -200,7 +200,7 @@ static int run_forked(pool *p) {
 
 int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
                  const dv_exec_options *opt) {
-  if (dv_exec_mpi_size() > 1) {
+  if (dv_exec_mpi_size() > 1 && !opt->local) {
     unsigned char *done = opt->done ? opt->done : calloc(n ? n : 1, 1);
     if (!done) return DV_EXEC_NOMEM;
     const int status = dv_exec_mpi_farm(n, size, work, ctx, results, done, opt->on_result);

@@ -45,6 +45,7 @@ typedef struct dv_exec_options {
   dv_exec_result_fn on_result; /* may be NULL: called as each task ends */
   unsigned char *done;         /* may be NULL: n dv_exec_end, one per task */
   double timeout;              /* s of wall time a task may run (<= 0: no limit) */
+  int local; /* processes on this machine even under mpirun (a pool inside an MPI rank's task) */
 } dv_exec_options;
 
 /* run tasks 0..n-1; results[k * size] receives task k's result. A dv_exec_status. */

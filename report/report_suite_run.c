@@ -9,34 +9,75 @@
 #include "io_temp.h"
 #include "report_scenario.h"
 #include "report_suite_dir.h"
+#include "run_parallel.h"
 #include "run_progress.h"
 #include "run_scenario.h"
 
-/* the cause of each engine's excess, added to its failures */
-static void explain_failures(const dv_scenario *sc, const dv_report_explain *explain,
-                             dv_comparison *c) {
-  for (size_t i = 0; explain && i < c->n; i++) {
-    dv_engine_result *r = &c->r[i];
-    if (r->verdict != DV_VERDICT_EXCEEDS ||
-        explain->cause(explain->ctx, sc, c, r, r->cause, sizeof r->cause))
-      continue;
-    for (size_t k = 0; k < r->nfailures; k++) {
-      const size_t len = strlen(r->failures[k]);
-      snprintf(r->failures[k] + len, sizeof r->failures[k] - len, "; cause: %s", r->cause);
-    }
-  }
+/* what a failing engine's cause task hands back */
+typedef struct cause_result {
+  int said; /* 0: the cause explain gave, < 0: none (nor its process's end) */
+  char cause[sizeof(((dv_engine_result *)0)->cause)];
+} cause_result;
+
+/* the failing engines of a comparison, their causes searched in the pool */
+typedef struct cause_job {
+  const dv_scenario *sc;
+  const dv_report_explain *explain;
+  const dv_comparison *c;
+  size_t which[DV_MAX_ENGINES]; /* the failing engines' indices in c */
+} cause_job;
+
+/* dv_exec_pool's task: the cause of the k-th failing engine */
+static void cause_task(size_t k, void *result, void *ctx) {
+  const cause_job *j = ctx;
+  cause_result *r = result;
+  const dv_engine_result *e = &j->c->r[j->which[k]];
+  r->said = j->explain->cause(j->explain->ctx, j->sc, j->c, e, r->cause, sizeof r->cause);
 }
 
-/* compare sc into a new directory tmp; its dv_suite_result */
+/* the cause of each engine's excess, added to its failures: each searched in
+ * its own process, up to jobs at a time (one that dies: its cause unknown) */
+static int explain_failures(const dv_scenario *sc, const dv_report_explain *explain, int jobs,
+                            dv_comparison *c, dv_error *err) {
+  cause_job j = {sc, explain, c, {0}};
+  size_t n = 0;
+  for (size_t i = 0; explain && i < c->n; i++)
+    if (c->r[i].verdict == DV_VERDICT_EXCEEDS) j.which[n++] = i;
+  if (!n) return DV_OK;
+  cause_result results[DV_MAX_ENGINES];
+  unsigned char done[DV_MAX_ENGINES];
+  for (size_t k = 0; k < n; k++) {
+    results[k].said = 0;
+    snprintf(results[k].cause, sizeof results[k].cause,
+             "unknown (its search's process ended without a result: crashed or killed)");
+  }
+  const dv_exec_options opt = {.jobs = jobs, .done = done, .local = 1};
+  const int pool = dv_exec_pool(n, sizeof *results, cause_task, &j, results, &opt);
+  if (pool == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (pool == DV_EXEC_INTERRUPTED)
+    return dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by());
+  for (size_t k = 0; k < n; k++) {
+    dv_engine_result *r = &c->r[j.which[k]];
+    if (results[k].said) continue;
+    snprintf(r->cause, sizeof r->cause, "%s", results[k].cause);
+    for (size_t f = 0; f < r->nfailures; f++) {
+      const size_t len = strlen(r->failures[f]);
+      snprintf(r->failures[f] + len, sizeof r->failures[f] - len, "; cause: %s", r->cause);
+    }
+  }
+  return DV_OK;
+}
+
+/* compare sc into a new directory tmp, in up to jobs processes; its dv_suite_result */
 static int compare_into(const char *tmp, const dv_scenario *sc,
                         const dv_engine_type *const *engines, int verbose,
-                        const dv_report_explain *explain, dv_error *err) {
+                        const dv_report_explain *explain, int jobs, dv_error *err) {
   size_t n = 0;
   while (engines[n]) n++;
   dv_comparison *c = calloc(1, sizeof *c);
   if (!c) return dv_fail(err, DV_ESYSTEM, "out of memory"), DV_SUITE_ERROR;
-  int status = dv_run_scenario(sc, NULL, engines, n, c, err);
-  if (!status) explain_failures(sc, explain, c);
+  int status = dv_run_scenario_jobs(sc, NULL, engines, n, NULL, jobs, c, err);
+  if (!status) status = explain_failures(sc, explain, jobs, c, err);
   if (!status) status = dv_report_scenario_write(tmp, c, err);
   if (!status && verbose) dv_report_scenario_print(stdout, c);
   const int pass = c->pass;
@@ -47,14 +88,14 @@ static int compare_into(const char *tmp, const dv_scenario *sc,
 
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
                             const char *out_dir, int verbose, const dv_report_explain *explain,
-                            dv_error *err) {
+                            int jobs, dv_error *err) {
   char tmp[1300];
   const dv_engine_type *own[DV_MAX_ENGINES + 1];
   int code = DV_SUITE_ERROR;
   /* a scenario may name its own engines */
   if (sc->engines[0] && dv_engine_parse_list(sc->engines, own, DV_MAX_ENGINES + 1, err)) {
   } else if (!dv_report_dir_begin(tmp, sizeof tmp, out_dir, sc->name, err)) {
-    code = compare_into(tmp, sc, sc->engines[0] ? own : engines, verbose, explain, err);
+    code = compare_into(tmp, sc, sc->engines[0] ? own : engines, verbose, explain, jobs, err);
     if (code == DV_SUITE_ERROR)
       dv_report_dir_discard(tmp);
     else if (dv_report_dir_install(tmp, out_dir, sc->name, err))
@@ -85,7 +126,9 @@ typedef struct suite_run {
 static void run_task(size_t k, void *result, void *ctx) {
   const suite_run *s = ctx;
   task_result *r = result;
-  r->code = dv_report_suite_run_one(&s->scs[k], s->engines, s->out_dir, 0, s->explain, &r->cause);
+  /* a scenario's own runs one at a time: the suite runs scenarios side by side */
+  r->code =
+      dv_report_suite_run_one(&s->scs[k], s->engines, s->out_dir, 0, s->explain, 1, &r->cause);
 }
 
 /* how the progress line shows a dv_suite_result */

@@ -38,11 +38,13 @@ typedef struct dv_report_explain {
 
 /* compare sc and write OUT/<name>/ (an engine that exceeds a limit gets its
  * cause from explain, when given); print a line per engine to stdout when
- * verbose. Returns a dv_suite_result; DV_SUITE_ERROR with its cause in err
- * and in OUT/<name>/ as an error report. */
+ * verbose. The runs, then the causes, go to up to jobs processes
+ * (run_parallel.h): the report is the same whatever jobs. Returns a
+ * dv_suite_result; DV_SUITE_ERROR with its cause in err and in OUT/<name>/
+ * as an error report. */
 int dv_report_suite_run_one(const dv_scenario *sc, const dv_engine_type *const *engines,
                             const char *out_dir, int verbose, const dv_report_explain *explain,
-                            dv_error *err);
+                            int jobs, dv_error *err);
 
 /* dv_report_suite_run_all on an MPI worker rank: rank 0 has the results */
 #define DV_SUITE_RUN_WORKER 2

@@ -13,6 +13,7 @@ typedef struct compare_job {
   const dv_engine_type *const *engines;
   const char *out_dir;
   const dv_report_explain *explain;
+  int jobs;
 } compare_job;
 
 typedef struct compare_result {
@@ -23,7 +24,7 @@ typedef struct compare_result {
 static void compare_task(void *ctx, void *result) {
   const compare_job *j = ctx;
   compare_result *r = result;
-  r->code = dv_report_suite_run_one(j->sc, j->engines, j->out_dir, 1, j->explain, &r->err);
+  r->code = dv_report_suite_run_one(j->sc, j->engines, j->out_dir, 1, j->explain, j->jobs, &r->err);
 }
 
 /* the comparison's probed cost against timeout: 0, or -1 with err */
@@ -40,10 +41,10 @@ static int refuse(const dv_scenario *sc, const dv_engine_type *const *engines, d
 }
 
 int dv_report_compare_within(const dv_scenario *sc, const dv_engine_type *const *engines,
-                             const char *out_dir, const dv_report_explain *explain, double timeout,
-                             dv_error *err) {
+                             const char *out_dir, const dv_report_explain *explain, int jobs,
+                             double timeout, dv_error *err) {
   if (timeout > 0.0 && refuse(sc, engines, timeout, err)) return DV_SUITE_ERROR;
-  compare_job job = {sc, engines, out_dir, explain};
+  compare_job job = {sc, engines, out_dir, explain, jobs};
   compare_result r = {DV_SUITE_ERROR, {{0}}};
   dv_fail(&r.err, DV_ESYSTEM, "its process ended without a result (crashed or killed)");
   const dv_run_within_end end = dv_run_within(timeout, compare_task, &job, &r, sizeof r);

@@ -331,150 +331,253 @@ int dv_run_scenario(const dv_scenario *sc, const dv_scenario *ref_sc,
   return dv_run_scenario_hooked(sc, ref_sc, engines, n, NULL, c, err);
 }
 
-int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
-                           const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
-                           dv_comparison *c, dv_error *err) {
+void dv_run_comparison_begin(const dv_scenario *sc, dv_comparison *c) {
   memset(c, 0, sizeof *c);
   c->sc = sc;
   c->pass = 1;
-  if (!ref_sc) ref_sc = sc;
-  if (n > DV_MAX_ENGINES) return dv_fail(err, DV_EINPUT, "at most %d engines", DV_MAX_ENGINES);
-  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
-  const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
-  dv_run_progress_plan(sc, ref_sc, engines, n); /* a long comparison says so first */
   c->min_window = shortest_scale(sc);
+}
+
+int dv_run_thin_reference(const dv_scenario *ref_sc, dv_comparison *c, dv_error *err) {
+  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   int status = run_into(thin, ref_sc, &c->thin, &c->thin_stats, &c->thin_wall_s, err);
   if (status < 0) {
     char what[64];
     snprintf(what, sizeof what, "the %s reference", thin->name);
     return reference_failed(status, what, err);
   }
-  c->thin_valid_end = dv_reference_valid_until(sc, c->thin.s, c->thin.n);
+  c->thin_valid_end = dv_reference_valid_until(c->sc, c->thin.s, c->thin.n);
   const double t_horizon = dv_clock_now();
   status = dv_run_amplification(ref_sc, &c->thin, &c->amp, c->spread, err);
   c->horizon_wall_s = dv_clock_now() - t_horizon;
   if (status < 0) return status; /* err names the nudged run */
   c->horizon = c->amp.horizon;
-  for (size_t i = 0; i < n; i++) {
-    dv_engine_result *r = &c->r[c->n++];
-    dv_error e = {{0}};
-    r->engine = engines[i];
-    r->status = run_into(engines[i], sc, &r->traj, &r->stats, &r->wall_s, &e);
-    if (r->status < 0 && !r->stats.detail[0])
-      snprintf(r->stats.detail, sizeof r->stats.detail, "%.255s", e.msg);
-    r->half_thickness = dv_engine_half_thickness(engines[i], sc);
-    /* a stand-in thinner than the scene's body agrees about a body the scene is not */
-    r->thinner = sc->thickness > 0.0 && r->half_thickness < 0.5 * sc->thickness * (1.0 - 1e-12);
-    if (r->thinner) {
-      char what[64] = "the thin disk";
-      if (r->half_thickness > 0.0)
-        snprintf(what, sizeof what, "a cylinder of half-thickness %g m", r->half_thickness);
-      snprintf(r->not_judged, sizeof r->not_judged,
-               "it simulated %s, thinner than the scene's [disk] thickness %g m (a stand-in its "
-               "settings give): no reference of the scene's body judges it",
-               what, sc->thickness);
-    }
-    const dv_traj *ref = &c->thin;
-    double ref_end = c->thin_valid_end;
-    if (r->half_thickness > 0.0) {
-      dv_scenario match = *ref_sc;
-      status =
-          dv_scenario_set_number(&match, matched->name, "half_thickness", r->half_thickness, err);
-      if (!status)
-        status = run_into(matched, &match, &r->matched, &r->matched_stats, &r->matched_wall_s, err);
-      if (status < 0) {
-        char what[128];
-        snprintf(what, sizeof what, "the %s reference (h = %g m) of %s", matched->name,
-                 r->half_thickness, engines[i]->name);
-        return reference_failed(status, what, err);
-      }
-      ref = &r->matched;
-      ref_end = matched_valid_end(&match, &r->matched, &r->matched_stats);
-      if (crossed_upright(&r->matched, &r->matched_stats)) {
-        /* a cylinder at upright switches rim corners, an impact rolling does not
-         * describe: the window ends there (the thin disk is another body) */
-        const double t_cross = r->matched.s[r->matched.n - 1].t;
-        snprintf(r->reference_note, sizeof r->reference_note,
-                 "the compared window ends at t = %g s, where the scene's body reaches upright and "
-                 "its rim corners switch (an impact rolling does not describe)",
-                 t_cross);
-        ref_end = fmin(ref_end, t_cross);
-      }
-    }
-    dv_run_compare(&r->traj, &c->thin, c->thin_valid_end, &r->vs_thin);
-    if (ref == &c->thin) { /* the same comparison: its Hausdorff distance is O(n^2) */
-      r->vs_ref = r->vs_thin;
-    } else {
-      dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
-      /* beside the judged comparison, the thin disk's too short to judge measured nothing */
-      const double t0 = c->thin.n ? c->thin.s[0].t : 0.0;
-      const double t_thin = c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0;
-      char why[160];
-      if (window_too_short(c, &r->vs_thin, t0, c->thin_stats.lay_down ? t_thin : INFINITY, why,
-                           sizeof why))
-        for (int m = 0; m < DV_NMETRICS; m++) r->vs_thin.value[m] = NAN;
-    }
-    find_horizon(c, ref, r);
-    timing_horizon(&c->amp, ref, r);
-    { /* its own nudges: the spread and the lying down they allow */
-      const double t_spread = dv_clock_now();
-      status =
-          dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, r->early_of, r->spread, r->nudged, err);
-      c->horizon_wall_s += dv_clock_now() - t_spread;
-      if (status < 0) return status;
-    }
-    pointwise_to_horizon(&r->traj, ref, ref_end, r);
-    r->vs_ref.value[DV_INVARIANT_DRIFT] =
-        dv_run_invariant_drift(&sc->disk, &r->traj, r->vs_ref.t_window);
-    if (!isnan(r->vs_thin.value[DV_THETA_MAX_ERR])) /* NaN: the thin disk's measured nothing */
-      r->vs_thin.value[DV_INVARIANT_DRIFT] = r->vs_ref.value[DV_INVARIANT_DRIFT];
-    dv_limit limits[DV_NMETRICS];
-    dv_run_limits(sc, engines[i]->name, ref, r->vs_ref.t_window, limits);
-    for (int m = 0; m < DV_NMETRICS; m++) {
-      r->tolerance[m] = limits[m].value;
-      memcpy(r->limit_why[m], limits[m].why, sizeof r->limit_why[m]);
-      /* past the horizon: a measure the nudge alone moves by half its limit is unpredictable */
-      if (!dv_run_metric_pointwise((dv_metric_id)m) && r->spread[m] > 0.5 * r->tolerance[m]) {
-        r->tolerance[m] = NAN;
-        snprintf(r->limit_why[m], sizeof r->limit_why[m],
-                 "not judged: the reference nudged by its early errors moves it by %.3g",
-                 r->spread[m]);
-      }
-    }
-    period_limit(&c->amp, r);
-    /* turning points and periods: NAN where there is nothing to compare */
-    static const dv_metric_id cycles[] = {DV_THETA_TURNING_ERR, DV_NUTATION_PERIOD_ERR,
-                                          DV_HEADING_PERIOD_ERR};
-    for (size_t k = 0; k < sizeof cycles / sizeof cycles[0]; k++)
-      if (isnan(r->vs_ref.value[cycles[k]])) {
-        r->tolerance[cycles[k]] = NAN;
-        snprintf(r->limit_why[cycles[k]], sizeof r->limit_why[cycles[k]], "not judged: %s",
-                 k ? "the reference completes no nutation period in the window"
-                   : "neither run turns (a swing of 1e-3 rad) in the window");
-      }
-    if (ref != &c->thin) { /* f1, f2 are integrals of the thin disk only */
-      r->tolerance[DV_INVARIANT_DRIFT] = NAN;
-      snprintf(r->limit_why[DV_INVARIANT_DRIFT], sizeof r->limit_why[DV_INVARIANT_DRIFT],
-               "not judged: f1, f2 are the thin disk's integrals; a cylinder (h = %g m) does not "
-               "conserve them",
-               r->half_thickness);
-    }
-    const dv_engine_stats *ref_st = ref == &c->thin ? &c->thin_stats : &r->matched_stats;
-    const int itself = ref_sc == sc && engines[i] == (ref == &c->thin ? thin : matched);
-    if (hook && hook->before_verdict) hook->before_verdict(hook->ctx, c, r);
-    judge(c, ref, ref_st, ref_end, itself, r);
-    c->pass &= r->pass;
-  }
   return DV_OK;
+}
+
+void dv_run_engine_only(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r) {
+  dv_error e = {{0}};
+  r->status = run_into(engine, sc, &r->traj, &r->stats, &r->wall_s, &e);
+  if (r->status < 0 && !r->stats.detail[0])
+    snprintf(r->stats.detail, sizeof r->stats.detail, "%.255s", e.msg);
+  dv_run_engine_body(engine, sc, r);
+}
+
+void dv_run_engine_body(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r) {
+  r->engine = engine;
+  r->half_thickness = dv_engine_half_thickness(engine, sc);
+  /* a stand-in thinner than the scene's body agrees about a body the scene is not */
+  r->thinner = sc->thickness > 0.0 && r->half_thickness < 0.5 * sc->thickness * (1.0 - 1e-12);
+  if (r->thinner) {
+    char what[64] = "the thin disk";
+    if (r->half_thickness > 0.0)
+      snprintf(what, sizeof what, "a cylinder of half-thickness %g m", r->half_thickness);
+    snprintf(r->not_judged, sizeof r->not_judged,
+             "it simulated %s, thinner than the scene's [disk] thickness %g m (a stand-in its "
+             "settings give): no reference of the scene's body judges it",
+             what, sc->thickness);
+  }
+}
+
+void dv_run_matched_reference(const dv_scenario *ref_sc, double half_thickness,
+                              dv_matched_run *m) {
+  const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
+  dv_scenario match = *ref_sc;
+  memset(m, 0, sizeof *m);
+  m->half_thickness = half_thickness;
+  m->status =
+      dv_scenario_set_number(&match, matched->name, "half_thickness", half_thickness, &m->err);
+  if (!m->status)
+    m->status = run_into(matched, &match, &m->traj, &m->stats, &m->wall_s, &m->err);
+}
+
+/* the matched run for half-thickness h in refs, or NULL */
+static const dv_matched_run *matched_of(const dv_comparison *refs, double h) {
+  for (size_t k = 0; refs && k < refs->nmatched; k++)
+    if (refs->matched[k].half_thickness == h) return &refs->matched[k];
+  return NULL;
+}
+
+/* r's matched reference into r->matched: refs' run for its half-thickness,
+ * else run here (and kept in c's cache when refs is c); < 0 when it failed */
+static int matched_for(dv_comparison *c, const dv_comparison *refs, const dv_scenario *ref_sc,
+                       dv_engine_result *r, dv_error *err) {
+  const dv_matched_run *m = matched_of(refs, r->half_thickness);
+  dv_matched_run own;
+  if (!m && refs == c && c->nmatched < DV_MAX_ENGINES) {
+    dv_run_matched_reference(ref_sc, r->half_thickness, &c->matched[c->nmatched]);
+    m = &c->matched[c->nmatched++];
+  } else if (!m) {
+    dv_run_matched_reference(ref_sc, r->half_thickness, &own);
+    m = &own;
+  }
+  int status = m->status;
+  if (status < 0) {
+    *err = m->err;
+    char what[128];
+    snprintf(what, sizeof what, "the %s reference (h = %g m) of %s",
+             dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name, r->half_thickness,
+             r->engine->name);
+    status = reference_failed(status, what, err);
+  } else {
+    r->matched_stats = m->stats;
+    r->matched_wall_s = m->wall_s;
+    r->matched.n = 0;
+    status = DV_OK; /* the run's DV_EVENT (it ended at an event) is no failure */
+    for (size_t i = 0; i < m->traj.n && !status; i++)
+      if (dv_run_traj_push(&r->matched, &m->traj.s[i]))
+        status = dv_fail(err, DV_ESYSTEM, "out of memory");
+  }
+  if (m == &own) dv_run_traj_free(&own.traj);
+  return status;
+}
+
+/* r (its engine's run made) judged against refs' references in c (refs:
+ * where its matched reference may already be); DV_OK, or < 0 when a
+ * reference run fails */
+static int judge_against(dv_comparison *c, const dv_comparison *refs, const dv_scenario *ref_sc,
+                         const dv_run_hook *hook, dv_engine_result *r, dv_error *err) {
+  const dv_scenario *sc = c->sc;
+  const int same = !ref_sc || ref_sc == sc; /* the references run on the engines' own scene */
+  if (!ref_sc) ref_sc = sc;
+  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
+  int status;
+  const dv_traj *ref = &c->thin;
+  double ref_end = c->thin_valid_end;
+  if (r->half_thickness > 0.0) {
+    if ((status = matched_for(c, refs, ref_sc, r, err)) < 0) return status;
+    dv_scenario match = *ref_sc;
+    dv_scenario_set_number(&match, matched->name, "half_thickness", r->half_thickness, NULL);
+    ref = &r->matched;
+    ref_end = matched_valid_end(&match, &r->matched, &r->matched_stats);
+    if (crossed_upright(&r->matched, &r->matched_stats)) {
+      /* a cylinder at upright switches rim corners, an impact rolling does not
+       * describe: the window ends there (the thin disk is another body) */
+      const double t_cross = r->matched.s[r->matched.n - 1].t;
+      snprintf(r->reference_note, sizeof r->reference_note,
+               "the compared window ends at t = %g s, where the scene's body reaches upright and "
+               "its rim corners switch (an impact rolling does not describe)",
+               t_cross);
+      ref_end = fmin(ref_end, t_cross);
+    }
+  }
+  dv_run_compare(&r->traj, &c->thin, c->thin_valid_end, &r->vs_thin);
+  if (ref == &c->thin) { /* the same comparison: its Hausdorff distance is O(n^2) */
+    r->vs_ref = r->vs_thin;
+  } else {
+    dv_run_compare(&r->traj, ref, ref_end, &r->vs_ref);
+    /* beside the judged comparison, the thin disk's too short to judge measured nothing */
+    const double t0 = c->thin.n ? c->thin.s[0].t : 0.0;
+    const double t_thin = c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0;
+    char why[160];
+    if (window_too_short(c, &r->vs_thin, t0, c->thin_stats.lay_down ? t_thin : INFINITY, why,
+                         sizeof why))
+      for (int m = 0; m < DV_NMETRICS; m++) r->vs_thin.value[m] = NAN;
+  }
+  find_horizon(c, ref, r);
+  timing_horizon(&c->amp, ref, r);
+  { /* its own nudges: the spread and the lying down they allow */
+    const double t_spread = dv_clock_now();
+    status =
+        dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, r->early_of, r->spread, r->nudged, err);
+    c->horizon_wall_s += dv_clock_now() - t_spread;
+    if (status < 0) return status;
+  }
+  pointwise_to_horizon(&r->traj, ref, ref_end, r);
+  r->vs_ref.value[DV_INVARIANT_DRIFT] =
+      dv_run_invariant_drift(&sc->disk, &r->traj, r->vs_ref.t_window);
+  if (!isnan(r->vs_thin.value[DV_THETA_MAX_ERR])) /* NaN: the thin disk's measured nothing */
+    r->vs_thin.value[DV_INVARIANT_DRIFT] = r->vs_ref.value[DV_INVARIANT_DRIFT];
+  dv_limit limits[DV_NMETRICS];
+  dv_run_limits(sc, r->engine->name, ref, r->vs_ref.t_window, limits);
+  for (int m = 0; m < DV_NMETRICS; m++) {
+    r->tolerance[m] = limits[m].value;
+    memcpy(r->limit_why[m], limits[m].why, sizeof r->limit_why[m]);
+    /* past the horizon: a measure the nudge alone moves by half its limit is unpredictable */
+    if (!dv_run_metric_pointwise((dv_metric_id)m) && r->spread[m] > 0.5 * r->tolerance[m]) {
+      r->tolerance[m] = NAN;
+      snprintf(r->limit_why[m], sizeof r->limit_why[m],
+               "not judged: the reference nudged by its early errors moves it by %.3g",
+               r->spread[m]);
+    }
+  }
+  period_limit(&c->amp, r);
+  /* turning points and periods: NAN where there is nothing to compare */
+  static const dv_metric_id cycles[] = {DV_THETA_TURNING_ERR, DV_NUTATION_PERIOD_ERR,
+                                        DV_HEADING_PERIOD_ERR};
+  for (size_t k = 0; k < sizeof cycles / sizeof cycles[0]; k++)
+    if (isnan(r->vs_ref.value[cycles[k]])) {
+      r->tolerance[cycles[k]] = NAN;
+      snprintf(r->limit_why[cycles[k]], sizeof r->limit_why[cycles[k]], "not judged: %s",
+               k ? "the reference completes no nutation period in the window"
+                 : "neither run turns (a swing of 1e-3 rad) in the window");
+    }
+  if (ref != &c->thin) { /* f1, f2 are integrals of the thin disk only */
+    r->tolerance[DV_INVARIANT_DRIFT] = NAN;
+    snprintf(r->limit_why[DV_INVARIANT_DRIFT], sizeof r->limit_why[DV_INVARIANT_DRIFT],
+             "not judged: f1, f2 are the thin disk's integrals; a cylinder (h = %g m) does not "
+             "conserve them",
+             r->half_thickness);
+  }
+  const dv_engine_stats *ref_st = ref == &c->thin ? &c->thin_stats : &r->matched_stats;
+  const int itself = same && r->engine == (ref == &c->thin ? thin : matched);
+  if (hook && hook->before_verdict) hook->before_verdict(hook->ctx, c, r);
+  judge(c, ref, ref_st, ref_end, itself, r);
+  c->pass &= r->pass;
+  return DV_OK;
+}
+
+int dv_run_engine_judge(dv_comparison *c, const dv_scenario *ref_sc, const dv_run_hook *hook,
+                        dv_engine_result *r, dv_error *err) {
+  return judge_against(c, c, ref_sc, hook, r, err);
+}
+
+int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
+                           const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
+                           dv_comparison *c, dv_error *err) {
+  dv_run_comparison_begin(sc, c);
+  if (!ref_sc) ref_sc = sc;
+  if (n > DV_MAX_ENGINES) return dv_fail(err, DV_EINPUT, "at most %d engines", DV_MAX_ENGINES);
+  dv_run_progress_plan(sc, ref_sc, engines, n); /* a long comparison says so first */
+  int status = dv_run_thin_reference(ref_sc, c, err);
+  for (size_t i = 0; i < n && !status; i++) {
+    dv_engine_result *r = &c->r[c->n++];
+    dv_run_engine_only(engines[i], sc, r);
+    status = judge_against(c, c, ref_sc == sc ? NULL : ref_sc, hook, r, err);
+  }
+  return status;
+}
+
+int dv_run_engine_against(const dv_comparison *refs, const dv_scenario *sc,
+                          const dv_scenario *ref_sc, const dv_engine_type *engine,
+                          dv_comparison *out, dv_error *err) {
+  dv_run_comparison_begin(sc, out);
+  out->borrowed = 1;
+  out->thin = refs->thin;
+  out->thin_stats = refs->thin_stats;
+  out->thin_wall_s = refs->thin_wall_s;
+  out->thin_valid_end = refs->thin_valid_end;
+  out->amp = refs->amp;
+  out->horizon = refs->horizon;
+  memcpy(out->spread, refs->spread, sizeof out->spread);
+  dv_engine_result *r = &out->r[out->n++];
+  dv_run_engine_only(engine, sc, r);
+  return judge_against(out, refs, ref_sc, NULL, r, err);
 }
 
 void dv_run_comparison_free(dv_comparison *c) {
   if (!c) return;
-  dv_run_traj_free(&c->thin);
-  dv_run_amplification_free(&c->amp);
+  if (!c->borrowed) {
+    dv_run_traj_free(&c->thin);
+    dv_run_amplification_free(&c->amp);
+  }
+  memset(&c->thin, 0, sizeof c->thin);
+  memset(&c->amp, 0, sizeof c->amp);
   for (size_t i = 0; i < c->n; i++) {
     dv_run_traj_free(&c->r[i].traj);
     dv_run_traj_free(&c->r[i].matched);
   }
-  c->n = 0;
+  for (size_t k = 0; k < c->nmatched; k++) dv_run_traj_free(&c->matched[k].traj);
+  c->n = c->nmatched = 0;
 }

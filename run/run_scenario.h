@@ -73,6 +73,16 @@ typedef struct dv_engine_result {
   char failures[DV_MAX_FAILURES][384];
 } dv_engine_result;
 
+/* the matched reference for one half-thickness, run once for every engine of that body */
+typedef struct dv_matched_run {
+  double half_thickness; /* m */
+  int status;            /* of its run; < 0: err says why */
+  dv_error err;
+  dv_traj traj;
+  dv_engine_stats stats;
+  double wall_s;
+} dv_matched_run;
+
 typedef struct dv_comparison {
   const dv_scenario *sc;
   dv_traj thin; /* the thin-disk reference */
@@ -87,6 +97,9 @@ typedef struct dv_comparison {
   size_t n;
   dv_engine_result r[DV_MAX_ENGINES];
   int pass; /* every engine passed */
+  size_t nmatched;
+  dv_matched_run matched[DV_MAX_ENGINES]; /* each half-thickness's matched reference, once */
+  int borrowed; /* thin and amp are another comparison's (dv_run_engine_against): not freed */
 } dv_comparison;
 
 /* run the engines on sc and compare; the references run on ref_sc (NULL:
@@ -109,6 +122,35 @@ typedef struct dv_run_hook {
 int dv_run_scenario_hooked(const dv_scenario *sc, const dv_scenario *ref_sc,
                            const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
                            dv_comparison *out, dv_error *err);
+
+/* one engine on sc judged against the references refs already ran (on
+ * ref_sc, NULL: sc, with the same physics: sc differs from refs->sc only in
+ * the engine's settings): the thin disk and its amplification are refs',
+ * the matched reference for the engine's half-thickness too where refs has
+ * it (else run here). out is a comparison of that one engine that borrows
+ * refs' references (refs must outlive it); free it with
+ * dv_run_comparison_free. DV_OK (see out->pass), or < 0 when a reference
+ * run here fails */
+int dv_run_engine_against(const dv_comparison *refs, const dv_scenario *sc,
+                          const dv_scenario *ref_sc, const dv_engine_type *engine,
+                          dv_comparison *out, dv_error *err);
+
+/* the parts of dv_run_scenario_hooked, for a caller that runs them apart
+ * (run_parallel.h): c begun for sc; the thin reference and its
+ * amplification on ref_sc into c (< 0: err names the run); an engine's own
+ * run into r (its failure in r->status); a matched reference into m (its
+ * failure in m->status, m->err); and the judging of r against c's
+ * references (the matched one from c->matched[], run and kept there when
+ * missing), added to c's pass. Every comparison begun must be freed
+ * (dv_run_comparison_free) */
+void dv_run_comparison_begin(const dv_scenario *sc, dv_comparison *c);
+int dv_run_thin_reference(const dv_scenario *ref_sc, dv_comparison *c, dv_error *err);
+void dv_run_engine_only(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r);
+/* what r's engine simulates on sc, without running it: its half-thickness, a thinner body */
+void dv_run_engine_body(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r);
+void dv_run_matched_reference(const dv_scenario *ref_sc, double half_thickness, dv_matched_run *m);
+int dv_run_engine_judge(dv_comparison *c, const dv_scenario *ref_sc, const dv_run_hook *hook,
+                        dv_engine_result *r, dv_error *err);
 
 void dv_run_comparison_free(dv_comparison *c);
 

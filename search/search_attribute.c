@@ -36,7 +36,8 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   for (int i = 0; i < 4; i++)
     if (given[i]) over[n++] = given[i];
   dv_sweep_point p;
-  if (dv_search_sweep_probe(pr->sc, pr->engine->name, over, n, &p, err)) return DV_EINPUT;
+  if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, over, n, &p, err))
+    return DV_EINPUT;
   /* the thin disk's run of a thick scene is not judged, yet its error against
    * the thin disk, all the geometry step reads, is measured */
   const int thin_measured = p.thinner && !pr->own_reference && isfinite(p.theta_thin);
@@ -57,7 +58,8 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
 static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t size, dv_error *err) {
   dv_sweep_point p;
   why[0] = '\0';
-  if (dv_search_sweep_probe(pr->sc, pr->engine->name, NULL, 0, &p, err)) return DV_EINPUT;
+  if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, NULL, 0, &p, err))
+    return DV_EINPUT;
   *e = !p.ok ? NAN : pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
   if (p.ok && isnan(*e))
     snprintf(why, size, "%s against %s: %.270s", dv_run_verdict_name(p.verdict),
@@ -70,6 +72,11 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
 
 int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
                         dv_error *err) {
+  return dv_search_attribute_in(NULL, scenario, engine_name, out, err);
+}
+
+int dv_search_attribute_in(const struct dv_comparison *refs, const dv_scenario *scenario,
+                           const char *engine_name, dv_attribution *out, dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
   const dv_engine_contact *k = engine->contact;
@@ -100,7 +107,7 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const dv_prober pr = {scenario, engine, own};
+  const dv_prober pr = {scenario, engine, own, refs};
   dv_attribution_errors e;
   memset(out, 0, sizeof *out);
   out->own_reference = own;
@@ -135,5 +142,5 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
                                    k->softness_key ? stiff : NULL, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
-  return dv_search_attribute_knobs(scenario, engine_name, out, err);
+  return dv_search_attribute_knobs_by(&pr, out, err);
 }

@@ -75,6 +75,7 @@ typedef struct dv_prober {
   const struct dv_engine_type *engine;
   int own_reference; /* measure against the engine's own reference (the matched
                         one for a cylinder), not the thin disk */
+  const struct dv_comparison *refs; /* sc's references, already run (NULL: each probe runs them) */
 } dv_prober;
 
 /* the max theta error against the thin disk (or the engine's own reference)
@@ -103,6 +104,9 @@ double dv_search_attribute_knobs_cost(const struct dv_scenario *sc,
 int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
                               dv_error *err);
 
+/* dv_search_attribute_knobs probing with pr (its references reused) */
+int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_error *err);
+
 /* probe the engine on the scenario, split its error and try every knob; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it. A scenario whose
  * run measures nothing (a compared window of zero length or too short to
@@ -110,5 +114,10 @@ int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, 
 struct dv_scenario;
 int dv_search_attribute(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
                         dv_error *err);
+
+/* dv_search_attribute with the references of refs, a comparison of sc already
+ * run (search_sweep.h, dv_search_sweep_probe_in): no probe runs them again */
+int dv_search_attribute_in(const struct dv_comparison *refs, const struct dv_scenario *sc,
+                           const char *engine, dv_attribution *out, dv_error *err);
 
 #endif

@@ -22,10 +22,11 @@
 #define RESIDUE 0.1 /* a change removes an excess over a limit that it cuts to a tenth */
 
 /* run sc with over[0..n) and keep what attribution compares; 0, or < 0 (err) */
-static int run_knob(const dv_scenario *sc, const char *engine, const char *const *over, size_t n,
-                    int own, dv_knob_probe *k, dv_error *err) {
+static int run_knob(const dv_prober *pr, const char *const *over, size_t n, int own,
+                    dv_knob_probe *k, dv_error *err) {
   dv_sweep_point p;
-  if (dv_search_sweep_probe(sc, engine, over, n, &p, err)) return DV_EINPUT;
+  if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, over, n, &p, err))
+    return DV_EINPUT;
   memcpy(k->metric, p.metric, sizeof k->metric);
   k->theta_thin = own ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
   k->ok = p.ok;
@@ -159,8 +160,18 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine || !engine->contact || !engine->search)
     return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute", engine_name);
+  const dv_prober pr = {sc, engine, out->own_reference, NULL};
+  return dv_search_attribute_knobs_by(&pr, out, err);
+}
+
+int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_error *err) {
+  const dv_scenario *sc = pr->sc;
+  const dv_engine_type *engine = pr->engine;
+  if (!engine->contact || !engine->search)
+    return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute",
+                   engine->name);
   dv_sweep_point p;
-  if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
+  if (dv_search_sweep_probe_in(pr->refs, sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
   memcpy(out->base, p.metric, sizeof out->base);
   memcpy(out->limit, p.limit, sizeof out->limit);
   out->base_theta_thin = out->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
@@ -176,7 +187,7 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
     memset(k, 0, sizeof *k);
     k->knob = kn[i].name;
     snprintf(k->change, sizeof k->change, "%s", kn[i].change);
-    if (run_knob(sc, engine->name, over, kn[i].n, out->own_reference, k, err)) return DV_EINPUT;
+    if (run_knob(pr, over, kn[i].n, out->own_reference, k, err)) return DV_EINPUT;
     judge(out, k);
     if (k->removes && (out->cause < 0 || k->worst < out->knobs[out->cause].worst))
       out->cause = (int)i;

@@ -86,6 +86,7 @@ typedef struct job {
   const dv_vary *vary;
   size_t nvary;
   int repeat_short; /* time a run shorter than 0.2 s five times */
+  const dv_comparison *refs; /* references already run (NULL: run them) */
 } job;
 
 /* the k-th point of the grid: values and the overrides that set them */
@@ -189,7 +190,10 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
     ref_sc = ref;
   }
   const dv_engine_type *engines[1] = {jb->engine};
-  if (dv_run_scenario(sc, ref_sc, engines, 1, c, &err)) {
+  const int status = jb->refs && !ref_sc
+                         ? dv_run_engine_against(jb->refs, sc, NULL, jb->engine, c, &err)
+                         : dv_run_scenario(sc, ref_sc, engines, 1, c, &err);
+  if (status) {
     pt->verdict = DV_VERDICT_ERROR;
     snprintf(pt->detail, sizeof pt->detail, "%.191s", err.msg);
     dv_run_comparison_free(c);
@@ -269,9 +273,15 @@ static void run_point(const job *jb, size_t k, dv_sweep_point *pt) {
 
 int dv_search_sweep_probe(const dv_scenario *sc, const char *engine, const char *const *overrides,
                           size_t n, dv_sweep_point *out, dv_error *err) {
+  return dv_search_sweep_probe_in(NULL, sc, engine, overrides, n, out, err);
+}
+
+int dv_search_sweep_probe_in(const dv_comparison *refs, const dv_scenario *sc, const char *engine,
+                             const char *const *overrides, size_t n, dv_sweep_point *out,
+                             dv_error *err) {
   const dv_engine_type *e = dv_engine_find(engine);
   if (!e) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine);
-  const job jb = {sc, e, NULL, 0, 0};
+  const job jb = {sc, e, NULL, 0, 0, refs};
   memset(out, 0, sizeof *out);
   run_overrides(&jb, overrides, n, out);
   return DV_OK;
@@ -296,7 +306,7 @@ int dv_search_sweep_run(const dv_scenario *sc, const char *engine, const dv_vary
   memcpy(out->vary, vary, nvary * sizeof *vary);
   dv_sweep_point *pts = calloc(n, sizeof *pts);
   if (!pts) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  const job jb = {sc, e, vary, nvary, 1};
+  const job jb = {sc, e, vary, nvary, 1, NULL};
   for (size_t k = 0; k < n; k++) not_run(&jb, k, &pts[k]);
   checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
   /* under mpirun, rank 0 keeps the tables current as results arrive */

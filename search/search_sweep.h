@@ -87,6 +87,16 @@ void dv_search_sweep_free(dv_sweep *s); /* NULL-safe */
 int dv_search_sweep_probe(const dv_scenario *sc, const char *engine, const char *const *overrides,
                           size_t n, dv_sweep_point *out, dv_error *err);
 
+/* dv_search_sweep_probe against the references refs already ran (NULL: run
+ * them): the thin disk, its amplification and the matched references of refs
+ * (a comparison of sc, whose overrides change the engine's settings alone)
+ * are not run again. A reference engine (one that tightens its own reference)
+ * runs its references all the same. */
+struct dv_comparison;
+int dv_search_sweep_probe_in(const struct dv_comparison *refs, const dv_scenario *sc,
+                             const char *engine, const char *const *overrides, size_t n,
+                             dv_sweep_point *out, dv_error *err);
+
 /* mark the Pareto points (theta_max_err against wall_per_sim_s) among ok points */
 void dv_search_pareto(dv_sweep_point *p, size_t n);
 

@@ -110,7 +110,7 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
   const char *name = engine->name;
   const double dt = dv_scenario_get(sc, name, engine->search->step_key);
   const double soft = k->softness_key ? dv_scenario_get(sc, name, k->softness_key) : NAN;
-  const dv_prober pr = {sc, engine, 1};
+  const dv_prober pr = {sc, engine, 1, NULL};
   for (int i = 0; i < DV_VERIFY_LEVELS; i++) {
     const double h = dt / (1 << i);
     char step[128], softness[128];

@@ -61,7 +61,8 @@ int dv_search_verify_suite(const dv_scenario *scs, size_t n, const dv_engine_typ
   const suite_job j = {scs, engines, nengines};
   unsigned char *done = calloc(n * nengines, 1);
   if (!done) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  const dv_exec_options opt = {jobs, dv_run_progress_on_result, done, timeout};
+  const dv_exec_options opt = {
+      .jobs = jobs, .on_result = dv_run_progress_on_result, .done = done, .timeout = timeout};
   dv_run_progress_tasks_begin("verification", n * nengines);
   const int pool = dv_exec_pool(n * nengines, sizeof *cases, verify_task, (void *)&j, cases, &opt);
   dv_run_progress_tasks_end();

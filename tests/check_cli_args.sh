@@ -67,7 +67,8 @@ expect "unexpected argument 'x'" engines x
 expect "^diskval compare: --cause bogus: full or none" compare "$sc" --cause bogus
 expect "^diskval suite: --cause bogus: full or none" suite "$sc" --cause bogus
 expect "unknown option '--bogus'" simulate "$sc" --engine reduced --bogus
-expect "unknown option '--jobs'" compare "$sc" --jobs 2
+expect "jobs: '0' is not a whole number in \[1, 1024\]" compare "$sc" --jobs 0
+expect "unknown option '--jobs'" simulate "$sc" --engine reduced --jobs 2
 expect "--engine needs a value" simulate "$sc" --engine
 expect "no scenario given" simulate --engine reduced
 expect "no scenario given" suite
