@@ -51,8 +51,12 @@ static int explain_failures(const dv_scenario *sc, const dv_report_explain *expl
     snprintf(results[k].cause, sizeof results[k].cause,
              "unknown (its search's process ended without a result: crashed or killed)");
   }
+  /* one job (a suite's scenario): here, so that a stop reaches the suite's pool alone */
+  if (jobs <= 1)
+    for (size_t k = 0; k < n; k++) cause_task(k, &results[k], &j), done[k] = DV_EXEC_ARRIVED;
   const dv_exec_options opt = {.jobs = jobs, .done = done, .local = 1};
-  const int pool = dv_exec_pool(n, sizeof *results, cause_task, &j, results, &opt);
+  const int pool =
+      jobs <= 1 ? DV_EXEC_DONE : dv_exec_pool(n, sizeof *results, cause_task, &j, results, &opt);
   if (pool == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
   if (pool == DV_EXEC_INTERRUPTED)
     return dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by());

@@ -214,7 +214,8 @@ int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
   /* a sample at t = 0, one every output_dt, one at an event */
   const double grid = sc->output_dt > 0.0 ? ceil(sc->duration / sc->output_dt) : INFINITY;
   const double bytes = (double)HEAD + (grid + 3.0) * (sizeof(dv_sample) + AMP_ARRAYS * 8.0);
-  if (n > DV_MAX_ENGINES || !(bytes <= DV_RUN_SLOT_MAX))
+  /* one job (a suite's scenario): in this process, so that a stop reaches the suite's pool alone */
+  if (jobs <= 1 || n > DV_MAX_ENGINES || !(bytes <= DV_RUN_SLOT_MAX))
     return dv_run_scenario_hooked(sc, ref_sc, engines, n, hook, c, err);
   p.cap = (size_t)grid + 3;
   const size_t size = HEAD + p.cap * (sizeof(dv_sample) + AMP_ARRAYS * sizeof(double));

@@ -26,7 +26,7 @@
  * the comparison runs in this process: 64 MiB, some 400000 samples */
 #define DV_RUN_SLOT_MAX (64u << 20)
 
-/* dv_run_scenario_hooked in up to jobs processes (below 1: one); SIGINT,
+/* dv_run_scenario_hooked in up to jobs processes (one job: in this process); SIGINT,
  * SIGTERM or SIGHUP stop it (DV_EVENT, err saying so) */
 int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
                          const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
