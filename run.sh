@@ -12,8 +12,8 @@ PACKAGES=(build-essential cmake pkg-config libgsl-dev libsundials-dev libinih-de
           libdart-collision-ode-dev libsimbody-dev libplplot-dev libopenmpi-dev openmpi-bin
           libdouble-conversion-dev
           libdragonbox-dev)
-# the tests also check the report's XML and render its page in a real browser, read JSON (jq)
-# and validate it against its schemas (python3-jsonschema)
+# the tests (and the benchmarks) also check the report's XML and render its page in a real
+# browser, read JSON (jq) and validate it against its schemas (python3-jsonschema)
 TEST_PACKAGES=(libxml2-utils chromium valgrind clang libclang-rt-14-dev time jq python3-jsonschema)
 BUILD_DIR=${BUILD_DIR:-build}
 CMAKE_FLAGS=()
@@ -65,7 +65,7 @@ build() {
   cmake --build "$BUILD_DIR" -j "$(nproc)"
 }
 
-if [ "${1:-run}" = test ]; then
+if [ "${1:-run}" = test ] || [ "${1:-run}" = bench ]; then
   install_missing "${PACKAGES[@]}" "${TEST_PACKAGES[@]}"
 else
   install_missing "${PACKAGES[@]}"
@@ -86,6 +86,7 @@ case "${1:-run}" in
     bash bench/bench_forecast.sh "$BUILD_DIR/cli/diskval" .
     bash bench/bench_harness.sh "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/bare_mujoco" \
       "$BUILD_DIR/bench/bare_ode" .
+    bash bench/bench_startup.sh "$BUILD_DIR/cli/diskval"
     bash bench/bench_compare.sh "$BUILD_DIR/cli/diskval" .
     ;;
   run)

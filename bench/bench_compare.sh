@@ -16,7 +16,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 seconds() { local t0 t1; t0=$(date +%s.%N); "$@" >/dev/null 2>&1; t1=$(date +%s.%N); awk "BEGIN{print $t1 - $t0}"; }
 engines_sum() { # the engines' own wall times in a report.json
-  python3 -c 'import json,sys; print(sum(e.get("wall_s") or 0 for e in json.load(open(sys.argv[1]))["engines"].values()))' "$1"
+  jq '[.engines[].wall_s // 0] | add' "$1"
 }
 printf "%-26s %9s %9s %9s %8s %8s %8s\n" scene "engines" "jobs 1" "jobs 2" "j1/eng" "j2/eng" "j2/j1"
 for sc in "${scenes[@]}"; do
