@@ -7,6 +7,7 @@
 #include <dragonbox/dragonbox.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 using double_conversion::DoubleToStringConverter;
@@ -42,17 +43,51 @@ size_t emit(char *buf, size_t size, Write write) {
   return n;
 }
 
+// "00" ... "99": two digits a division, half the dependent divisions of one digit at a time
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// the decimal digits of v (< 10^9) into the n bytes ending at end, n its digit count
+void write_digits(std::uint32_t v, char *end) {
+  while (v >= 100) {
+    end -= 2;
+    std::memcpy(end, kPairs + 2 * (v % 100), 2);
+    v /= 100;
+  }
+  if (v >= 10)
+    std::memcpy(end - 2, kPairs + 2 * v, 2);
+  else
+    end[-1] = static_cast<char>('0' + v);
+}
+
+int digit_count(std::uint32_t v) {
+  int n = 1;
+  while (v >= 10) v /= 10, n++;
+  return n;
+}
+
 // the shortest digits of finite, nonzero |v| (Dragonbox, ties to even) into
-// digits; their count, and the decimal exponent of the first digit in *exp10
+// digits; their count, and the decimal exponent of the first digit in *exp10.
+// A 17-digit significand is split at 10^8 into halves of 32-bit arithmetic.
 int shortest_digits(double v, char digits[17], int *exp10) {
   namespace policy = jkj::dragonbox::policy;
   auto d = jkj::dragonbox::to_decimal(v, policy::sign::ignore, policy::trailing_zero::remove);
-  char rev[20];
-  int n = 0;
-  auto sig = d.significand;
-  do rev[n++] = static_cast<char>('0' + sig % 10);
-  while (sig /= 10);
-  for (int i = 0; i < n; i++) digits[i] = rev[n - 1 - i];
+  const std::uint64_t sig = d.significand;
+  int n;
+  if (sig >= 100000000u) {
+    const auto hi = static_cast<std::uint32_t>(sig / 100000000u);
+    const auto lo = static_cast<std::uint32_t>(sig % 100000000u);
+    const int nh = digit_count(hi);
+    write_digits(hi, digits + nh);
+    std::memset(digits + nh, '0', 8);  // lo's leading zeros
+    write_digits(lo, digits + nh + 8);
+    n = nh + 8;
+  } else {
+    n = digit_count(static_cast<std::uint32_t>(sig));
+    write_digits(static_cast<std::uint32_t>(sig), digits + n);
+  }
   *exp10 = d.exponent + n - 1;
   return n;
 }
