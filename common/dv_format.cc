@@ -92,7 +92,13 @@ int shortest_digits(double v, char digits[17], int *exp10) {
   return n;
 }
 
-// the text of finite v: plain decimals for 1e-4 <= |v| < 1e17, else d.ddde-N / d.dddeN
+// Copies of a fixed 17 bytes (the most digits) that the pointer then steps past
+// part of: a copy of variable length is compiled to a slow rep movs. So the
+// digits have kSlack bytes after them, and the text as many beyond its end.
+constexpr int kMaxDigits = 17, kSlack = 24, kTextBytes = DV_FORMAT_SIZE + kSlack;
+
+// the text of finite v into out (kTextBytes): plain decimals for
+// 1e-4 <= |v| < 1e17, else d.ddde-N / d.dddeN
 size_t write_shortest(double v, char *out) {
   char *p = out;
   if (std::signbit(v)) *p++ = '-';
@@ -100,14 +106,14 @@ size_t write_shortest(double v, char *out) {
     *p++ = '0';
     return static_cast<size_t>(p - out);
   }
-  char digits[17];
+  char digits[kMaxDigits + kSlack];
   int e;
   const int n = shortest_digits(v, digits, &e);
   if (e < -4 || e >= 17) {
     *p++ = digits[0];
     if (n > 1) {
       *p++ = '.';
-      std::memcpy(p, digits + 1, static_cast<size_t>(n - 1));
+      std::memcpy(p, digits + 1, kMaxDigits);
       p += n - 1;
     }
     *p++ = 'e';
@@ -120,17 +126,17 @@ size_t write_shortest(double v, char *out) {
     *p++ = '0';
     *p++ = '.';
     for (int i = -1; i > e; i--) *p++ = '0';
-    std::memcpy(p, digits, static_cast<size_t>(n));
+    std::memcpy(p, digits, kMaxDigits);
     p += n;
   } else if (e + 1 >= n) {  // ddd000
-    std::memcpy(p, digits, static_cast<size_t>(n));
+    std::memcpy(p, digits, kMaxDigits);
     p += n;
     for (int i = n; i <= e; i++) *p++ = '0';
   } else {  // dd.ddd
-    std::memcpy(p, digits, static_cast<size_t>(e + 1));
+    std::memcpy(p, digits, kMaxDigits);
     p += e + 1;
     *p++ = '.';
-    std::memcpy(p, digits + e + 1, static_cast<size_t>(n - e - 1));
+    std::memcpy(p, digits + e + 1, kMaxDigits);
     p += n - e - 1;
   }
   return static_cast<size_t>(p - out);
@@ -140,7 +146,7 @@ size_t write_shortest(double v, char *out) {
 
 // shortest round-trip text; "nan" (of either sign), "inf", "-inf"
 extern "C" size_t dv_format_double(double v, char *buf, size_t size) {
-  char text[DV_FORMAT_SIZE];
+  char text[kTextBytes];
   size_t n;
   if (std::isnan(v)) {
     n = 3, std::memcpy(text, "nan", 3);
@@ -149,7 +155,10 @@ extern "C" size_t dv_format_double(double v, char *buf, size_t size) {
   } else {
     n = write_shortest(v, text);
   }
-  if (size) {
+  if (size >= DV_FORMAT_SIZE) {  // room for all of it: one copy of fixed length
+    std::memcpy(buf, text, DV_FORMAT_SIZE);
+    buf[n] = '\0';
+  } else if (size) {
     const size_t k = n < size - 1 ? n : size - 1;
     std::memcpy(buf, text, k);
     buf[k] = '\0';
