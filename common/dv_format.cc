@@ -174,8 +174,18 @@ extern "C" size_t dv_format_json(double v, char *buf, size_t size) {
   return dv_format_double(v, buf, size);
 }
 
-// %.*g with digits clamped to 1..17, so that the text fits DV_FORMAT_SIZE
+// %.*g with digits clamped to 1..17, so that the text fits DV_FORMAT_SIZE.
+// Where the shortest digits of v are no more than p and plain decimals, they
+// are its p-digit rounding: v is within 2^-53 of them, a p-digit tie at least
+// 10^-p / 2 away (so p <= kSureDigits), and %g writes them as the shortest does.
 extern "C" size_t dv_format_precision(double v, int digits, char *buf, size_t size) {
+  constexpr int kSureDigits = 15;
   int p = digits < 1 ? 1 : digits > 17 ? 17 : digits;
+  if (p <= kSureDigits && std::isfinite(v) && size >= DV_FORMAT_SIZE) {
+    char sure[kMaxDigits + kSlack];
+    int e = 0, n = 0;
+    if (v != 0.0) n = shortest_digits(v, sure, &e);
+    if (n <= p && e >= -4 && e < p) return dv_format_double(v, buf, size);
+  }
   return emit(buf, size, [v, p](StringBuilder *sb) { precision.ToPrecision(v, p, sb); });
 }
