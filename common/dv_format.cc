@@ -62,9 +62,12 @@ void write_digits(std::uint32_t v, char *end) {
     end[-1] = static_cast<char>('0' + v);
 }
 
+// compared with powers of ten, not divided by ten: the divisions were a quarter of the digits' time
 int digit_count(std::uint32_t v) {
+  static constexpr std::uint32_t kPowers[] = {10,      100,      1000,      10000,     100000,
+                                              1000000, 10000000, 100000000, 1000000000};
   int n = 1;
-  while (v >= 10) v /= 10, n++;
+  while (n < 10 && v >= kPowers[n - 1]) n++;
   return n;
 }
 
