@@ -5,14 +5,16 @@
 #include <stdio.h>
 #include <string.h>
 
-void dv_reference_sample(const red_rolling *rr, const double s[RR_NSTATE], dv_sample *out) {
+void dv_reference_sample(const red_rolling *rr, const double s[RR_NSTATE], const double *y,
+                         dv_sample *out) {
   double wdot[3];
-  red_rolling_to_state(s, out->y);
-  red_rolling_contact_point(rr, s, out->contact);
-  out->energy = red_rolling_energy(rr, s);
+  if (y)
+    memcpy(out->y, y, RED_NSTATE * sizeof(double));
+  else
+    red_rolling_to_state(s, out->y);
   out->slip = out->penetration = 0.0;
   out->contacts = 1;
-  if (red_rolling_dynamics(rr, s, wdot, out->force))
+  if (red_rolling_observe(rr, s, out->contact, &out->energy, wdot, out->force))
     out->force[0] = out->force[1] = out->force[2] = NAN;
 }
 

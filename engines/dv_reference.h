@@ -46,9 +46,11 @@ void dv_reference_derive_friction(const dv_scenario *sc, const char *engine, dou
  * friction cone of dv_matched_friction; INFINITY when it never does */
 double dv_reference_valid_until(const dv_scenario *sc, const dv_sample *s, size_t n);
 
-/* a sample from a rolling state: canonical state, contact point, energy and
- * the contact force rolling needs (NaN where undefined); no slip, no depth */
-void dv_reference_sample(const red_rolling *rr, const double s[RR_NSTATE], dv_sample *out);
+/* a sample from a rolling state: canonical state (y, or from s where y is
+ * NULL), contact point, energy and the contact force rolling needs (NaN
+ * where undefined); no slip, no depth */
+void dv_reference_sample(const red_rolling *rr, const double s[RR_NSTATE], const double *y,
+                         dv_sample *out);
 
 /* stats of a reference run: the integrator's counts, the event (or -1) and
  * its description */

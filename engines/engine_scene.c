@@ -105,7 +105,36 @@ static double period(double rate) {
   return rate != 0.0 && isfinite(rate) ? 2.0 * M_PI / fabs(rate) : INFINITY;
 }
 
+/* what the scales depend on: a key of the last answer */
+typedef struct scene_key {
+  red_disk disk;
+  double initial[RED_NSTATE], duration, theta_limit;
+} scene_key;
+
+static void scales_of(const dv_scenario *sc, double limit, dv_scene_scales *out);
+
+/* every engine's settings check asks for the scales of the same scene (over
+ * thirty times a scenario load): the last answer is kept, keyed by value */
 void dv_engine_scene_scales(const dv_scenario *sc, dv_scene_scales *out) {
+  static _Thread_local scene_key last_key;
+  static _Thread_local dv_scene_scales last;
+  static _Thread_local int known;
+  const dv_reduced_settings *rs = dv_reference_settings(sc);
+  scene_key key;
+  memset(&key, 0, sizeof key); /* padding compared too */
+  key.disk = sc->disk;
+  memcpy(key.initial, sc->initial, sizeof key.initial);
+  key.duration = sc->duration;
+  key.theta_limit = rs ? rs->theta_limit : 0.01;
+  if (!known || memcmp(&key, &last_key, sizeof key)) {
+    scales_of(sc, key.theta_limit, &last);
+    last_key = key;
+    known = 1;
+  }
+  *out = last;
+}
+
+static void scales_of(const dv_scenario *sc, double limit, dv_scene_scales *out) {
   const red_disk *d = &sc->disk;
   const double *y = sc->initial;
   for (int i = 0; i < DV_NSCALES; i++) out->t[i] = INFINITY;
@@ -117,8 +146,6 @@ void dv_engine_scene_scales(const dv_scenario *sc, dv_scene_scales *out) {
                     isfinite(y[RED_VTH] + y[RED_VPH] + y[RED_VPS]);
   if (valid) {
     dv_error err;
-    const dv_reduced_settings *rs = dv_reference_settings(sc);
-    const double limit = rs ? rs->theta_limit : 0.01;
     out->t[DV_SCALE_SPIN] = period(y[RED_VPS]);
     out->t[DV_SCALE_TURNING] = period(y[RED_VPH]);
     if (red_theta_range(d, y, limit, out->theta_range, &out->falls, &err))

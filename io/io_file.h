@@ -24,6 +24,7 @@ typedef struct dv_io_file {
   char path[1024];     /* final name, "" for stdout */
   char tmp_path[1060]; /* temporary name while writing: DIR/.diskval-tmp.PID.XXXXXX (io_temp.h) */
   int direct;          /* a device or pipe: written in place */
+  char *buffer;        /* the stream's buffer, or NULL (stdio's own) */
 } dv_io_file;
 
 int dv_io_open(dv_io_file *out, const char *path, dv_error *err);

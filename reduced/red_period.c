@@ -34,6 +34,8 @@ struct red_period {
   double theta_lo, theta_hi; /* theta's range since t_a */
   double size[RED_NSTATE];   /* the largest |y| since t_a, per component */
   double T, dphi, dpsi;      /* the period, and what it adds to phi and psi */
+  double turn_k;             /* the periods the turn below is for (NAN: none yet) */
+  double turn[5];            /* cos, sin of k a and of (k - 1) a / 2, and |S_k| */
   char note[240];
 };
 
@@ -111,6 +113,7 @@ static void first_maximum(red_period *p, double t, const double *y) {
 int red_period_reset(red_period *p, double t0, const double y0[RED_NSTATE], dv_error *err) {
   p->n = 0;
   p->cached = 0;
+  p->turn_k = NAN;
   p->maxima = 0;
   p->status = RED_PERIOD_RECORDING;
   snprintf(p->note, sizeof p->note, "no fold: no period within the run");
@@ -271,13 +274,18 @@ int red_period_eval(red_period *p, double t, double y[RED_NSTATE]) {
   if (tau < p->t_a) tau += p->T, k -= 1.0; /* rounding at a period's edge */
   if (tau >= p->t_b) tau -= p->T, k += 1.0;
   recorded(p, tau, y);
-  const double a = remainder(p->dphi, 2.0 * M_PI), half = sin(0.5 * a);
-  const double sum = half == 0.0 ? k : sin(0.5 * k * a) / half; /* |S_k| */
+  if (!(k == p->turn_k)) { /* the samples of a period share one turn: five sines fewer a sample */
+    const double a = remainder(p->dphi, 2.0 * M_PI), half = sin(0.5 * a);
+    p->turn[4] = half == 0.0 ? k : sin(0.5 * k * a) / half; /* |S_k| */
+    p->turn[0] = cos(k * a), p->turn[1] = sin(k * a);
+    p->turn[2] = cos(0.5 * (k - 1.0) * a), p->turn[3] = sin(0.5 * (k - 1.0) * a);
+    p->turn_k = k;
+  }
+  const double sum = p->turn[4];
   const double dx = y[RED_X] - p->y_a[RED_X];
   const double dy = y[RED_Y] - p->y_a[RED_Y];
   const double bx = p->y_b[RED_X] - p->y_a[RED_X], by = p->y_b[RED_Y] - p->y_a[RED_Y];
-  const double c = cos(k * a), s = sin(k * a);
-  const double cs = cos(0.5 * (k - 1.0) * a), ss = sin(0.5 * (k - 1.0) * a);
+  const double c = p->turn[0], s = p->turn[1], cs = p->turn[2], ss = p->turn[3];
   y[RED_X] = p->y_a[RED_X] + c * dx - s * dy + sum * (cs * bx - ss * by);
   y[RED_Y] = p->y_a[RED_Y] + s * dx + c * dy + sum * (ss * bx + cs * by);
   y[RED_PH] += k * p->dphi;

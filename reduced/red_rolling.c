@@ -52,13 +52,12 @@ static void angle_rates(const frame *f, const double w[3], double rates[3]) {
   rates[2] = (wn - w[2] * f->c) / s2;
 }
 
-/* omega' and F with the contact on the given side */
-static int dynamics_on_side(const red_rolling *rr, const double *st, double side, double wdot[3],
-                            double force[3]) {
+/* omega' and F in the frame f of the contact */
+static int dynamics_in_frame(const red_rolling *rr, const double *st, const frame *frame_of_contact,
+                             double wdot[3], double force[3]) {
   const red_disk *dk = &rr->disk;
   const double *w = st + RR_WX, m = dk->m;
-  frame f;
-  frame_on_side(rr, st, side, &f);
+  const frame f = *frame_of_contact;
   if (!(f.s > 0.0)) return -1;
   double rates[3], ndot[3], rdot[3];
   angle_rates(&f, w, rates);
@@ -94,6 +93,14 @@ static int dynamics_on_side(const red_rolling *rr, const double *st, double side
     for (int i = 0; i < 3; i++) force[i] = m * (-wd_rho[i] - w_rdot[i] + (i == 2 ? dk->g : 0.0));
   }
   return isfinite(wdot[0] + wdot[1] + wdot[2]) ? 0 : -1;
+}
+
+/* omega' and F with the contact on the given side */
+static int dynamics_on_side(const red_rolling *rr, const double *st, double side, double wdot[3],
+                            double force[3]) {
+  frame f;
+  frame_on_side(rr, st, side, &f);
+  return dynamics_in_frame(rr, st, &f, wdot, force);
 }
 
 typedef struct side_probe {
@@ -276,21 +283,39 @@ void red_rolling_to_state(const double *st, double y[RED_NSTATE]) {
   y[RED_Y] = st[RR_Y];
 }
 
-double red_rolling_energy(const red_rolling *rr, const double *st) {
+static double energy_in_frame(const red_rolling *rr, const double *st, const frame *fp) {
   const red_disk *dk = &rr->disk;
   const double *w = st + RR_WX;
-  frame f;
+  const frame f = *fp;
   double v[3];
-  make_frame(rr, st, &f);
   red_cross(w, f.rho, v);
   const double wn = red_dot(w, f.n);
   const double rot = dk->A * red_dot(w, w) + (dk->C - dk->A) * wn * wn;
   return 0.5 * dk->m * red_dot(v, v) + 0.5 * rot - dk->m * dk->g * f.rho[2];
 }
 
+double red_rolling_energy(const red_rolling *rr, const double *st) {
+  frame f;
+  make_frame(rr, st, &f);
+  return energy_in_frame(rr, st, &f);
+}
+
+static void contact_in_frame(const double *st, const frame *f, double p[2]) {
+  p[0] = st[RR_X] + f->rho[0];
+  p[1] = st[RR_Y] + f->rho[1];
+}
+
 void red_rolling_contact_point(const red_rolling *rr, const double *st, double p[2]) {
   frame f;
   make_frame(rr, st, &f);
-  p[0] = st[RR_X] + f.rho[0];
-  p[1] = st[RR_Y] + f.rho[1];
+  contact_in_frame(st, &f, p);
+}
+
+int red_rolling_observe(const red_rolling *rr, const double *st, double p[2], double *energy,
+                        double omega_dot[3], double force[3]) {
+  frame f;
+  make_frame(rr, st, &f);
+  contact_in_frame(st, &f, p);
+  *energy = energy_in_frame(rr, st, &f);
+  return dynamics_in_frame(rr, st, &f, omega_dot, force);
 }

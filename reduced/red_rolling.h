@@ -76,4 +76,9 @@ double red_rolling_energy(const red_rolling *rr, const double *s);
 /* contact point G + rho on the ground (m) */
 void red_rolling_contact_point(const red_rolling *rr, const double *s, double p[2]);
 
+/* the contact point, the energy, omega' and F at s from one frame, each as
+ * the functions above give it; returns red_rolling_dynamics's status */
+int red_rolling_observe(const red_rolling *rr, const double *s, double p[2], double *energy,
+                        double omega_dot[3], double force[3]);
+
 #endif

@@ -73,7 +73,7 @@ static int matched_advance(void *p, double t, dv_sample *out, dv_error *err) {
     red_rolling_to_state(s, y);
     if (y[RED_VTH] != 0.0) s[RR_TH] = M_PI_2 - copysign(1e-15, y[RED_VTH]);
   }
-  dv_reference_sample(&e->rr, s, out);
+  dv_reference_sample(&e->rr, s, NULL, out);
   return status;
 }
 

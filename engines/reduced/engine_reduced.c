@@ -92,8 +92,7 @@ static int reduced_advance(void *p, double t, dv_sample *out, dv_error *err) {
     status = red_integrator_advance(e->in, t, &out->t, y, &e->event, err);
   if (e->event >= 0 && isnan(e->t_event)) e->t_event = out->t;
   red_rolling_from_state(&e->thin, y, s);
-  dv_reference_sample(&e->thin, s, out);
-  memcpy(out->y, y, sizeof y); /* exactly the integrated state, not its round trip */
+  dv_reference_sample(&e->thin, s, y, out); /* exactly the integrated state, not its round trip */
   return status;
 }
 

@@ -6,6 +6,7 @@
  *     curvature route, spin and turning periods, the fall time; a fall has
  *     no wobble; a state the reduced equations cannot take keeps the fall
  *     time and the duration.
+ * (a') the scales kept for the last scene: every input changed alone is seen.
  * (b) the derivation: a step that fits output_dt, a reason for each engine,
  *     an explicit value (file or --set) kept without a reason, a timestep
  *     longer than output_dt replaced by output_dt with a reason, the cost
@@ -117,6 +118,38 @@ static void check_scales(void) {
   dv_engine_scene_scales(&sc, &s);
   CHECK(isinf(s.t[DV_SCALE_SPIN]) && isinf(s.t[DV_SCALE_WOBBLE]) && isfinite(s.t[DV_SCALE_FALL]),
         "no state: fall time only");
+}
+
+/* (a') the scales are kept for the last scene asked about: each input, changed
+ * alone between two calls, changes what it sets, and the first scene asked
+ * again gets its first answer (exact: the same computation) */
+static void check_kept(void) {
+  const double fall[RED_NSTATE] = {M_PI / 2 - 0.1, 0, 0, 0, 0, 0, 0, 0};
+  dv_scenario a = scene(fall, 3.0), b;
+  dv_scene_scales first, s, again;
+  dv_engine_scene_scales(&a, &first);
+  dv_engine_scene_scales(&a, &s); /* each change right after the first scene */
+  b = a, b.duration = 4.0;
+  dv_engine_scene_scales(&b, &s);
+  CHECK(s.t[DV_SCALE_DURATION] == 4.0, "kept: duration %g after 3 s", s.t[DV_SCALE_DURATION]);
+  dv_engine_scene_scales(&a, &s);
+  b = a, b.initial[RED_VPS] = 10.0;
+  dv_engine_scene_scales(&b, &s);
+  CHECK(s.t[DV_SCALE_SPIN] == 2.0 * M_PI / 10.0, "kept: spin period %g at psi' 10",
+        s.t[DV_SCALE_SPIN]);
+  dv_engine_scene_scales(&a, &s);
+  b = a, b.disk.r = 0.2;
+  dv_engine_scene_scales(&b, &s);
+  CHECK(s.t[DV_SCALE_FALL] == sqrt(0.2 / 9.81), "kept: fall time %g at r 0.2", s.t[DV_SCALE_FALL]);
+  dv_engine_scene_scales(&a, &s);
+  b = a;
+  CHECK(dv_scenario_set_number(&b, "reduced", "theta_limit", 0.05, NULL) == DV_OK, "theta_limit");
+  dv_engine_scene_scales(&b, &s);
+  CHECK(s.falls && s.theta_range[0] == 0.05 && first.theta_range[0] == 0.01,
+        "kept: lying-down limit %g after %g", s.theta_range[0], first.theta_range[0]);
+  dv_engine_scene_scales(&a, &again);
+  CHECK(!memcmp(first.t, again.t, sizeof first.t) && first.shortest == again.shortest,
+        "kept: the first scene's scales again");
 }
 
 /* load name from the scenario directory with overrides */
@@ -243,6 +276,7 @@ int main(int argc, char **argv) {
   if (argc < 2) return fprintf(stderr, "usage: test_scene SCENARIO_DIR\n"), 2;
   dir = argv[1];
   check_scales();
+  check_kept();
   check_derivation();
   check_accuracy();
   return TEST_RESULT();

@@ -258,9 +258,9 @@ static void test_precision(void) {
       case 1:
         v = (i % 2 ? 1 : -1) * pow(10, 40 * uniform() - 20);
         break;
-      default:
-        v = 1e-4 * (double)(i / 3);
-        break; /* times on a fine grid */
+      default: /* times on a fine grid; short digits at every exponent */
+        v = i % 2 ? 1e-4 * (double)(i / 3) : (double)(i % 997) * pow(10, i % 37 - 12);
+        break;
     }
     if (isnan(v)) continue;
     for (size_t d = 0; d < sizeof digits / sizeof *digits; d++) {
