@@ -116,8 +116,8 @@ void dv_search_attribute_base(dv_attribution *out, const double *metric, const d
 
 /* the knobs engine declares, changed alone against out's base: those named in
  * first[0..nfirst) in that order, then the rest as declared. With a budget
- * (runs of the scene's cost), quick: the first knob always, the next while the
- * budget lasts, none after one removes the error (out->untried names the
+ * (runs of the scene's cost), quick: the first knob always, the next while their
+ * runs fit in the budget, none after one removes the error (out->untried names the
  * rest); NULL: every knob. extra ("section.key=value", e.g. a short window) is
  * added to every knob's run (NULL: none). With DV_CAUSE_TRACE set, each knob
  * run is a line on stderr ("cause trace: ...") */
@@ -129,8 +129,8 @@ int dv_search_attribute_knobs_try(const struct dv_scenario *sc,
 /* how compare and suite search an engine's cause (--cause) */
 typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } dv_cause_mode;
 
-/* quick's budget: knob runs after the first, in runs of the whole scene (a
- * knob over a short window costs its share of one) */
+/* quick's budget: the knob runs after the first knob's, in runs of the whole
+ * scene (a knob over a short window costs its share of one) */
 #define DV_CAUSE_QUICK_BUDGET 1.0
 
 /* the knobs the failure's signature points to, most likely first, into

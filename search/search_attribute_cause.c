@@ -104,8 +104,17 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   dv_search_attribute_base(out, r->vs_ref.value, r->tolerance,
                            out->own_reference ? r->vs_ref.value[DV_THETA_MAX_ERR]
                                               : r->vs_thin.value[DV_THETA_MAX_ERR]);
-  const char *first[1];
-  const size_t nfirst = out->quick ? dv_search_cause_signature(c, r, first, 1) : 0;
+  const char *first[1] = {NULL};
+  const size_t nsig = dv_search_cause_signature(c, r, first, 1);
+  const size_t nfirst = out->quick ? nsig : 0;
+  if (getenv("DV_CAUSE_TRACE") && *getenv("DV_CAUSE_TRACE"))
+    fprintf(stderr,
+            "cause trace: %s: signature: energy %.3g, slip %.3g of their limits, penetration "
+            "%.3g r, failure %d: %s first\n",
+            engine->name, r->vs_ref.value[DV_ENERGY_DRIFT] / r->tolerance[DV_ENERGY_DRIFT],
+            r->vs_ref.value[DV_SLIP_MAX] / r->tolerance[DV_SLIP_MAX],
+            r->stats.penetration_max / sc->disk.r, (int)r->stats.failure,
+            nsig ? first[0] : "nothing");
   char extra[64] = "";
   const double end = out->quick && out->judged ? short_window(c, r, out->judged) : 0.0;
   if (end > 0.0) {

@@ -205,11 +205,11 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
   out->nknobs = 0;
   out->cause = -1;
   out->untried[0] = '\0';
-  double spent = 0.0;
+  double spent = 0.0, after_first = 0.0;
   for (size_t j = 0; j < n; j++) {
     const knob *kj = &kn[order[j]];
     /* quick: the first knob always, the next ones while the budget lasts */
-    const int over_budget = budget && j > 0 && spent + fmax(kj->cost, 1.0) > *budget;
+    const int over_budget = budget && j > 0 && after_first + fmax(kj->cost, 1.0) > *budget;
     if (over_budget || (budget && out->cause >= 0)) {
       const size_t len = strlen(out->untried);
       if (!strstr(out->untried, kj->name) && len < sizeof out->untried)
@@ -218,6 +218,7 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
       continue;
     }
     spent += fmax(kj->cost, 1.0);
+    if (j > 0) after_first += fmax(kj->cost, 1.0);
     dv_knob_probe *k = &out->knobs[out->nknobs];
     const char *over[4] = {kj->over[0], kj->over[1], kj->over[2], NULL};
     size_t nover = kj->n;
