@@ -119,12 +119,14 @@ void dv_search_attribute_base(dv_attribution *out, const double *metric, const d
  * (runs of the scene's cost), quick: the first knob always, the next while their
  * runs fit in the budget, none after one removes the error (out->untried names the
  * rest); NULL: every knob. extra ("section.key=value", e.g. a short window) is
- * added to every knob's run (NULL: none). With DV_CAUSE_TRACE set, each knob
+ * added to every knob's run (NULL: none); out's base is then the window's, and
+ * a knob that removes the error there runs again without it against whole's
+ * base (the whole run's), the cause only if it removes that too. With DV_CAUSE_TRACE set, each knob
  * run is a line on stderr ("cause trace: ...") */
 int dv_search_attribute_knobs_try(const struct dv_scenario *sc,
                                   const struct dv_engine_type *engine, const char *const *first,
                                   size_t nfirst, const double *budget, const char *extra,
-                                  dv_attribution *out, dv_error *err);
+                                  const dv_attribution *whole, dv_attribution *out, dv_error *err);
 
 /* how compare and suite search an engine's cause (--cause) */
 typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } dv_cause_mode;

@@ -116,6 +116,8 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
             r->stats.penetration_max / sc->disk.r, (int)r->stats.failure,
             nsig ? first[0] : "nothing");
   char extra[64] = "";
+  static dv_attribution whole; /* the whole run's base, where the knobs run over a window */
+  whole = *out;
   const double end = out->quick && out->judged ? short_window(c, r, out->judged) : 0.0;
   if (end > 0.0) {
     snprintf(extra, sizeof extra, "scenario.duration=%.9g", end);
@@ -133,5 +135,6 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   snprintf(basis, sizeof basis, "its own run took %.3g s", r->wall_s);
   dv_run_progress_announce(what, runs * r->wall_s, basis);
   return dv_search_attribute_knobs_try(sc, engine, first, nfirst, out->quick ? &budget : NULL,
-                                       extra[0] ? extra : NULL, out, err);
+                                       extra[0] ? extra : NULL, extra[0] ? &whole : NULL, out,
+                                       err);
 }

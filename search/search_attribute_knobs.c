@@ -164,7 +164,7 @@ int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv
   if (dv_search_sweep_probe(sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
   dv_search_attribute_base(out, p.metric, p.limit,
                            out->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin);
-  return dv_search_attribute_knobs_try(sc, engine, NULL, 0, NULL, NULL, out, err);
+  return dv_search_attribute_knobs_try(sc, engine, NULL, 0, NULL, NULL, NULL, out, err);
 }
 
 void dv_search_attribute_base(dv_attribution *out, const double *metric, const double *limit,
@@ -195,7 +195,8 @@ static void trace(const dv_engine_type *engine, const dv_knob_probe *k, const ch
 
 int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *engine,
                                   const char *const *first, size_t nfirst, const double *budget,
-                                  const char *extra, dv_attribution *out, dv_error *err) {
+                                  const char *extra, const dv_attribution *whole,
+                                  dv_attribution *out, dv_error *err) {
   knob kn[DV_MAX_KNOBS];
   const size_t n = declare(sc, engine, kn);
   size_t order[DV_MAX_KNOBS], m = 0;
@@ -206,6 +207,8 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
   out->cause = -1;
   out->untried[0] = '\0';
   double spent = 0.0, after_first = 0.0;
+  dv_attribution w; /* the window's base, where knobs run over one */
+  if (whole) w = *out;
   for (size_t j = 0; j < n; j++) {
     const knob *kj = &kn[order[j]];
     /* quick: the first knob always, the next ones while the budget lasts */
@@ -229,6 +232,21 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
     if (run_knob(sc, engine->name, over, nover, out->own_reference, k, err)) return DV_EINPUT;
     judge(out, k);
     trace(engine, k, extra);
+    /* removed over a short window: it names the cause only if it removes the whole run's error */
+    if (k->removes && whole) {
+      out->base_theta_thin = whole->base_theta_thin, out->judged = whole->judged;
+      memcpy(out->base, whole->base, sizeof out->base);
+      memcpy(out->limit, whole->limit, sizeof out->limit);
+      if (run_knob(sc, engine->name, over, kj->n, out->own_reference, k, err)) return DV_EINPUT;
+      judge(out, k);
+      trace(engine, k, NULL);
+      if (!k->removes) { /* back to the window's base for the next knob */
+        out->base_theta_thin = w.base_theta_thin, out->judged = w.judged;
+        memcpy(out->base, w.base, sizeof out->base);
+        memcpy(out->limit, w.limit, sizeof out->limit);
+      } else
+        out->window = 0.0; /* the numbers named are the whole run's */
+    }
     if (k->removes && (out->cause < 0 || k->worst < out->knobs[out->cause].worst))
       out->cause = (int)out->nknobs;
     out->nknobs++;
@@ -266,7 +284,7 @@ static void quick_tried(const dv_attribution *a, char *out, size_t size) {
   for (int i = 0; i < a->cause && n > 0 && (size_t)n < size; i++)
     n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
   if (a->window > 0.0 && n > 0 && (size_t)n < size)
-    n += snprintf(out + n, size - (size_t)n, " (quick, over the first %.3g s;", a->window);
+    n += snprintf(out + n, size - (size_t)n, " (quick;");
   else if (n > 0 && (size_t)n < size)
     n += snprintf(out + n, size - (size_t)n, " (quick;");
   if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " --cause full tries all)");
@@ -284,7 +302,7 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
     if (n > 0 && (size_t)n < size)
       n += snprintf(out + n, size - (size_t)n, " (quick");
     if (a->window > 0.0 && n > 0 && (size_t)n < size)
-      n += snprintf(out + n, size - (size_t)n, ", over the first %.3g s", a->window);
+      n += snprintf(out + n, size - (size_t)n, ", each over the first %.3g s", a->window);
     if (n > 0 && (size_t)n < size)
       snprintf(out + n, size - (size_t)n, "; --cause full tries %s)", a->untried);
     return;
