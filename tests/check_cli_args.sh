@@ -64,8 +64,8 @@ expect "unexpected argument 'extra'" best "$sc" extra --engine mujoco --theta-to
 expect "unexpected argument 'extra'" sweep "$sc" extra --engine mujoco --vary timestep=1e-3
 expect "unexpected argument 'y'" map x y
 expect "unexpected argument 'x'" engines x
-expect "^diskval compare: --cause bogus: full or none" compare "$sc" --cause bogus
-expect "^diskval suite: --cause bogus: full or none" suite "$sc" --cause bogus
+expect "^diskval compare: --cause bogus: quick, full or none" compare "$sc" --cause bogus
+expect "^diskval suite: --cause bogus: quick, full or none" suite "$sc" --cause bogus
 expect "unknown option '--bogus'" simulate "$sc" --engine reduced --bogus
 expect "unknown option '--jobs'" compare "$sc" --jobs 2
 expect "--engine needs a value" simulate "$sc" --engine
