@@ -277,12 +277,20 @@ static int metric_change(int m, double a, double b, char *buf, size_t size) {
   return snprintf(buf, size, "%s %.3g -> %.3g", dv_metric_names[m], a, b);
 }
 
+/* is knob i's name among knobs[0..before) (an integrator tried to each value) */
+static int tried_before(const dv_attribution *a, size_t i, size_t before) {
+  for (size_t j = 0; j < before; j++)
+    if (strcmp(a->knobs[j].knob, a->knobs[i].knob) == 0) return 1;
+  return 0;
+}
+
 /* quick's found cause: which of the knobs tried it was, and over what */
 static void quick_tried(const dv_attribution *a, char *out, size_t size) {
   int n = a->cause == 0 ? snprintf(out, size, ", the first of the knobs tried")
                         : snprintf(out, size, ", the knob tried after ");
   for (int i = 0; i < a->cause && n > 0 && (size_t)n < size; i++)
-    n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
+    if (!tried_before(a, (size_t)i, (size_t)i))
+      n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
   if (a->window > 0.0 && n > 0 && (size_t)n < size)
     n += snprintf(out + n, size - (size_t)n, " (quick;");
   else if (n > 0 && (size_t)n < size)
@@ -298,7 +306,8 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
   if (a->cause < 0 && a->untried[0]) { /* quick stopped short of every knob */
     int n = snprintf(out, size, "not found among ");
     for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
-      n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
+      if (!tried_before(a, i, i))
+        n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
     if (n > 0 && (size_t)n < size)
       n += snprintf(out + n, size - (size_t)n, " (quick");
     if (a->window > 0.0 && n > 0 && (size_t)n < size)
