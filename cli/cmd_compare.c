@@ -23,8 +23,8 @@ static const char HELP[] =
     "probed cost is more than twice S is not started. Default 0: no limit.\n"
     "--cause quick (default): each failing engine's cause, the knob whose change alone\n"
     "removes its error: the knob its failure points to first (energy: the integrator;\n"
-    "penetration: the contact; slip: the friction; else the step), over the window where\n"
-    "the error appears, stopping at the first that removes it (about one run more);\n"
+    "penetration: the contact; slip: the friction; else the integrator or the step), over\n"
+    "the window where the error appears, stopping at the first that removes it;\n"
     "full: every knob over the whole scene (diskval attribute); none: no cause searched.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";

@@ -138,7 +138,8 @@ typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } 
 /* the knobs the failure's signature points to, most likely first, into
  * first[0..max): energy over its limit -> the choice (integrator, stepper);
  * penetration or a contact failure -> contact softness; slip over its limit
- * -> friction; else (an error that should fall with the step) -> the step */
+ * -> friction; else the time integrator where the choice is one (MuJoCo's,
+ * Simbody's), else (an error that should fall with the step) the step */
 struct dv_comparison;
 struct dv_engine_result;
 size_t dv_search_cause_signature(const struct dv_comparison *c, const struct dv_engine_result *r,

@@ -36,6 +36,8 @@ size_t dv_search_cause_signature(const dv_comparison *c, const dv_engine_result 
     first[0] = "contact softness";
   else if (over(r, DV_SLIP_MAX))
     first[0] = "friction";
+  else if (se->choice_key && strcmp(se->choice_key, "integrator") == 0)
+    first[0] = se->choice_key; /* a time integrator: where MuJoCo's failures were removed */
   else
     first[0] = se->step_key;
   return 1;

@@ -6,8 +6,9 @@
 # causes differ, made short (re-run: the commands below with DV_CAUSE_TRACE=1):
 #   integrator  MuJoCo rk4 over 0.5 s, path limit 4e-4 m: path 9.18e-4 m;
 #               full: euler 3.58e-4, implicit 1.01e-4 remove it, the step
-#               /4 leaves worst 2.29; quick tries the step (its signature:
-#               nothing over but the path), then the integrator: 2 runs, full 5
+#               /4 leaves worst 2.29; quick tries the integrator first (its
+#               signature: nothing over but the path, and a time integrator
+#               to choose): euler removes it, 1 run, full 5
 #   timestep    Bullet at 1.6e-4 s over 1 s: theta 3.16e-3 > 1e-3 rad, energy
 #               0.59 % of 1 %; full: only the step /4 removes it (worst 0.79,
 #               body 6.37); quick tries it first: 1 run, full 4
