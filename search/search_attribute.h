@@ -121,7 +121,8 @@ void dv_search_attribute_base(dv_attribution *out, const double *metric, const d
  * rest); NULL: every knob. extra ("section.key=value", e.g. a short window) is
  * added to every knob's run (NULL: none); out's base is then the window's, and
  * a knob that removes the error there runs again without it against whole's
- * base (the whole run's), the cause only if it removes that too. With DV_CAUSE_TRACE set, each knob
+ * base (the whole run's), the cause only if it removes that too (that run
+ * counts against the budget). With DV_CAUSE_TRACE set, each knob
  * run is a line on stderr ("cause trace: ...") */
 int dv_search_attribute_knobs_try(const struct dv_scenario *sc,
                                   const struct dv_engine_type *engine, const char *const *first,

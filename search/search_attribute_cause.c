@@ -130,7 +130,11 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   const double share = out->window > 0.0 ? out->window / r->vs_ref.t_window : 1.0;
   const double budget = DV_CAUSE_QUICK_BUDGET / fmax(share, 1e-3);
   const double full = dv_search_attribute_knobs_cost(sc, engine) - 1.0;
-  const double runs = out->quick ? fmin(full, share * (4.0 + DV_CAUSE_QUICK_BUDGET)) : full;
+  /* quick: its first knob (a step /4 at most), the budget and, over a window,
+   * the whole run of the knob that removed the error there */
+  const double runs =
+      out->quick ? fmin(full, share * 4.0 + DV_CAUSE_QUICK_BUDGET + (share < 1.0 ? 4.0 : 0.0))
+                 : full;
   char what[128], basis[96];
   snprintf(what, sizeof what, "%.40s: %s: its cause (%s%.0f runs' worth)", sc->name, engine->name,
            out->quick ? "quick, at most " : "", ceil(runs));

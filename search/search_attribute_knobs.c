@@ -240,6 +240,8 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
       if (run_knob(sc, engine->name, over, kj->n, out->own_reference, k, err)) return DV_EINPUT;
       judge(out, k);
       trace(engine, k, NULL);
+      /* the whole run counts against the budget: one that keeps the error ends quick */
+      if (budget) after_first += fmax(kj->cost, 1.0) * *budget / DV_CAUSE_QUICK_BUDGET;
       if (!k->removes) { /* back to the window's base for the next knob */
         out->base_theta_thin = w.base_theta_thin, out->judged = w.judged;
         memcpy(out->base, w.base, sizeof out->base);
