@@ -286,18 +286,14 @@ static int tried_before(const dv_attribution *a, size_t i, size_t before) {
   return 0;
 }
 
-/* quick's found cause: which of the knobs tried it was, and over what */
+/* quick's found cause: which of the knobs tried it was (its numbers are the whole run's) */
 static void quick_tried(const dv_attribution *a, char *out, size_t size) {
   int n = a->cause == 0 ? snprintf(out, size, ", the first of the knobs tried")
                         : snprintf(out, size, ", the knob tried after ");
   for (int i = 0; i < a->cause && n > 0 && (size_t)n < size; i++)
     if (!tried_before(a, (size_t)i, (size_t)i))
       n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
-  if (a->window > 0.0 && n > 0 && (size_t)n < size)
-    n += snprintf(out + n, size - (size_t)n, " (quick;");
-  else if (n > 0 && (size_t)n < size)
-    n += snprintf(out + n, size - (size_t)n, " (quick;");
-  if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " --cause full tries all)");
+  if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " (quick; --cause full tries all)");
 }
 
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
