@@ -69,9 +69,9 @@ typedef struct dv_attribution {
   /* quick (dv_search_cause): knobs in the signature's order, stopped at the first
    * that removes the error or at the budget */
   int quick;
-  double window;      /* s: base and knobs measured from the start to here; 0: the whole scene */
-  double runs_spent;  /* the knob runs made, in runs of the scene (or of its window) */
-  char untried[160];  /* the knobs quick did not try, "" */
+  double window;     /* s: base and knobs measured from the start to here; 0: the whole scene */
+  double runs_spent; /* the knob runs made, in runs of the scene (or of its window) */
+  char untried[160]; /* the knobs quick did not try, "" */
 } dv_attribution;
 
 /* a scenario and an engine to probe with overrides */
@@ -124,10 +124,10 @@ void dv_search_attribute_base(dv_attribution *out, const double *metric, const d
  * base (the whole run's), the cause only if it removes that too (that run
  * counts against the budget). With DV_CAUSE_TRACE set, each knob
  * run is a line on stderr ("cause trace: ...") */
-int dv_search_attribute_knobs_try(const struct dv_scenario *sc,
-                                  const struct dv_engine_type *engine, const char *const *first,
-                                  size_t nfirst, const double *budget, const char *extra,
-                                  const dv_attribution *whole, dv_attribution *out, dv_error *err);
+int dv_search_attribute_knobs_try(const struct dv_scenario *sc, const struct dv_engine_type *engine,
+                                  const char *const *first, size_t nfirst, const double *budget,
+                                  const char *extra, const dv_attribution *whole,
+                                  dv_attribution *out, dv_error *err);
 
 /* how compare and suite search an engine's cause (--cause) */
 typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } dv_cause_mode;

@@ -67,8 +67,10 @@ static double short_window(const dv_comparison *c, const dv_engine_result *r, un
   size_t lo = 0, hi = r->traj.n - 1; /* failing by sample hi, not by lo */
   while (hi - lo > 1) {
     const size_t mid = lo + (hi - lo) / 2;
-    if (failing_by(r, ref, judged, r->traj.s[mid].t)) hi = mid;
-    else lo = mid;
+    if (failing_by(r, ref, judged, r->traj.s[mid].t))
+      hi = mid;
+    else
+      lo = mid;
   }
   const double t_fail = r->traj.s[hi].t;
   const double end = t_fail + fmax(MARGIN * t_fail, 2.0 * c->min_window);
@@ -100,12 +102,12 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   memset(out, 0, sizeof *out);
   out->cause = -1;
   out->timestep = dv_scenario_get(sc, engine->name, engine->search->step_key);
-  out->own_reference = (sc->thickness > 0.0 && dv_engine_own_body(engine, sc)) ||
-                       !engine->contact->thin_choice;
+  out->own_reference =
+      (sc->thickness > 0.0 && dv_engine_own_body(engine, sc)) || !engine->contact->thin_choice;
   out->quick = mode == DV_CAUSE_QUICK;
-  dv_search_attribute_base(out, r->vs_ref.value, r->tolerance,
-                           out->own_reference ? r->vs_ref.value[DV_THETA_MAX_ERR]
-                                              : r->vs_thin.value[DV_THETA_MAX_ERR]);
+  dv_search_attribute_base(
+      out, r->vs_ref.value, r->tolerance,
+      out->own_reference ? r->vs_ref.value[DV_THETA_MAX_ERR] : r->vs_thin.value[DV_THETA_MAX_ERR]);
   const char *first[1] = {NULL};
   const size_t nsig = dv_search_cause_signature(c, r, first, 1);
   const size_t nfirst = out->quick ? nsig : 0;
@@ -141,6 +143,5 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   snprintf(basis, sizeof basis, "its own run took %.3g s", r->wall_s);
   dv_run_progress_announce(what, runs * r->wall_s, basis);
   return dv_search_attribute_knobs_try(sc, engine, first, nfirst, out->quick ? &budget : NULL,
-                                       extra[0] ? extra : NULL, extra[0] ? &whole : NULL, out,
-                                       err);
+                                       extra[0] ? extra : NULL, extra[0] ? &whole : NULL, out, err);
 }

@@ -106,7 +106,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
     const double v = dv_scenario_get(sc, name, k->extra[x].key);
     const char *now_text =
         sp && sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
-    if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue; /* already so */
+    if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue;           /* already so */
     if (se->choice_key && strcmp(k->extra[x].key, se->choice_key) == 0) continue; /* turned above */
     kn[n] = (knob){k->extra[x].what, "", {""}, 1, 1.0};
     if (now_text)
@@ -216,8 +216,7 @@ int dv_search_attribute_knobs_try(const dv_scenario *sc, const dv_engine_type *e
     if (over_budget || (budget && out->cause >= 0)) {
       const size_t len = strlen(out->untried);
       if (!strstr(out->untried, kj->name) && len < sizeof out->untried)
-        snprintf(out->untried + len, sizeof out->untried - len, "%s%s", len ? ", " : "",
-                 kj->name);
+        snprintf(out->untried + len, sizeof out->untried - len, "%s%s", len ? ", " : "", kj->name);
       continue;
     }
     spent += fmax(kj->cost, 1.0);
@@ -293,7 +292,8 @@ static void quick_tried(const dv_attribution *a, char *out, size_t size) {
   for (int i = 0; i < a->cause && n > 0 && (size_t)n < size; i++)
     if (!tried_before(a, (size_t)i, (size_t)i))
       n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
-  if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, " (quick; --cause full tries all)");
+  if (n > 0 && (size_t)n < size)
+    snprintf(out + n, size - (size_t)n, " (quick; --cause full tries all)");
 }
 
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
@@ -306,8 +306,7 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
     for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
       if (!tried_before(a, i, i))
         n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
-    if (n > 0 && (size_t)n < size)
-      n += snprintf(out + n, size - (size_t)n, " (quick");
+    if (n > 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, " (quick");
     if (a->window > 0.0 && n > 0 && (size_t)n < size)
       n += snprintf(out + n, size - (size_t)n, ", each over the first %.3g s", a->window);
     if (n > 0 && (size_t)n < size)
