@@ -12,6 +12,11 @@
 #   timestep    Bullet at 1.6e-4 s over 1 s: theta 3.16e-3 > 1e-3 rad, energy
 #               0.59 % of 1 %; full: only the step /4 removes it (worst 0.79,
 #               body 6.37); quick tries it first: 1 run, full 4
+#   window      the same Bullet over the scene's 3 s: theta 9.38e-3 rad, from
+#               0.36 s; full: no knob removes it (the step /4 leaves worst
+#               3.87); quick over the first 0.536 s: the step /4 removes that
+#               window's error (worst 0.392) but not the whole run's, which it
+#               then runs: no cause named, as full
 set -u
 . "$(dirname "$0")/check_lib.sh"
 diskval=$1 saucer=$2
@@ -45,6 +50,16 @@ for name in mujoco bullet; do
     "$name: quick does not say what it tried: $(cat "$work/$name.quick.out")"
 done
 check '[ "$(runs bullet.quick)" -eq 1 ]' "bullet: the step is not tried first: $(cat "$work/bullet.quick.err")"
+# a knob that removes the error over the short window only is no cause
+window=(--engines bullet --set engines.bullet.timestep=1.6e-4)
+run window full "${window[@]}"
+run window quick "${window[@]}"
+check 'grep -q "; cause: none of the knobs removes it" "$work/window.full.out"' \
+  "full, window: $(cat "$work/window.full.out")"
+check 'grep -q "^cause trace: bullet: timestep .* with scenario.duration=0\.5[0-9]*: .*removes it" "$work/window.quick.err"' \
+  "quick did not try the step over the first half second: $(cat "$work/window.quick.err")"
+check 'grep -q "; cause: not found among .*(quick, each over the first 0\.5[0-9]* s" "$work/window.quick.out"' \
+  "quick names a cause full does not: $(cat "$work/window.quick.out")"
 run bullet none "${bullet[@]}"
 check '[ "$(runs bullet.none)" -eq 0 ] && grep -q "; cause: not searched (--cause none)" "$work/bullet.none.out"' \
   "--cause none: $(cat "$work/bullet.none.out" "$work/bullet.none.err")"
