@@ -51,8 +51,10 @@ int dv_cli_load_scenario(const char *command, const char *path, const struct dv_
 /* the report layer's explainer of an engine's excess: attribution of the
  * scenario as the command loaded it (its --set overrides applied: sets is
  * kept for the callers, the file is not read again) */
-/* mode: --cause's value (NULL: full): "full" runs attribution on every failing
- * engine, "none" runs none and says so; another is a usage error (exit 2) */
+/* mode: --cause's value (NULL: quick): "quick" tries each failing engine's
+ * knobs in the order its failure points to and stops at the first that
+ * removes the error, "full" tries every knob, "none" runs none and says so;
+ * another is a usage error (exit 2) */
 struct dv_report_explain;
 int dv_cli_explainer(const char *command, const char *mode, const struct dv_cli_list *sets,
                      struct dv_report_explain *out);

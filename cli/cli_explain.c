@@ -8,14 +8,13 @@
 #include "run_scenario.h"
 #include "search_attribute.h"
 
-/* dv_report_explain's cause: the dominant share of the engine's attribution */
+/* dv_report_explain's cause: the knob whose change removes the engine's
+ * excess, searched from the comparison's own run (ctx: the dv_cause_mode) */
 static int attribute(void *ctx, const dv_scenario *sc, const dv_comparison *c,
                      const dv_engine_result *r, char *out, size_t size) {
-  dv_attribution a;
+  static dv_attribution a; /* large: not on the stack */
   dv_error err = {{0}};
-  (void)ctx;
-  /* the comparison's references serve every probe: they do not depend on the engine's settings */
-  if (dv_search_attribute_in(c, sc, r->engine->name, &a, &err)) {
+  if (dv_search_cause(sc, c, r, *(const dv_cause_mode *)ctx, &a, &err)) {
     snprintf(out, size, "unknown (%s)", err.msg);
     return 0;
   }
@@ -33,10 +32,15 @@ static int not_searched(void *ctx, const dv_scenario *sc, const dv_comparison *c
 
 int dv_cli_explainer(const char *command, const char *mode, const dv_cli_list *sets,
                      dv_report_explain *out) {
-  out->ctx = (void *)sets;
+  static const dv_cause_mode quick = DV_CAUSE_QUICK, full = DV_CAUSE_FULL;
+  (void)sets;
   out->cause = attribute;
-  if (!mode || strcmp(mode, "full") == 0) return DV_OK;
+  out->ctx = (void *)&quick;
+  if (!mode || strcmp(mode, "quick") == 0) return DV_OK;
+  out->ctx = (void *)&full;
+  if (strcmp(mode, "full") == 0) return DV_OK;
   out->cause = not_searched;
+  out->ctx = NULL;
   if (strcmp(mode, "none") == 0) return DV_OK;
-  return dv_cli_usage_error(command, "--cause %s: full or none", mode);
+  return dv_cli_usage_error(command, "--cause %s: quick, full or none", mode);
 }

@@ -13,7 +13,7 @@
 
 static const char HELP[] =
     "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S] [--jobs N]\n"
-    "                       [--cause full|none] [--set section.key=value]...\n"
+    "                       [--cause quick|full|none] [--set section.key=value]...\n"
     "\n"
     "Run SCENARIO in the engines (default: every contact engine) and in the references, compare\n"
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
@@ -24,8 +24,11 @@ static const char HELP[] =
     "--jobs N: run the engines (each with its settings probes), the references, then the\n"
     "failing engines' causes in up to N processes (default: the cores); the report is the\n"
     "same whatever N.\n"
-    "--cause full (default): each failing engine's cause, by turning each of its knobs alone\n"
-    "(diskval attribute); none: no cause searched, the report says so.\n"
+    "--cause quick (default): each failing engine's cause, the knob whose change alone\n"
+    "removes its error: the knob its failure points to first (energy: the integrator;\n"
+    "penetration: the contact; slip: the friction; else the integrator or the step), over\n"
+    "the window where the error appears, stopping at the first that removes it;\n"
+    "full: every knob over the whole scene (diskval attribute); none: no cause searched.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
 

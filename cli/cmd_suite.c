@@ -25,7 +25,7 @@
 
 static const char HELP[] =
     "usage: diskval suite DIR|FILES... [--out DIR] [--junit FILE] [--jobs N] [--engines LIST]\n"
-    "                     [--timeout S] [--cause full|none] [--stability | --verify]\n"
+    "                     [--timeout S] [--cause quick|full|none] [--stability | --verify]\n"
     "\n"
     "Compare every scenario (the *.ini files of each DIR, and each FILE) as diskval\n"
     "compare does, N at a time in separate processes (default: the number of cores),\n"
@@ -42,7 +42,8 @@ static const char HELP[] =
     "scenario (as diskval verify does): DIR/verify.md, DIR/verify.json and the JUnit XML,\n"
     "a failure wherever an engine does not converge to the reference. One of the two:\n"
     "both together are refused.\n"
-    "--cause: as compare's (full: each failing engine's cause; none: no cause searched).\n"
+    "--cause: as compare's (quick, the default: the knob the failure points to first, stopping\n"
+    "at the first that removes it; full: every knob; none: no cause searched).\n"
     "--quiet: no progress line on a terminal (scenarios done, time left), no warning\n"
     "before a suite longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
@@ -53,7 +54,7 @@ typedef struct suite_opts {
   int stability;     /* also the largest stable timesteps and failure modes */
   int verify;        /* instead: do the engines converge to the reference */
   double timeout;    /* s of wall time a scenario may take (0: no limit) */
-  const char *cause; /* --cause: full (NULL) or none */
+  const char *cause; /* --cause: quick (NULL), full or none */
 } suite_opts;
 
 static int by_name(const void *a, const void *b) {

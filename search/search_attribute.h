@@ -66,6 +66,12 @@ typedef struct dv_attribution {
    * the scene's cylinder), not the thin disk; the probes keep its shape */
   int own_reference;
   char not_measured[320]; /* "": measured; else why the scenario's run measured nothing */
+  /* quick (dv_search_cause): knobs in the signature's order, stopped at the first
+   * that removes the error or at the budget */
+  int quick;
+  double window;     /* s: base and knobs measured from the start to here; 0: the whole scene */
+  double runs_spent; /* the knob runs made, in runs of the scene (or of its window) */
+  char untried[160]; /* the knobs quick did not try, "" */
 } dv_attribution;
 
 /* a scenario and an engine to probe with overrides */
@@ -106,6 +112,52 @@ int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, 
 
 /* dv_search_attribute_knobs probing with pr (its references reused) */
 int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_error *err);
+
+/* the base the knobs are judged against: its metrics, their limits and theta
+ * against the thin disk (or its own reference); sets out->judged */
+void dv_search_attribute_base(dv_attribution *out, const double *metric, const double *limit,
+                              double theta);
+
+/* the knobs engine declares, changed alone against out's base: those named in
+ * first[0..nfirst) in that order, then the rest as declared. With a budget
+ * (runs of the scene's cost), quick: the first knob always, the next while their
+ * runs fit in the budget, none after one removes the error (out->untried names the
+ * rest); NULL: every knob. extra ("section.key=value", e.g. a short window) is
+ * added to every knob's run (NULL: none); out's base is then the window's, and
+ * a knob that removes the error there runs again without it against whole's
+ * base (the whole run's), the cause only if it removes that too (that run
+ * counts against the budget). With DV_CAUSE_TRACE set, each knob
+ * run is a line on stderr ("cause trace: ...") */
+int dv_search_attribute_knobs_try(const dv_prober *pr, const char *const *first, size_t nfirst,
+                                  const double *budget, const char *extra,
+                                  const dv_attribution *whole, dv_attribution *out,
+                                  dv_error *err);
+
+/* how compare and suite search an engine's cause (--cause) */
+typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } dv_cause_mode;
+
+/* quick's budget: the knob runs after the first knob's, in runs of the whole
+ * scene (a knob over a short window costs its share of one) */
+#define DV_CAUSE_QUICK_BUDGET 1.0
+
+/* the knobs the failure's signature points to, most likely first, into
+ * first[0..max): energy over its limit -> the choice (integrator, stepper);
+ * penetration or a contact failure -> contact softness; slip over its limit
+ * -> friction; else the time integrator where the choice is one (MuJoCo's,
+ * Simbody's), else (an error that should fall with the step) the step */
+struct dv_comparison;
+struct dv_engine_result;
+size_t dv_search_cause_signature(const struct dv_comparison *c, const struct dv_engine_result *r,
+                                 const char **first, size_t max);
+
+/* compare's and suite's cause of r's excess in c: no split. The base is r
+ * (the comparison's own run, not run again); full: every knob, as
+ * dv_search_attribute; quick: the knobs in the signature's order, each over
+ * the window where the error appears where that window is short (the base
+ * then run once over it too), stopped at the first that removes the error */
+int dv_search_cause(const struct dv_scenario *sc, const struct dv_comparison *c,
+                    const struct dv_engine_result *r, dv_cause_mode mode, dv_attribution *out,
+                    dv_error *err);
 
 /* probe the engine on the scenario, split its error and try every knob; a probe that fails
  * (diverges, cannot run the scenario) is an error naming it. A scenario whose

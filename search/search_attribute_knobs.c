@@ -11,6 +11,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "dv_engine.h"
@@ -106,7 +107,7 @@ static size_t declare(const dv_scenario *sc, const dv_engine_type *engine, knob 
     const double v = dv_scenario_get(sc, name, k->extra[x].key);
     const char *now_text =
         sp && sp->type == DV_SETTING_CHOICE ? dv_setting_choice(sp, (size_t)v) : NULL;
-    if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue; /* already so */
+    if (now_text && strcmp(now_text, k->extra[x].value) == 0) continue;           /* already so */
     if (se->choice_key && strcmp(k->extra[x].key, se->choice_key) == 0) continue; /* turned above */
     kn[n] = (knob){k->extra[x].what, "", {""}, 1, 1.0};
     if (now_text)
@@ -172,26 +173,99 @@ int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_er
                    engine->name);
   dv_sweep_point p;
   if (dv_search_sweep_probe_in(pr->refs, sc, engine->name, NULL, 0, &p, err)) return DV_EINPUT;
-  memcpy(out->base, p.metric, sizeof out->base);
-  memcpy(out->limit, p.limit, sizeof out->limit);
-  out->base_theta_thin = out->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
+  dv_search_attribute_base(out, p.metric, p.limit,
+                           out->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin);
+  return dv_search_attribute_knobs_try(pr, NULL, 0, NULL, NULL, NULL, out, err);
+}
+
+void dv_search_attribute_base(dv_attribution *out, const double *metric, const double *limit,
+                              double theta) {
+  memcpy(out->base, metric, sizeof out->base);
+  memcpy(out->limit, limit, sizeof out->limit);
+  out->base_theta_thin = theta;
   out->judged = 0;
   for (int m = 0; m < DV_NMETRICS; m++)
-    if (dv_run_limit_check(p.metric[m], p.limit[m]) == DV_LIMIT_OVER) out->judged |= 1u << m;
+    if (dv_run_limit_check(metric[m], limit[m]) == DV_LIMIT_OVER) out->judged |= 1u << m;
+}
+
+/* the position in first[] of a knob's name (nfirst where it is not there) */
+static size_t rank(const char *name, const char *const *first, size_t nfirst) {
+  for (size_t i = 0; i < nfirst; i++)
+    if (first[i] && strcmp(first[i], name) == 0) return i;
+  return nfirst;
+}
+
+/* "cause trace: mujoco: integrator (rk4 -> implicit): worst 0.3, removes it" (DV_CAUSE_TRACE) */
+static void trace(const dv_engine_type *engine, const dv_knob_probe *k, const char *extra) {
+  const char *on = getenv("DV_CAUSE_TRACE");
+  if (!on || !*on) return;
+  fprintf(stderr, "cause trace: %s: %s (%s)%s%s: worst %.3g, %s\n", engine->name, k->knob,
+          k->change, extra ? " with " : "", extra ? extra : "", k->worst,
+          k->removes ? "removes it" : "keeps it");
+}
+
+int dv_search_attribute_knobs_try(const dv_prober *pr, const char *const *first, size_t nfirst,
+                                  const double *budget, const char *extra,
+                                  const dv_attribution *whole, dv_attribution *out,
+                                  dv_error *err) {
+  const dv_scenario *sc = pr->sc;
+  const dv_engine_type *engine = pr->engine;
   knob kn[DV_MAX_KNOBS];
-  out->nknobs = declare(sc, engine, kn);
+  const size_t n = declare(sc, engine, kn);
+  size_t order[DV_MAX_KNOBS], m = 0;
+  for (size_t r = 0; r <= nfirst; r++) /* the signature's knobs first, then the rest as declared */
+    for (size_t i = 0; i < n; i++)
+      if (rank(kn[i].name, first, nfirst) == r) order[m++] = i;
+  out->nknobs = 0;
   out->cause = -1;
-  for (size_t i = 0; i < out->nknobs; i++) {
-    dv_knob_probe *k = &out->knobs[i];
-    const char *over[3] = {kn[i].over[0], kn[i].over[1], kn[i].over[2]};
+  out->untried[0] = '\0';
+  double spent = 0.0, after_first = 0.0;
+  dv_attribution w; /* the window's base, where knobs run over one */
+  if (whole) w = *out;
+  for (size_t j = 0; j < n; j++) {
+    const knob *kj = &kn[order[j]];
+    /* quick: the first knob always, the next ones while the budget lasts */
+    const int over_budget = budget && j > 0 && after_first + fmax(kj->cost, 1.0) > *budget;
+    if (over_budget || (budget && out->cause >= 0)) {
+      const size_t len = strlen(out->untried);
+      if (!strstr(out->untried, kj->name) && len < sizeof out->untried)
+        snprintf(out->untried + len, sizeof out->untried - len, "%s%s", len ? ", " : "", kj->name);
+      continue;
+    }
+    spent += fmax(kj->cost, 1.0);
+    if (j > 0) after_first += fmax(kj->cost, 1.0);
+    dv_knob_probe *k = &out->knobs[out->nknobs];
+    const char *over[4] = {kj->over[0], kj->over[1], kj->over[2], NULL};
+    size_t nover = kj->n;
+    if (extra) over[nover++] = extra;
     memset(k, 0, sizeof *k);
-    k->knob = kn[i].name;
-    snprintf(k->change, sizeof k->change, "%s", kn[i].change);
-    if (run_knob(pr, over, kn[i].n, out->own_reference, k, err)) return DV_EINPUT;
+    k->knob = kj->name;
+    snprintf(k->change, sizeof k->change, "%s", kj->change);
+    if (run_knob(pr, over, nover, out->own_reference, k, err)) return DV_EINPUT;
     judge(out, k);
+    trace(engine, k, extra);
+    /* removed over a short window: it names the cause only if it removes the whole run's error */
+    if (k->removes && whole) {
+      out->base_theta_thin = whole->base_theta_thin, out->judged = whole->judged;
+      memcpy(out->base, whole->base, sizeof out->base);
+      memcpy(out->limit, whole->limit, sizeof out->limit);
+      if (run_knob(pr, over, kj->n, out->own_reference, k, err)) return DV_EINPUT;
+      judge(out, k);
+      trace(engine, k, NULL);
+      /* the whole run counts against the budget: one that keeps the error ends quick */
+      if (budget) after_first += fmax(kj->cost, 1.0) * *budget / DV_CAUSE_QUICK_BUDGET;
+      if (!k->removes) { /* back to the window's base for the next knob */
+        out->base_theta_thin = w.base_theta_thin, out->judged = w.judged;
+        memcpy(out->base, w.base, sizeof out->base);
+        memcpy(out->limit, w.limit, sizeof out->limit);
+      } else
+        out->window = 0.0; /* the numbers named are the whole run's */
+    }
     if (k->removes && (out->cause < 0 || k->worst < out->knobs[out->cause].worst))
-      out->cause = (int)i;
+      out->cause = (int)out->nknobs;
+    out->nknobs++;
   }
+  out->runs_spent = spent;
   return DV_OK;
 }
 
@@ -217,9 +291,39 @@ static int metric_change(int m, double a, double b, char *buf, size_t size) {
   return snprintf(buf, size, "%s %.3g -> %.3g", dv_metric_names[m], a, b);
 }
 
+/* is knob i's name among knobs[0..before) (an integrator tried to each value) */
+static int tried_before(const dv_attribution *a, size_t i, size_t before) {
+  for (size_t j = 0; j < before; j++)
+    if (strcmp(a->knobs[j].knob, a->knobs[i].knob) == 0) return 1;
+  return 0;
+}
+
+/* quick's found cause: which of the knobs tried it was (its numbers are the whole run's) */
+static void quick_tried(const dv_attribution *a, char *out, size_t size) {
+  int n = a->cause == 0 ? snprintf(out, size, ", the first of the knobs tried")
+                        : snprintf(out, size, ", the knob tried after ");
+  for (int i = 0; i < a->cause && n > 0 && (size_t)n < size; i++)
+    if (!tried_before(a, (size_t)i, (size_t)i))
+      n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
+  if (n > 0 && (size_t)n < size)
+    snprintf(out + n, size - (size_t)n, " (quick; --cause full tries all)");
+}
+
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) {
   if (a->not_measured[0]) {
     snprintf(out, size, "none: nothing measured (%s)", a->not_measured);
+    return;
+  }
+  if (a->cause < 0 && a->untried[0]) { /* quick stopped short of every knob */
+    int n = snprintf(out, size, "not found among ");
+    for (size_t i = 0; i < a->nknobs && n > 0 && (size_t)n < size; i++)
+      if (!tried_before(a, i, i))
+        n += snprintf(out + n, size - (size_t)n, "%s%s", i ? ", " : "", a->knobs[i].knob);
+    if (n > 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, " (quick");
+    if (a->window > 0.0 && n > 0 && (size_t)n < size)
+      n += snprintf(out + n, size - (size_t)n, ", each over the first %.3g s", a->window);
+    if (n > 0 && (size_t)n < size)
+      snprintf(out + n, size - (size_t)n, "; --cause full tries %s)", a->untried);
     return;
   }
   if (a->cause < 0) {
@@ -267,5 +371,6 @@ void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size) 
       n += metric_change(DV_ENERGY_DRIFT, a->base[DV_ENERGY_DRIFT], k->metric[DV_ENERGY_DRIFT],
                          out + n, size - (size_t)n);
   }
-  if (n > 0 && (size_t)n < size) snprintf(out + n, size - (size_t)n, ")");
+  if (n > 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, ")");
+  if (a->quick && n > 0 && (size_t)n < size) quick_tried(a, out + n, size - (size_t)n);
 }

@@ -155,6 +155,16 @@ static size_t pin_chosen(const job *jb, const char *const *over, size_t nover, c
   return n;
 }
 
+/* every override is one of engine's own settings: the references still hold
+ * (a scenario key, a short window's duration, changes them) */
+static int engine_only(const dv_engine_type *engine, const char *const *over, size_t nover) {
+  char prefix[96];
+  snprintf(prefix, sizeof prefix, "engines.%s.", engine->name);
+  for (size_t i = 0; i < nover; i++)
+    if (strncmp(over[i], prefix, strlen(prefix))) return 0;
+  return 1;
+}
+
 /* run one point: the scenario with over[0..nover) */
 static void run_overrides(const job *jb, const char *const *over, size_t nover,
                           dv_sweep_point *pt) {
@@ -190,7 +200,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
     ref_sc = ref;
   }
   const dv_engine_type *engines[1] = {jb->engine};
-  const int status = jb->refs && !ref_sc
+  const int status = jb->refs && !ref_sc && engine_only(jb->engine, over, nover)
                          ? dv_run_engine_against(jb->refs, sc, NULL, jb->engine, c, &err)
                          : dv_run_scenario(sc, ref_sc, engines, 1, c, &err);
   if (status) {

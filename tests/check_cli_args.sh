@@ -64,8 +64,8 @@ expect "unexpected argument 'extra'" best "$sc" extra --engine mujoco --theta-to
 expect "unexpected argument 'extra'" sweep "$sc" extra --engine mujoco --vary timestep=1e-3
 expect "unexpected argument 'y'" map x y
 expect "unexpected argument 'x'" engines x
-expect "^diskval compare: --cause bogus: full or none" compare "$sc" --cause bogus
-expect "^diskval suite: --cause bogus: full or none" suite "$sc" --cause bogus
+expect "^diskval compare: --cause bogus: quick, full or none" compare "$sc" --cause bogus
+expect "^diskval suite: --cause bogus: quick, full or none" suite "$sc" --cause bogus
 expect "unknown option '--bogus'" simulate "$sc" --engine reduced --bogus
 expect "jobs: '0' is not a whole number in \[1, 1024\]" compare "$sc" --jobs 0
 expect "unknown option '--jobs'" simulate "$sc" --engine reduced --jobs 2
