@@ -25,7 +25,7 @@ static const char HELP[] =
     "failing engines' causes in up to N processes (default: the cores); the report is the\n"
     "same whatever N.\n"
     "--cause quick (default): each failing engine's cause, the knob whose change alone\n"
-    "removes its error: the knob its failure points to first (energy: the integrator;\n"
+    "removes its error: the knob its failure points to first (energy: a time integrator;\n"
     "penetration: the contact; slip: the friction; else the integrator or the step), over\n"
     "the window where the error appears, stopping at the first that removes it;\n"
     "full: every knob over the whole scene (diskval attribute); none: no cause searched.\n"

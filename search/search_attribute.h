@@ -141,8 +141,9 @@ typedef enum dv_cause_mode { DV_CAUSE_NONE = 0, DV_CAUSE_QUICK, DV_CAUSE_FULL } 
 #define DV_CAUSE_QUICK_BUDGET 1.0
 
 /* the knobs the failure's signature points to, most likely first, into
- * first[0..max): energy over its limit -> the choice (integrator, stepper);
- * penetration or a contact failure -> contact softness; slip over its limit
+ * first[0..max): energy over its limit -> the choice where it is a time
+ * integrator (MuJoCo's, Simbody's; a solver's choice never removed a measured
+ * error); penetration or a contact failure -> contact softness; slip over its limit
  * -> friction; else the time integrator where the choice is one (MuJoCo's,
  * Simbody's), else (an error that should fall with the step) the step */
 struct dv_comparison;
