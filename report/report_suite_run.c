@@ -1,6 +1,7 @@
 /* dv_suite: report directories built aside and renamed; the scenarios in the exec pool. */
 #include "report_suite_run.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,8 +59,9 @@ static int explain_failures(const dv_scenario *sc, const dv_report_explain *expl
   const int pool =
       jobs <= 1 ? DV_EXEC_DONE : dv_exec_pool(n, sizeof *results, cause_task, &j, results, &opt);
   if (pool == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  if (pool == DV_EXEC_INTERRUPTED)
-    return dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by());
+  if (pool == DV_EXEC_INTERRUPTED) /* die of it, as in one process (temporaries removed) */
+    return raise(dv_exec_stopped_by()),
+           dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by());
   for (size_t k = 0; k < n; k++) {
     dv_engine_result *r = &c->r[j.which[k]];
     if (results[k].said) continue;

@@ -2,6 +2,7 @@
 #include "run_parallel.h"
 
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -214,15 +215,19 @@ int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
   /* a sample at t = 0, one every output_dt, one at an event */
   const double grid = sc->output_dt > 0.0 ? ceil(sc->duration / sc->output_dt) : INFINITY;
   const double bytes = (double)HEAD + (grid + 3.0) * (sizeof(dv_sample) + AMP_ARRAYS * 8.0);
+  if (n <= DV_MAX_ENGINES) half_thicknesses(&p);
+  const size_t ntasks = 1 + p.nh + n;
+  /* the slots twice (the pool's shared ones, the results here) beside what a
+   * comparison in one process may take, the budget's figure (scenario.h) */
+  const double in_one = (grid + 1.0) * DV_MEMORY_PER_SAMPLE + DV_MEMORY_BASE_MIB * 1048576.0;
+  const int fits = in_one + 2.0 * (double)ntasks * bytes <= sc->memory_budget * 1073741824.0;
   /* one job (a suite's scenario): in this process, so that a stop reaches the suite's pool alone */
-  if (jobs <= 1 || n > DV_MAX_ENGINES || !(bytes <= DV_RUN_SLOT_MAX))
+  if (jobs <= 1 || n > DV_MAX_ENGINES || !(bytes <= DV_RUN_SLOT_MAX) || !fits)
     return dv_run_scenario_hooked(sc, ref_sc, engines, n, hook, c, err);
   p.cap = (size_t)grid + 3;
   const size_t size = HEAD + p.cap * (sizeof(dv_sample) + AMP_ARRAYS * sizeof(double));
   dv_run_comparison_begin(sc, c);
   dv_run_progress_plan(sc, p.ref_sc, engines, n); /* a long comparison says so first */
-  half_thicknesses(&p);
-  const size_t ntasks = 1 + p.nh + n;
   char *results = calloc(ntasks, size);
   unsigned char *done = calloc(ntasks, 1);
   int status = DV_OK;
@@ -231,8 +236,9 @@ int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
                                    : DV_EXEC_NOMEM;
   if (pool == DV_EXEC_NOMEM)
     status = dv_fail(err, DV_ESYSTEM, "out of memory");
-  else if (pool == DV_EXEC_INTERRUPTED)
-    status = dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by());
+  else if (pool == DV_EXEC_INTERRUPTED) /* die of it, as in one process (temporaries removed) */
+    status = (raise(dv_exec_stopped_by()),
+              dv_fail(err, DV_EVENT, "interrupted (signal %d)", dv_exec_stopped_by()));
   else
     status = assemble(&p, results, size, done, hook, c, err);
   free(results);

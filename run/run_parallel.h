@@ -14,8 +14,10 @@
  * runs, goes through shared memory or over MPI alike, and leaves nothing
  * behind when a task dies. An engine whose process dies (a crash, a kill) is
  * that engine's error; a reference's is the comparison's, as when it fails.
- * A scene whose slots would exceed DV_RUN_SLOT_MAX bytes runs in this
- * process, engine after engine (dv_run_scenario_hooked).
+ * A scene whose slots would exceed DV_RUN_SLOT_MAX bytes, or whose slots
+ * (held twice) beside a comparison's own memory (scenario.h) would pass its
+ * memory_budget, runs in this process, engine after engine
+ * (dv_run_scenario_hooked).
  */
 #ifndef DV_RUN_PARALLEL_H
 #define DV_RUN_PARALLEL_H

@@ -20,30 +20,23 @@ sundials="$sundials -lsundials_sunmatrixdense -lsundials_sunnonlinsolfixedpoint"
 dragonbox=${DV_DRAGONBOX_INCLUDE:-$(ls -d /usr/include/dragonbox-* 2>/dev/null | tail -1)}
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -I"$src/common" -I"$dragonbox" \
   -c "$src/common/dv_format.cc" -o "$work/dv_format.o" || exit 1
-# engines written in C++, each in its folder (engines/NAME/*.cc)
-cxx_engines=()
-for cc in "$src"/engines/*/*.cc; do
-  [ -e "$cc" ] || continue
-  o="$work/$(basename "$cc" .cc).o"
-  # the final link is C's: no UBSan C++ runtime for the vptr and function checks
-  # (DART's aspect setters call through function pointers)
-  # shellcheck disable=SC2046
-  clang++ -std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined \
-    -fno-sanitize=vptr,function \
-    -I"$src/common" -I"$src/reduced" -I"$src/scenario" -I"$src/engines" \
-    $(pkg-config --cflags bullet-float64 eigen3) -I/usr/include/simbody -Wno-deprecated-declarations \
-    -c "$cc" -o "$o" || exit 1
-  cxx_engines+=("$o")
-done
-# the engines layer: its shared files and every engine's folder, without the engines' tests
-mapfile -t engine_c < <(find "$src/engines" -name '*.c' ! -name 'test_*' | sort)
+# the engines layer as diskval links it: its shared files, the references and each contact
+# engine's table; an engine's own code is a module (engine_module.h) a load never opens
+engine_c=()
+while IFS= read -r f; do
+  dir=$(dirname "$f")
+  if [[ $f != *_table.c ]] && grep -qs DV_ENGINE_MODULE_EXPORT "$dir"/*.c "$dir"/*.cc; then
+    continue
+  fi
+  engine_c+=("$f")
+done < <(find "$src/engines" -name '*.c' ! -name 'test_*' | sort)
 # shellcheck disable=SC2086
 clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
+  -DDV_ENGINE_BUILD_DIR="\"$work\"" -DDV_ENGINE_INSTALL_DIR="\"$work\"" \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "${engine_c[@]}" \
-  "$src/common/dv_error.c" "$src/common/dv_input.c" "$work/dv_format.o" "${cxx_engines[@]}" "$src"/reduced/*.c "$src"/reduced/*/*.c \
-  -I"$src/engines" $(pkg-config --cflags --libs inih gsl ode bullet-float64) -lmujoco $sundials \
-  -lSimTKsimbody -lSimTKmath -lSimTKcommon -ldart -ldart-collision-ode -ldl -ldouble-conversion \
+  "$src/common/dv_error.c" "$src/common/dv_input.c" "$work/dv_format.o" "$src"/reduced/*.c "$src"/reduced/*/*.c \
+  -I"$src/engines" $(pkg-config --cflags --libs inih gsl) $sundials -ldl -lpthread -ldouble-conversion \
   -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
 cp "$src"/scenarios/*.ini "$src"/scenarios/hard/*.ini "$src"/tests/bad/*.ini "$work/corpus/"
