@@ -72,11 +72,6 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
 
 int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
                         dv_error *err) {
-  return dv_search_attribute_in(NULL, scenario, engine_name, out, err);
-}
-
-int dv_search_attribute_in(const struct dv_comparison *refs, const dv_scenario *scenario,
-                           const char *engine_name, dv_attribution *out, dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
   const dv_engine_contact *k = engine->contact;
@@ -107,7 +102,7 @@ int dv_search_attribute_in(const struct dv_comparison *refs, const dv_scenario *
            fmax(soft, k->softness_min_steps * dt) * k->stiffer);
   snprintf(rough, sizeof rough, "engines.%s.%s=%.9g", name, k->friction_key, 10.0 * friction);
   const int follows = k->softness_min_steps > 0.0;
-  const dv_prober pr = {scenario, engine, own, refs};
+  const dv_prober pr = {scenario, engine, own, NULL};
   dv_attribution_errors e;
   memset(out, 0, sizeof *out);
   out->own_reference = own;
@@ -142,5 +137,5 @@ int dv_search_attribute_in(const struct dv_comparison *refs, const dv_scenario *
                                    k->softness_key ? stiff : NULL, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
-  return dv_search_attribute_knobs_by(&pr, out, err);
+  return dv_search_attribute_knobs(&pr, out, err);
 }

@@ -100,18 +100,15 @@ void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
  * (...) removes it" and no cause is named */
 void dv_search_attribute_cause(const dv_attribution *a, char *out, size_t size);
 
-/* causes over every knob: the scenario's run, then each knob the engine
- * declares changed alone (search_attribute_knobs.c); fills the knob part of out */
 /* what dv_search_attribute_knobs will run, in runs of the scene's own cost */
 struct dv_engine_type;
 double dv_search_attribute_knobs_cost(const struct dv_scenario *sc,
                                       const struct dv_engine_type *engine);
 
-int dv_search_attribute_knobs(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
-                              dv_error *err);
-
-/* dv_search_attribute_knobs probing with pr (its references reused) */
-int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_error *err);
+/* causes over every knob: pr's scenario run, then each knob its engine
+ * declares changed alone (search_attribute_knobs.c), every probe made by pr
+ * (its references reused where it carries them); fills the knob part of out */
+int dv_search_attribute_knobs(const dv_prober *pr, dv_attribution *out, dv_error *err);
 
 /* the base the knobs are judged against: its metrics, their limits and theta
  * against the thin disk (or its own reference); sets out->judged */
@@ -167,10 +164,5 @@ int dv_search_cause(const struct dv_scenario *sc, const struct dv_comparison *c,
 struct dv_scenario;
 int dv_search_attribute(const struct dv_scenario *sc, const char *engine, dv_attribution *out,
                         dv_error *err);
-
-/* dv_search_attribute with the references of refs, a comparison of sc already
- * run (search_sweep.h, dv_search_sweep_probe_in): no probe runs them again */
-int dv_search_attribute_in(const struct dv_comparison *refs, const struct dv_scenario *sc,
-                           const char *engine, dv_attribution *out, dv_error *err);
 
 #endif

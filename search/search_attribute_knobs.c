@@ -156,16 +156,7 @@ double dv_search_attribute_knobs_cost(const dv_scenario *sc, const dv_engine_typ
   return cost;
 }
 
-int dv_search_attribute_knobs(const dv_scenario *sc, const char *engine_name, dv_attribution *out,
-                              dv_error *err) {
-  const dv_engine_type *engine = dv_engine_find(engine_name);
-  if (!engine || !engine->contact || !engine->search)
-    return dv_fail(err, DV_EINPUT, "%s is not a contact engine: nothing to attribute", engine_name);
-  const dv_prober pr = {sc, engine, out->own_reference, NULL};
-  return dv_search_attribute_knobs_by(&pr, out, err);
-}
-
-int dv_search_attribute_knobs_by(const dv_prober *pr, dv_attribution *out, dv_error *err) {
+int dv_search_attribute_knobs(const dv_prober *pr, dv_attribution *out, dv_error *err) {
   const dv_scenario *sc = pr->sc;
   const dv_engine_type *engine = pr->engine;
   if (!engine->contact || !engine->search)
