@@ -18,6 +18,7 @@ int dv_cli_attribute(int argc, char **argv);
 int dv_cli_map(int argc, char **argv);
 int dv_cli_verify(int argc, char **argv);
 int dv_cli_generate(int argc, char **argv);
+int dv_cli_league(int argc, char **argv);
 
 /* print "diskval COMMAND: message (see diskval COMMAND --help)" on stderr;
  * returns DV_EXIT_ERROR */
@@ -47,6 +48,11 @@ struct dv_scenario;
 struct dv_cli_list;
 int dv_cli_load_scenario(const char *command, const char *path, const struct dv_cli_list *sets,
                          struct dv_scenario *sc, struct dv_error *err);
+
+/* the scenario files args names, appended to files: each DIR's *.ini (sorted),
+ * and each FILE; none is an error (a line on stderr, DV_EXIT_ERROR) */
+int dv_cli_scenario_files(const char *command, const struct dv_cli_list *args,
+                          struct dv_cli_list *files);
 
 /* the report layer's explainer of an engine's excess: attribution of the
  * scenario as the command loaded it (its --set overrides applied: sets is

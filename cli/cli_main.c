@@ -33,6 +33,7 @@ static const char HELP[] =
     "  map [--c A..B:N] [--spin A..B:N]               stability map of upright rolling\n"
     "  verify SCENARIO [--engines LIST]               do the engines converge to the reference\n"
     "  generate --seed N --count K --out DIR          real objects drawn at random, as scenarios\n"
+    "  league [DIR|FILES...] [--targets T,...]        every engine on real objects: error, cost\n"
     "  engines                                        the engines and integrators\n";
 
 int dv_cli_usage_error(const char *command, const char *fmt, ...) {
@@ -97,7 +98,8 @@ int main(int argc, char **argv) {
                   {"suite", dv_cli_suite},       {"sweep", dv_cli_sweep},
                   {"best", dv_cli_best},         {"attribute", dv_cli_attribute},
                   {"map", dv_cli_map},           {"engines", dv_cli_engines},
-                  {"verify", dv_cli_verify},     {"generate", dv_cli_generate}};
+                  {"verify", dv_cli_verify},     {"generate", dv_cli_generate},
+                  {"league", dv_cli_league}};
   gsl_set_error_handler_off();
   dv_io_temp_clean_on_signals(); /* a run ended by SIGINT or SIGTERM leaves no temporary */
   dv_exec_mpi_init(&argc, &argv);

@@ -57,45 +57,6 @@ typedef struct suite_opts {
   const char *cause; /* --cause: quick (NULL), full or none */
 } suite_opts;
 
-static int by_name(const void *a, const void *b) {
-  return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
-/* the .ini files of dir, sorted, appended to files (the strings are the caller's to free) */
-static int list_dir(const char *dir, dv_cli_list *files) {
-  DIR *d = opendir(dir);
-  if (!d) return -1;
-  const size_t first = files->n;
-  int status = 0;
-  for (struct dirent *e; !status && (e = readdir(d));) {
-    const size_t len = strlen(e->d_name);
-    if (len < 5 || strcmp(e->d_name + len - 4, ".ini")) continue;
-    char *path = malloc(strlen(dir) + len + 2);
-    if (!path) status = -1;
-    if (path) sprintf(path, "%s/%s", dir, e->d_name);
-    if (path && dv_cli_list_push(files, path)) free(path), status = -1;
-  }
-  closedir(d);
-  qsort(files->items + first, files->n - first, sizeof *files->items, by_name);
-  return status;
-}
-
-/* the scenario files named by args: each DIR's *.ini, and each FILE */
-static int list_files(const dv_cli_list *args, dv_cli_list *files) {
-  for (size_t i = 0; i < args->n; i++) {
-    struct stat st;
-    if (stat(args->items[i], &st) == 0 && S_ISDIR(st.st_mode)) {
-      if (list_dir(args->items[i], files))
-        return dv_cli_error("suite", "cannot read directory %s", args->items[i]);
-    } else {
-      char *copy = strdup(args->items[i]);
-      if (!copy || dv_cli_list_push(files, copy))
-        return free(copy), dv_cli_error("suite", "out of memory");
-    }
-  }
-  return files->n ? DV_EXIT_OK : dv_cli_error("suite", "no scenario files found");
-}
-
 /* load every scenario first: any bad file ends the command before output */
 static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenario *scs) {
   for (size_t i = 0; i < files->n; i++) {
@@ -292,7 +253,7 @@ int dv_cli_suite(int argc, char **argv) {
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
   if (dv_cli_engine_list(o.engines, engines, &err)) code = dv_cli_error("suite", "%s", err.msg);
-  if (!code) code = list_files(&a.args, &files);
+  if (!code) code = dv_cli_scenario_files("suite", &a.args, &files);
   if (!code &&
       (!(scs = calloc(files.n, sizeof *scs)) || !(codes = calloc(files.n, sizeof *codes)) ||
        !(causes = calloc(files.n, sizeof *causes))))

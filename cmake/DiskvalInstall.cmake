@@ -18,6 +18,8 @@ install(EXPORT diskvalTargets NAMESPACE diskval:: DESTINATION ${DISKVAL_CMAKE_DI
         COMPONENT development)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${DISKVAL_SCENARIO_DIR}
         COMPONENT runtime FILES_MATCHING PATTERN "*.ini")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/league/ DESTINATION ${CMAKE_INSTALL_DATADIR}/diskval/league
+        COMPONENT runtime FILES_MATCHING PATTERN "*.ini" PATTERN "*.md")
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/diskvalConfig.cmake.in
   ${PROJECT_BINARY_DIR}/diskvalConfig.cmake INSTALL_DESTINATION ${DISKVAL_CMAKE_DIR}

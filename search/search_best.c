@@ -25,7 +25,27 @@ typedef struct ctx {
   const dv_scenario *sc; /* loaded once: every probe varies it in memory */
   space sp;
   dv_search *out;
+  dv_search_bounds bounds;
 } ctx;
+
+/* how far a probe is from meeting the search: its theta error over the
+ * tolerance and, with the path, the larger of that and its path's share */
+static double shortfall(const dv_search *s, const dv_sweep_point *q) {
+  const double theta = q->metric[DV_THETA_MAX_ERR] / s->tolerance;
+  if (isnan(s->path_tolerance)) return theta;
+  const double path = q->metric[DV_PATH_MAX_ERR] / s->path_tolerance;
+  return isnan(path) || isnan(theta) ? NAN : fmax(theta, path);
+}
+
+/* the path target, from the first probe that compared: the scene's path limit
+ * scaled as its theta limit is scaled to the tolerance */
+static void take_path_tolerance(const ctx *c, const dv_sweep_point *q) {
+  dv_search *s = c->out;
+  const double theta = q->limit[DV_THETA_MAX_ERR], path = q->limit[DV_PATH_MAX_ERR];
+  if (c->bounds.with_path && isnan(s->path_tolerance) && theta > 0.0 && path > 0.0 &&
+      isfinite(theta) && isfinite(path))
+    s->path_tolerance = path * s->tolerance / theta;
+}
 
 /* one probe: choice (NULL: the scenario's) and step */
 static int probe(ctx *c, const char *choice, double step, dv_error *err) {
@@ -48,13 +68,14 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   snprintf(p->choice, sizeof p->choice, "%s", choice ? choice : "default");
   p->step = step;
   if (dv_search_sweep_probe(c->sc, c->sp.engine, ptrs, n, &p->point, err)) return -1;
-  const double e = p->point.metric[DV_THETA_MAX_ERR];
+  take_path_tolerance(c, &p->point);
+  const double e = shortfall(s, &p->point);
   /* a run that lay down before the reference's end compared too short a window */
   const int fell = p->point.verdict == DV_VERDICT_ENDED_BY_EVENT;
-  p->state = !p->point.ok || fell            ? DV_PROBE_FAILED
-             : e <= s->margin * s->tolerance ? DV_PROBE_MEETS
-             : e <= s->tolerance             ? DV_PROBE_MARGINAL
-                                             : DV_PROBE_EXCEEDS;
+  p->state = !p->point.ok || fell ? DV_PROBE_FAILED
+             : e <= s->margin     ? DV_PROBE_MEETS
+             : e <= 1.0           ? DV_PROBE_MARGINAL
+                                  : DV_PROBE_EXCEEDS;
   p->pass = p->state == DV_PROBE_MEETS || (s->margin >= 1.0 && p->state == DV_PROBE_MARGINAL);
   p->steps_per_sim_s = p->point.sim_s > 0.0 ? (double)p->point.steps / p->point.sim_s : NAN;
   p->cost = NAN;
@@ -124,15 +145,60 @@ static double forecast(const ctx *c, const bracket *b, const dv_probe *last, con
 typedef struct lane {
   const char *choice;  /* NULL: the scenario's */
   bracket b;
-  int last, prev;      /* its last two probes, or -1 */
+  int last, prev, prev2; /* its last three probes, or -1 */
   double wall_per_step; /* s, of its last probe */
   double last_wall;     /* s, its last probe's */
   int fail_probe;      /* the probe just above its limit, or -1 */
   int skipped;         /* not searched: another choice ties it at less cost */
 } lane;
 
-/* probe lane's next step; 1 passed, 0 not, -1 an error (the lane ends) */
+/* append "CHOICE: why" to the search's stopped list */
+static void say_stopped(dv_search *s, const lane *l, const char *why) {
+  const size_t used = strlen(s->stopped);
+  snprintf(s->stopped + used, sizeof s->stopped - used, "%s%s: %s", used ? "; " : "",
+           l->choice ? l->choice : "default", why);
+}
+
+/* whether a bound ends lane before its next probe: a forecast cost over the
+ * cap, or errors that have stopped falling with the step */
+static int bounded(ctx *c, lane *l) {
+  dv_search *s = c->out;
+  char why[200];
+  if (l->last < 0) return 0;
+  const dv_probe *last = &s->probes[l->last];
+  const double own = last->point.steps > 0 && last->point.sim_s > 0.0
+                         ? last->point.wall_s / last->point.sim_s * last->step / l->b.h
+                         : NAN;
+  if (c->bounds.cost_cap > 0.0 && own > c->bounds.cost_cap) {
+    snprintf(why, sizeof why,
+             "the cost cap: a step of %.3g s would cost about %.3g s a simulated s (cap %g)",
+             l->b.h, own, c->bounds.cost_cap);
+    say_stopped(s, l, why);
+    return 1;
+  }
+  if (!c->bounds.stop_at_floor || l->b.bisecting || l->prev2 < 0) return 0;
+  const dv_probe *first = &s->probes[l->prev2], *mid = &s->probes[l->prev];
+  if (first->state != DV_PROBE_EXCEEDS || mid->state != DV_PROBE_EXCEEDS ||
+      last->state != DV_PROBE_EXCEEDS || !(last->step < mid->step && mid->step < first->step))
+    return 0;
+  const double e0 = shortfall(s, &first->point), e2 = shortfall(s, &last->point);
+  const double order = log(e0 / e2) / log(first->step / last->step);
+  if (!(order < DV_FLOOR_ORDER)) return 0;
+  snprintf(why, sizeof why,
+           "the error stops falling with the step (%.3g x the target at %.3g s, %.3g x at "
+           "%.3g s: order %.2g)",
+           e0, first->step, e2, last->step, order);
+  say_stopped(s, l, why);
+  return 1;
+}
+
+/* probe lane's next step; 1 passed, 0 not, -1 an error (the lane ends), -2
+ * a bound ended the lane before it */
 static int step_lane(ctx *c, lane *l, dv_error *err) {
+  if (bounded(c, l)) {
+    l->b.h = NAN;
+    return -2;
+  }
   const double began = dv_clock_now();
   const int ok = probe(c, l->choice, l->b.h, err);
   const double wall = dv_clock_now() - began;
@@ -141,6 +207,7 @@ static int step_lane(ctx *c, lane *l, dv_error *err) {
     return -1;
   }
   const dv_probe *p = &c->out->probes[c->out->nprobes - 1];
+  l->prev2 = l->prev;
   l->prev = l->last;
   l->last = (int)c->out->nprobes - 1;
   if (p->point.steps > 0) l->wall_per_step = wall / (double)p->point.steps;
@@ -200,6 +267,7 @@ static int setup(const dv_scenario *sc, const char *engine, double tol, dv_searc
   snprintf(out->choice_key, sizeof out->choice_key, "%s", c->sp.choice_key);
   snprintf(out->step_key, sizeof out->step_key, "%s", c->sp.step_key);
   out->tolerance = tol;
+  out->path_tolerance = NAN;
   out->margin = 1.0;
   out->best = out->first_failure = -1;
   c->sp.wall_exponent = type->contact ? 1.0 : 0.125; /* a timestep; rtol, an 8th order's */
@@ -284,19 +352,20 @@ static void skip_ties(ctx *c, lane *lanes, size_t n) {
  * choice's start first, so that ties are seen and the whole search is
  * forecast (and announced when long) before the rest */
 static int search(const dv_scenario *sc, const char *engine, double tol, int every_choice,
-                  dv_search *out, dv_error *err) {
+                  const dv_search_bounds *bounds, dv_search *out, dv_error *err) {
   ctx c;
   double start = NAN;
   const int status = setup(sc, engine, tol, out, &c, &start, err);
   if (status) return status;
+  if (bounds) c.bounds = *bounds;
   lane lanes[DV_SEARCH_MAX_CHOICES];
   size_t n = 0;
   const char *choice;
   if (!every_choice)
-    lanes[n++] = (lane){NULL, bracket_start(start), -1, -1, NAN, NAN, -1, 0};
+    lanes[n++] = (lane){NULL, bracket_start(start), -1, -1, -1, NAN, NAN, -1, 0};
   else
     for (size_t i = 0; c.sp.choice && (choice = dv_setting_choice(c.sp.choice, i)); i++)
-      lanes[n++] = (lane){choice, bracket_start(start), -1, -1, NAN, NAN, -1, 0};
+      lanes[n++] = (lane){choice, bracket_start(start), -1, -1, -1, NAN, NAN, -1, 0};
   out->margin = every_choice ? DV_SEARCH_MARGIN : 1.0;
   for (size_t i = 0; i < n; i++) {
     step_lane(&c, &lanes[i], err);
@@ -311,8 +380,7 @@ static int search(const dv_scenario *sc, const char *engine, double tol, int eve
   dv_run_progress_say("the rest of the search forecast at %.3g s", forecast_s);
   for (size_t i = 0; i < n; i++)
     while (!lanes[i].skipped && !isnan(lanes[i].b.h)) {
-      step_lane(&c, &lanes[i], err);
-      tell(&c, left(&c, lanes, n, i));
+      if (step_lane(&c, &lanes[i], err) != -2) tell(&c, left(&c, lanes, n, i));
     }
   dv_run_progress_say("the rest of the search took %.3g s (forecast %.3g s)",
                       dv_clock_now() - began, forecast_s);
@@ -330,12 +398,17 @@ static int search(const dv_scenario *sc, const char *engine, double tol, int eve
 
 int dv_search_best(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
                    dv_error *err) {
-  return search(sc, engine, tol, 1, out, err);
+  return search(sc, engine, tol, 1, NULL, out, err);
+}
+
+int dv_search_best_bounded(const dv_scenario *sc, const char *engine, double tol,
+                           const dv_search_bounds *bounds, dv_search *out, dv_error *err) {
+  return search(sc, engine, tol, 1, bounds, out, err);
 }
 
 int dv_search_stability(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
                         dv_error *err) {
-  return search(sc, engine, tol, 0, out, err);
+  return search(sc, engine, tol, 0, NULL, out, err);
 }
 
 const char *dv_search_failure_mode(const dv_probe *p) {

@@ -74,11 +74,28 @@ typedef struct dv_search {
   size_t nchoices;   /* best: the calibration of each choice probed */
   dv_step_cost step_cost[DV_SEARCH_MAX_CHOICES];
   char skipped[512]; /* best: the choices not searched and why ("" when none) */
+  double path_tolerance; /* m: a probe meets only with path_max_err within margin x it too
+                            (NAN: theta alone) */
+  char stopped[512]; /* bounded: the choices whose search a bound ended, and which ("" none) */
 } dv_search;
+
+/* what bounds a search besides its tolerance (dv_search_best_bounded) */
+typedef struct dv_search_bounds {
+  int with_path;   /* the path too, at the scene's path limit scaled as its theta limit is
+                      scaled to the tolerance (taken from the first probe that compared) */
+  double cost_cap; /* s of wall a simulated s: no probe is run whose cost, forecast from
+                      the choice's last probe, is above it (<= 0: none) */
+  int stop_at_floor; /* a choice whose error falls at an order below DV_FLOOR_ORDER over
+                        two halvings of the step, both exceeding, is searched no further */
+} dv_search_bounds;
 
 /* the cheapest settings of engine meeting theta_max_err <= DV_SEARCH_MARGIN tol */
 int dv_search_best(const dv_scenario *sc, const char *engine, double tol, dv_search *out,
                    dv_error *err);
+
+/* dv_search_best within bounds; out->stopped says which bound ended which choice */
+int dv_search_best_bounded(const dv_scenario *sc, const char *engine, double tol,
+                           const dv_search_bounds *bounds, dv_search *out, dv_error *err);
 
 /* the largest timestep (engine's default discrete setting) within tol */
 int dv_search_stability(const dv_scenario *sc, const char *engine, double tol, dv_search *out,

@@ -1,0 +1,216 @@
+/* dv_cli_league: diskval league: every engine on the same real objects. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "cli_args.h"
+#include "engine_choose.h"
+#include "exec_mpi.h"
+#include "exec_pool.h"
+#include "io_lock.h"
+#include "io_owned.h"
+#include "league.h"
+#include "league_run.h"
+#include "run_progress.h"
+#include "run_scenario.h"
+
+static const char HELP[] =
+    "usage: diskval league [DIR|FILES...] [--engines LIST] [--targets T1,T2,...] [--out DIR]\n"
+    "                      [--jobs N] [--cost-cap S] [--cause quick|full|none]\n"
+    "                      [--set section.key=value]...\n"
+    "\n"
+    "Every engine on the same objects (scenario files; default: the shipped league/ folder,\n"
+    "a quick set; league/more/ holds the rest), for each accuracy target T (rad of theta;\n"
+    "default 1e-3) with the matching path target (the scene's path limit scaled as its theta\n"
+    "limit is scaled to T): the cheapest settings that reach both (best's search, stopped\n"
+    "where a run would cost more than S s of wall a simulated s, default 20, or where the\n"
+    "error stops falling with the step), their cost, the observed order over the search's\n"
+    "runs, and, where none reaches them, why (every run failed and how, the cost cap, the\n"
+    "error's floor) with the cause from attribution. Each cell is backed by a compare at its\n"
+    "settings with the targets as its limits (DIR/compare/OBJECT/ENGINE-T/OBJECT/).\n"
+    "Default engines: every contact engine diskval engines lists, adapters included (one\n"
+    "that cannot run is listed with why). Writes into DIR (default league-report):\n"
+    "league.json, league.csv, league.md, league.html, overview.svg and\n"
+    "work_precision_OBJECT.svg; the cells are kept in DIR/cells/, so running again into\n"
+    "the same DIR resumes where a league stopped (a cell is reused while its object file,\n"
+    "engine version, target, cost cap and --set are the same).\n"
+    "--jobs N: pairs of object and engine at a time (default: the cores); under mpirun the\n"
+    "ranks share them.\n"
+    "Exit status: 0 every cell ran, 1 a cell ended in an error, 2 bad input, 130 stopped by\n"
+    "a signal (what finished is written and kept).\n";
+
+/* "1e-2,1e-3" into targets */
+static int parse_targets(const char *list, double *targets, size_t *n) {
+  *n = 0;
+  for (const char *p = list; *p;) {
+    char *end;
+    const double v = strtod(p, &end);
+    if (end == p || (*end && *end != ',') || !(v > 0.0 && v < 3.2))
+      return dv_cli_usage_error("league", "--targets: '%s' is no list of numbers in (0, 3.2) rad",
+                                list);
+    if (*n == DV_LEAGUE_MAX_TARGETS)
+      return dv_cli_usage_error("league", "--targets: at most %d", DV_LEAGUE_MAX_TARGETS);
+    targets[(*n)++] = v;
+    p = *end ? end + 1 : end;
+  }
+  return *n ? DV_EXIT_OK : dv_cli_usage_error("league", "--targets: none given");
+}
+
+/* every contact engine, outside ones too (NULL list), or the list's */
+static int engine_list(const char *list, const dv_engine_type **engines) {
+  dv_error err = {{0}};
+  if (list) {
+    if (dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, &err))
+      return dv_cli_error("league", "%s", err.msg);
+  } else {
+    size_t n = 0;
+    for (const dv_engine_type *const *e = dv_engine_list(); *e && n < DV_MAX_ENGINES; e++)
+      if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
+    engines[n] = NULL;
+  }
+  dv_engine_choose_only(engines);
+  return DV_EXIT_OK;
+}
+
+/* the fixed-name outputs, the main one first, NULL-ended (names[] holds the strings) */
+static void output_names(const dv_league *lg, char (*names)[96], const char **out) {
+  static const char *const FIXED[] = {"league.html", "league.json", "league.csv", "league.md",
+                                      "overview.svg", "cells", "compare"};
+  size_t n = 0;
+  for (size_t i = 0; i < sizeof FIXED / sizeof FIXED[0]; i++) out[n++] = FIXED[i];
+  for (size_t o = 0; o < lg->nobjects; o++) {
+    snprintf(names[o], sizeof names[o], "work_precision_%.64s.svg", lg->objects[o].name);
+    out[n++] = names[o];
+  }
+  out[n] = NULL;
+}
+
+static int write_all(const char *dir, const dv_league *lg, dv_error *err) {
+  return dv_league_write_json(dir, lg, err) || dv_league_write_csv(dir, lg, err) ||
+         dv_league_write_md(dir, lg, err) || dv_league_write_html(dir, lg, err) ||
+         dv_league_write_figures(dir, lg, err);
+}
+
+/* one line per engine and target: reached of run, the geometric-mean cost */
+static void print_summary(const dv_league *lg) {
+  for (size_t t = 0; t < lg->ntargets; t++)
+    for (size_t e = 0; e < lg->nengines; e++) {
+      const dv_league_engine *g = &lg->engines[e];
+      if (!g->available) {
+        if (!t) printf("%-10s not available: %s\n", g->name, g->why);
+        continue;
+      }
+      dv_league_summary s;
+      dv_league_summarize(lg, g->name, lg->targets[t], &s);
+      printf("%-10s target %-8g reached %zu of %zu", g->name, lg->targets[t], s.reached,
+             s.reached + s.not_reached + s.cannot_model + s.not_run);
+      if (s.reached) printf(", %.3g s a simulated s (geometric mean)", s.geomean_wall_per_sim_s);
+      printf("\n");
+    }
+}
+
+/* the league's objects: the files args names, or the shipped folder */
+static int object_files(const dv_cli_list *args, dv_cli_list *files) {
+  dv_cli_list def = {0};
+  const char *dir = access(DV_LEAGUE_SOURCE_DIR, R_OK) == 0 ? DV_LEAGUE_SOURCE_DIR
+                                                             : DV_LEAGUE_INSTALL_DIR;
+  if (args->n) return dv_cli_scenario_files("league", args, files);
+  if (dv_cli_list_push(&def, dir)) return dv_cli_error("league", "out of memory");
+  const int code = dv_cli_scenario_files("league", &def, files);
+  free(def.items);
+  return code;
+}
+
+static int run(const dv_cli_args *a, const char *out, const char *list, const char *targets_text,
+               double cost_cap, const char *cause, int jobs) {
+  double targets[DV_LEAGUE_MAX_TARGETS];
+  size_t ntargets = 0;
+  const dv_engine_type *engines[DV_MAX_ENGINES + 1];
+  dv_report_explain explain;
+  dv_cli_list files = {0};
+  int code = parse_targets(targets_text, targets, &ntargets);
+  if (!code) code = dv_cli_explainer("league", cause, &a->sets, &explain);
+  if (!code) code = engine_list(list, engines);
+  if (!code) code = object_files(&a->args, &files);
+  dv_scenario *objects = code ? NULL : calloc(files.n, sizeof *objects);
+  if (!code && !objects) code = dv_cli_error("league", "out of memory");
+  for (size_t i = 0; !code && i < files.n; i++) {
+    dv_error err = {{0}};
+    if (dv_cli_load_scenario("league", files.items[i], &a->sets, &objects[i], &err))
+      code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
+    for (size_t k = 0; !code && k < i; k++)
+      if (!strcmp(objects[k].name, objects[i].name))
+        code = dv_cli_error("league", "%s and %s both name their object '%s'", objects[k].path,
+                            objects[i].path, objects[k].name);
+  }
+  dv_league lg = {0};
+  dv_error err = {{0}};
+  int lock = -1;
+  const dv_league_request rq = {objects, files.n, engines, targets, ntargets, cost_cap,
+                                a->sets.items, a->sets.n, out, jobs, &explain};
+  const int rank0 = dv_exec_mpi_rank() == 0;
+  if (!code && rank0) {
+    /* the outputs' names need the objects' names: the league's header first */
+    char (*names)[96] = calloc(files.n + 1, sizeof *names);
+    const char **all = calloc(files.n + 9, sizeof *all);
+    for (size_t o = 0; names && all && o < files.n; o++)
+      snprintf(lg.objects[o].name, sizeof lg.objects[o].name, "%s", objects[o].name);
+    lg.nobjects = files.n;
+    if (!names || !all)
+      code = dv_cli_error("league", "out of memory");
+    else {
+      output_names(&lg, names, all);
+      if (dv_io_own_dir(out, all, &err) || dv_io_lock_dir(out, &lock, &err) ||
+          dv_io_check_inputs(out, all, (const char *const *)files.items, files.n, &err))
+        code = dv_cli_error("league", "%s", err.msg);
+    }
+    free(names), free(all);
+  }
+  if (!code) {
+    const int status = dv_league_run(&rq, &lg, &err);
+    if (status == DV_LEAGUE_WORKER)
+      code = DV_EXIT_OK;
+    else if (status != DV_OK && status != DV_EVENT)
+      code = dv_cli_error("league", "%s", err.msg);
+    else if (write_all(out, &lg, &err))
+      code = dv_cli_error("league", "%s", err.msg);
+    else {
+      print_summary(&lg);
+      size_t failed = 0;
+      for (size_t k = 0; k < lg.ncells; k++)
+        failed += lg.cells[k].outcome == DV_LEAGUE_NOT_RUN || !strncmp(lg.cells[k].why, "error", 5);
+      printf("league: %s/league.html (%zu cells%s)\n", out, lg.ncells,
+             status == DV_EVENT ? ", stopped by a signal: run again to resume" : "");
+      code = status == DV_EVENT ? 130 : failed ? DV_EXIT_FAIL : DV_EXIT_OK;
+    }
+  }
+  dv_io_unlock_dir(out, lock);
+  dv_league_free(&lg);
+  free(objects);
+  for (size_t i = 0; i < files.n; i++) free((char *)files.items[i]);
+  free(files.items);
+  return code;
+}
+
+int dv_cli_league(int argc, char **argv) {
+  const char *out = "league-report", *list = NULL, *targets = "1e-3", *cause = NULL;
+  double cost_cap = DV_LEAGUE_COST_CAP;
+  int jobs = dv_cli_default_jobs();
+  const dv_cli_option options[] = {
+      {"out", DV_CLI_TEXT, &out, 0, 0},         {"engines", DV_CLI_TEXT, &list, 0, 0},
+      {"targets", DV_CLI_TEXT, &targets, 0, 0}, {"cost-cap", DV_CLI_REAL, &cost_cap, 1e-3, 1e6},
+      {"cause", DV_CLI_TEXT, &cause, 0, 0},     {"jobs", DV_CLI_INT, &jobs, 1, 1024},
+  };
+  const dv_cli_command cmd = {"league", HELP, options, 6, 0, (size_t)-1};
+  dv_cli_args a;
+  const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
+  if (parsed != DV_CLI_RUN) return parsed;
+  dv_run_progress_start("league", a.quiet, 0);
+  dv_exec_hold_stops();
+  const int code = run(&a, out, list, targets, cost_cap, cause, jobs);
+  dv_cli_args_free(&cmd, &a);
+  return code;
+}
