@@ -10,8 +10,9 @@
 
 void dv_league_short_number(double v, int digits, char *buf, size_t size) {
   const double a = fabs(v);
-  if (!isfinite(v) || a == 0 || (a >= 1e-2 && a < 1e4)) {
-    snprintf(buf, size, "%.*g", digits, v);
+  if (!isfinite(v) || a == 0 || (a >= 1e-2 && a < 1e4)) { /* every integer digit: 1000, not 1e+03 */
+    const int whole = a >= 1 && isfinite(a) ? (int)floor(log10(a)) + 1 : 0;
+    snprintf(buf, size, "%.*g", whole > digits ? whole : digits, v);
     return;
   }
   char mant[32];

@@ -107,7 +107,9 @@ static void put_provenance(FILE *fp, const dv_league *lg) {
   fputs("## How it was measured\n\n", fp);
   put_md(fp, "Machine: ", lg->machine, ". ");
   put_md(fp, "Date: ", lg->date, ". ");
-  put_md(fp, "diskval ", lg->diskval_version, ". Engines: ");
+  char version[64];
+  snprintf(version, sizeof version, "diskval %s", lg->diskval_version);
+  put_md(fp, "", version, ". Engines: ");
   for (size_t e = 0; e < lg->nengines; e++) {
     const dv_league_engine *en = &lg->engines[e];
     put_md(fp, e ? "; " : "", en->name, " ");
