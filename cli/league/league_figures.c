@@ -153,12 +153,12 @@ static int write_object(const char *dir, const dv_league *lg, const dv_league_ob
   add_targets(&f, lg);
   if (drawn < run) snprintf(shown, sizeof shown, " (the first %zu of %zu engines)", drawn, run);
   plot_text(ob->name, name, sizeof name);
-  snprintf(title, sizeof title, "%s: #gh error against cost%s", name, shown);
+  snprintf(title, sizeof title, "%s: #gh error against cost, starred where reached%s", name, shown);
   dv_league_figure_file(ob->name, file, sizeof file);
   status = dv_io_path(path, sizeof path, err, "%s/%s", dir, file);
   if (!status)
-    status = dv_report_plot_xy(path, title, XLABEL, YLABEL, f.c, f.n, DV_PLOT_LOGX | DV_PLOT_LOGY,
-                               err);
+    status =
+        dv_report_plot_xy(path, title, XLABEL, YLABEL, f.c, f.n, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
   free(pts);
   figure_free(&f);
   return status;
@@ -199,8 +199,8 @@ static int write_overview(const char *dir, const dv_league *lg, dv_error *err) {
            shown);
   status = dv_io_path(path, sizeof path, err, "%s/overview.svg", dir);
   if (!status)
-    status = dv_report_plot_xy(path, title, XLABEL, YLABEL, f.c, f.n, DV_PLOT_LOGX | DV_PLOT_LOGY,
-                               err);
+    status =
+        dv_report_plot_xy(path, title, XLABEL, YLABEL, f.c, f.n, DV_PLOT_LOGX | DV_PLOT_LOGY, err);
   free(pts);
   figure_free(&f);
   return status;

@@ -33,17 +33,23 @@ void dv_league_summarize(const dv_league *lg, const char *engine, double target,
         geomean_add(&wall, c->wall_per_sim_s);
         geomean_add(&steps, c->sim_s > 0 && c->steps > 0 ? (double)c->steps / c->sim_s : NAN);
         break;
-      case DV_LEAGUE_NOT_REACHED: out->not_reached++; break;
-      case DV_LEAGUE_CANNOT_MODEL: out->cannot_model++; break;
-      default: out->not_run++; break;
+      case DV_LEAGUE_NOT_REACHED:
+        out->not_reached++;
+        break;
+      case DV_LEAGUE_CANNOT_MODEL:
+        out->cannot_model++;
+        break;
+      default:
+        out->not_run++;
+        break;
     }
   }
   out->geomean_wall_per_sim_s = geomean_of(&wall);
   out->geomean_steps_per_sim_s = geomean_of(&steps);
 }
 
-const dv_league_cell *dv_league_cell_of(const dv_league *lg, const char *object,
-                                        const char *engine, double target) {
+const dv_league_cell *dv_league_cell_of(const dv_league *lg, const char *object, const char *engine,
+                                        double target) {
   for (size_t i = 0; i < lg->ncells; i++) {
     const dv_league_cell *c = &lg->cells[i];
     if (c->target == target && !strcmp(c->object, object) && !strcmp(c->engine, engine)) return c;

@@ -54,8 +54,8 @@ static void cell_title(const dv_league_cell *c, char *buf, size_t size) {
   dv_league_short_number(c->target, 2, t, sizeof t);
   dv_league_short_number(c->path_target, 2, pt, sizeof pt);
   dv_league_short_number(c->order, 2, order, sizeof order);
-  int n = snprintf(buf, size, "%s%s%s%s%s", dv_league_outcome_name(c->outcome), c->why[0] ? ": " : "",
-                   c->why, c->cause[0] ? "; cause: " : "", c->cause);
+  int n = snprintf(buf, size, "%s%s%s%s%s", dv_league_outcome_name(c->outcome),
+                   c->why[0] ? ": " : "", c->why, c->cause[0] ? "; cause: " : "", c->cause);
   if (dv_league_cell_was_run(c) && n >= 0 && (size_t)n < size)
     snprintf(buf + n, size - (size_t)n,
              "; theta error %s rad (target %s), path error %s m (target %s), order %s, %s", theta,
@@ -127,8 +127,7 @@ static void put_standing(FILE *fp, const dv_league *lg, const char *engine, doub
   dv_league_summarize(lg, engine, t, &s);
   dv_league_short_number(s.geomean_wall_per_sim_s, 3, cost, sizeof cost);
   const char *cls = !s.reached ? "na" : s.not_reached ? "no" : "ok";
-  fprintf(fp, "<td class=\"%s\"><b>%zu/%zu</b> reached", cls, s.reached,
-          s.reached + s.not_reached);
+  fprintf(fp, "<td class=\"%s\"><b>%zu/%zu</b> reached", cls, s.reached, s.reached + s.not_reached);
   if (s.reached) fprintf(fp, ", %s s/s", cost);
   const char *sep = "<small>not: ";
   for (int cannot = 0; cannot <= 1; cannot++)
@@ -142,10 +141,11 @@ static void put_standing(FILE *fp, const dv_league *lg, const char *engine, doub
 }
 
 static void put_summary(FILE *fp, const dv_league *lg) {
-  fputs("<h2>Per engine</h2>\n<p>Reached of the objects run, the geometric mean of the cost "
-        "(s of wall per simulated s) over those reached, and the objects not reached.</p>\n"
-        "<table>\n<tr><th class=\"o\">engine</th>",
-        fp);
+  fputs(
+      "<h2>Per engine</h2>\n<p>Reached of the objects run, the geometric mean of the cost "
+      "(s of wall per simulated s) over those reached, and the objects not reached.</p>\n"
+      "<table>\n<tr><th class=\"o\">engine</th>",
+      fp);
   for (size_t t = 0; t < lg->ntargets; t++) {
     char target[32];
     dv_league_short_number(lg->targets[t], 3, target, sizeof target);
@@ -169,9 +169,10 @@ static void put_summary(FILE *fp, const dv_league *lg) {
 
 static void put_figures(FILE *fp, const dv_league *lg) {
   char file[160];
-  fputs("<p>Figures: <a href=\"overview.svg\">overview</a> (every reached cell, error against "
-        "cost); work against precision:",
-        fp);
+  fputs(
+      "<p>Figures: <a href=\"overview.svg\">overview</a> (every reached cell, error against "
+      "cost); work against precision:",
+      fp);
   for (size_t o = 0; o < lg->nobjects; o++) {
     dv_league_figure_file(lg->objects[o].name, file, sizeof file);
     fputs(o ? ", <a" : " <a", fp);
@@ -200,9 +201,10 @@ static void put_provenance(FILE *fp, const dv_league *lg) {
           "to, which re-running reproduces.</p>\n",
           cap);
   if (lg->interrupted)
-    fputs("<p class=\"w\"><b>The league was interrupted</b>: the cells marked not run are "
-          "missing.</p>\n",
-          fp);
+    fputs(
+        "<p class=\"w\"><b>The league was interrupted</b>: the cells marked not run are "
+        "missing.</p>\n",
+        fp);
 }
 
 int dv_league_write_html(const char *dir, const dv_league *lg, dv_error *err) {

@@ -80,9 +80,10 @@ static void put_not_reached(FILE *fp, const dv_league *lg, const char *engine, d
 
 /* each engine's standing at target t */
 static void put_summary(FILE *fp, const dv_league *lg, double t) {
-  fputs("| engine | reached / run | cost, geometric mean (s/s) | steps / simulated s, geometric "
-        "mean | not reached |\n|---|---|---|---|---|\n",
-        fp);
+  fputs(
+      "| engine | reached / run | cost, geometric mean (s/s) | steps / simulated s, geometric "
+      "mean | not reached |\n|---|---|---|---|---|\n",
+      fp);
   for (size_t e = 0; e < lg->nengines; e++) {
     const dv_league_engine *en = &lg->engines[e];
     dv_league_summary s;
@@ -117,13 +118,14 @@ static void put_provenance(FILE *fp, const dv_league *lg) {
     if (!en->available && en->why[0]) put_md(fp, " (", en->why, ")");
   }
   fprintf(fp, ". Cost cap: %s s of wall per simulated s.\n\n", cap);
-  fputs("A cell's settings are the cheapest that best's search finds meeting both its theta "
-        "target and the matching path target (the scene's path limit scaled as its theta limit "
-        "is), searched until a run would cost more than the cost cap or the error stops falling "
-        "with the step; its numbers come from a compare at those settings with the targets as "
-        "its limits, so re-running that compare (the cell's report) reproduces its claim. "
-        "Cost: wall seconds per simulated second of the engine's run.\n",
-        fp);
+  fputs(
+      "A cell's settings are the cheapest that best's search finds meeting both its theta "
+      "target and the matching path target (the scene's path limit scaled as its theta limit "
+      "is), searched until a run would cost more than the cost cap or the error stops falling "
+      "with the step; its numbers come from a compare at those settings with the targets as "
+      "its limits, so re-running that compare (the cell's report) reproduces its claim. "
+      "Cost: wall seconds per simulated second of the engine's run.\n",
+      fp);
   if (lg->interrupted)
     fputs("\nThe league was interrupted: the cells marked not run are missing.\n", fp);
 }
