@@ -53,6 +53,7 @@ void dv_league_short_why(const dv_league_cell *c, char *buf, size_t size) {
   const char *comma = strstr(why, ", ");
   if (comma && (size_t)(comma - why) < n) n = (size_t)(comma - why);
   while (n && why[n - 1] == ' ') n--;
+  if (!n) n = strlen(why); /* nothing before its first stop: all of it, cut below */
   const int cut = n > SHORT_WHY;
   if (cut) {
     n = SHORT_WHY;

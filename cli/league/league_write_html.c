@@ -126,7 +126,7 @@ static void put_standing(FILE *fp, const dv_league *lg, const char *engine, doub
   char cost[32];
   dv_league_summarize(lg, engine, t, &s);
   dv_league_short_number(s.geomean_wall_per_sim_s, 3, cost, sizeof cost);
-  const char *cls = !s.reached ? "na" : s.not_reached ? "no" : "ok";
+  const char *cls = s.not_reached ? "no" : s.reached ? "ok" : "na";
   fprintf(fp, "<td class=\"%s\"><b>%zu/%zu</b> reached", cls, s.reached, s.reached + s.not_reached);
   if (s.reached) fprintf(fp, ", %s s/s", cost);
   const char *sep = "<small>not: ";

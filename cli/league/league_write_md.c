@@ -30,9 +30,9 @@ static void put_cell(FILE *fp, const dv_league_cell *c) {
   if (c->outcome == DV_LEAGUE_REACHED) {
     dv_league_short_number(c->wall_per_sim_s, 3, cost, sizeof cost);
     dv_league_settings_words(c, words, sizeof words);
-    fprintf(fp, " %s s/s (", cost);
-    dv_report_escape_markdown(fp, words);
-    fputs(") |", fp);
+    fprintf(fp, " %s s/s", cost);
+    if (words[0]) put_md(fp, " (", words, ")");
+    fputs(" |", fp);
     return;
   }
   dv_league_short_why(c, words, sizeof words);

@@ -365,8 +365,14 @@ int main(int argc, char **argv) {
           svgs[i]);
     free(text);
   }
-  CHECK(dv_league_write_csv("/nonexistent/dir", &lg, &err) != DV_OK && err.msg[0],
-        "writing into a missing directory succeeded");
+  int (*const writers[])(const char *, const dv_league *, dv_error *) = {
+      dv_league_write_csv, dv_league_write_md, dv_league_write_html, dv_league_write_figures};
+  for (size_t i = 0; i < 4; i++) { /* an error in words, nothing printed */
+    err.msg[0] = '\0';
+    CHECK(
+        writers[i]("/nonexistent/dir", &lg, &err) != DV_OK && err.msg[0] && !strchr(err.msg, '\n'),
+        "writer %zu: into a missing directory: [%s]", i, err.msg);
+  }
   if (argc == 1) { /* nothing else may be left: no temporary */
     const char *const files[] = {"league.csv", "league.md", "league.html",
                                  svgs[0],      svgs[1],     svgs[2]};
