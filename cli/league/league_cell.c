@@ -199,7 +199,9 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   snprintf(c->choice_key, sizeof c->choice_key, "%s", s->choice_key);
   snprintf(c->choice, sizeof c->choice, "%s", p->choice);
   snprintf(c->step_key, sizeof c->step_key, "%s", s->step_key);
-  c->step = p->step;
+  char step[32]; /* the step as the probe's override wrote it, so that it reruns exactly */
+  snprintf(step, sizeof step, "%.9g", p->step);
+  c->step = strtod(step, NULL);
   keep_points(s, p->choice, c);
   if (s->probes[0].point.thinner) {
     c->outcome = DV_LEAGUE_CANNOT_MODEL;
