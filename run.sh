@@ -88,6 +88,7 @@ case "${1:-run}" in
       "$BUILD_DIR/bench/bare_ode" .
     bash bench/bench_startup.sh "$BUILD_DIR/cli/diskval"
     bash bench/bench_compare.sh "$BUILD_DIR/cli/diskval" .
+    bash bench/bench_league.sh "$BUILD_DIR/cli/diskval" .
     ;;
   run)
     # the default suite: every engine against the references, a report for people and CI

@@ -67,7 +67,8 @@ static int probe(ctx *c, const char *choice, double step, dv_error *err) {
   }
   snprintf(p->choice, sizeof p->choice, "%s", choice ? choice : "default");
   p->step = step;
-  if (dv_search_sweep_probe(c->sc, c->sp.engine, ptrs, n, &p->point, err)) return -1;
+  if (dv_search_sweep_probe_in(c->bounds.refs, c->sc, c->sp.engine, ptrs, n, &p->point, err))
+    return -1;
   take_path_tolerance(c, &p->point);
   const double e = shortfall(s, &p->point);
   /* a run that lay down before the reference's end compared too short a window */

@@ -79,7 +79,9 @@ typedef struct dv_search {
   char stopped[512]; /* bounded: the choices whose search a bound ended, and which ("" none) */
 } dv_search;
 
-/* what bounds a search besides its tolerance (dv_search_best_bounded) */
+/* what bounds a search besides its tolerance, and what its probes reuse
+ * (dv_search_best_bounded) */
+struct dv_comparison;
 typedef struct dv_search_bounds {
   int with_path;   /* the path too, at the scene's path limit scaled as its theta limit is
                       scaled to the tolerance (taken from the first probe that compared) */
@@ -87,6 +89,9 @@ typedef struct dv_search_bounds {
                       the choice's last probe, is above it (<= 0: none) */
   int stop_at_floor; /* a choice whose error falls at an order below DV_FLOOR_ORDER over
                         two halvings of the step, both exceeding, is searched no further */
+  const struct dv_comparison *refs; /* the references of the scene already run, reused by
+                                       every probe (dv_search_sweep_probe_in); NULL: each
+                                       probe runs its own */
 } dv_search_bounds;
 
 /* the cheapest settings of engine meeting theta_max_err <= DV_SEARCH_MARGIN tol */

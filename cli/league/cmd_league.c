@@ -71,7 +71,6 @@ static int engine_list(const char *list, const dv_engine_type **engines) {
       if ((*e)->role == DV_ENGINE_CONTACT) engines[n++] = *e;
     engines[n] = NULL;
   }
-  dv_engine_choose_only(engines);
   return DV_EXIT_OK;
 }
 
@@ -135,6 +134,9 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
   if (!code) code = dv_cli_explainer("league", cause, &a->sets, &explain);
   if (!code) code = engine_list(list, engines);
   if (!code) code = object_files(&a->args, &files);
+  /* loaded without a settings probe: every run of a search gives its own step and integrator */
+  static const dv_engine_type *const none[] = {NULL};
+  dv_engine_choose_only(none);
   dv_scenario *objects = code ? NULL : calloc(files.n, sizeof *objects);
   if (!code && !objects) code = dv_cli_error("league", "out of memory");
   for (size_t i = 0; !code && i < files.n; i++) {
@@ -146,6 +148,7 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
         code = dv_cli_error("league", "%s and %s both name their object '%s'", objects[k].path,
                             objects[i].path, objects[k].name);
   }
+  if (!code) dv_engine_choose_only(engines);
   dv_league lg = {0};
   dv_error err = {{0}};
   int lock = -1;

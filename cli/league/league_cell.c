@@ -11,7 +11,29 @@
 #include "dv_clock.h"
 #include "io_file.h"
 #include "io_json.h"
+#include "run_scenario.h"
 #include "search_best.h"
+
+struct dv_comparison *dv_league_pair_references(const dv_league_pair *pair) {
+  dv_comparison *c = malloc(sizeof *c);
+  dv_error err = {{0}};
+  const dv_engine_type *engine = dv_engine_find(pair->engine->name);
+  if (!c || !engine) return free(c), NULL;
+  dv_run_comparison_begin(pair->sc, c);
+  if (dv_run_thin_reference(pair->sc, c, &err)) return dv_league_pair_references_free(c), NULL;
+  const double h = dv_engine_half_thickness(engine, pair->sc);
+  if (h > 0.0) {
+    dv_run_matched_reference(pair->sc, h, &c->matched[0]);
+    c->nmatched = 1;
+    if (c->matched[0].status < 0) return dv_league_pair_references_free(c), NULL;
+  }
+  return c;
+}
+
+void dv_league_pair_references_free(struct dv_comparison *refs) {
+  if (refs) dv_run_comparison_free(refs);
+  free(refs);
+}
 
 void dv_league_report_dir(const char *object, const char *engine, double target, char *out,
                           size_t size) {
@@ -181,7 +203,7 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   c->npoints = 0;
   dv_search *s = calloc(1, sizeof *s);
   dv_error err = {{0}};
-  const dv_search_bounds bounds = {1, pair->cost_cap, 1};
+  const dv_search_bounds bounds = {1, pair->cost_cap, 1, pair->refs};
   if (!s || dv_search_best_bounded(pair->sc, pair->engine->name, c->target, &bounds, s, &err)) {
     snprintf(c->why, sizeof c->why, "error: %.220s", s ? err.msg : "out of memory");
     c->wall_s = dv_clock_now() - began;

@@ -16,7 +16,15 @@ typedef struct dv_league_pair {
   double cost_cap;
   const char *out_dir;          /* the league's: reports go to compare/OBJECT/ENGINE-TARGET/ */
   const dv_report_explain *explain; /* the cause of a backing compare that fails */
+  const struct dv_comparison *refs; /* the object's references, run once for the pair's
+                                       searches (dv_league_pair_references); may be NULL */
 } dv_league_pair;
+
+/* the references of pair's object for its engine: the thin disk, its
+ * amplification and the matched reference of the engine's body; NULL when
+ * one fails (each probe then runs its own). Free with dv_league_pair_references_free */
+struct dv_comparison *dv_league_pair_references(const dv_league_pair *pair);
+void dv_league_pair_references_free(struct dv_comparison *refs);
 
 /* the backing report's folder of a cell, relative to the league's */
 void dv_league_report_dir(const char *object, const char *engine, double target, char *out,

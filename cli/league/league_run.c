@@ -104,8 +104,11 @@ static void run_pair(size_t k, void *result, void *vctx) {
   const dv_league_request *rq = x->rq;
   dv_league_cell *cells = result;
   const size_t o = k / x->nengines, e = k % x->nengines;
-  const dv_league_pair pair = {&rq->objects[o], &x->lg->objects[o], x->engines[e], rq->targets,
-                               rq->ntargets, rq->cost_cap, rq->out_dir, rq->explain};
+  dv_league_pair pair = {&rq->objects[o], &x->lg->objects[o], x->engines[e], rq->targets,
+                         rq->ntargets, rq->cost_cap, rq->out_dir, rq->explain, NULL};
+  int todo = 0;
+  for (size_t t = 0; t < rq->ntargets; t++) todo |= cell_at(x->lg, k, t)->outcome == DV_LEAGUE_NOT_RUN;
+  if (todo) pair.refs = dv_league_pair_references(&pair);
   for (size_t t = 0; t < rq->ntargets; t++) {
     cells[t] = *cell_at(x->lg, k, t);
     if (cells[t].outcome != DV_LEAGUE_NOT_RUN) continue;
@@ -113,6 +116,7 @@ static void run_pair(size_t k, void *result, void *vctx) {
     dv_error err = {{0}};
     if (to_cache(rq->out_dir, &cells[t], &err)) fprintf(stderr, "diskval league: %s\n", err.msg);
   }
+  dv_league_pair_references_free((struct dv_comparison *)pair.refs);
 }
 
 /* as each pair ends: its cells into the league, and a progress note */
