@@ -160,8 +160,9 @@ static void say_stopped(dv_search *s, const lane *l, const char *why) {
            l->choice ? l->choice : "default", why);
 }
 
-/* whether a bound ends lane before its next probe: a forecast cost over the
- * cap, or errors that have stopped falling with the step */
+/* whether a bound ends lane before its next probe: a finer step whose cost,
+ * forecast, is over the cap (a coarser one costs less than a run made), or
+ * errors that have stopped falling with the step */
 static int bounded(ctx *c, lane *l) {
   dv_search *s = c->out;
   char why[200];
@@ -170,7 +171,7 @@ static int bounded(ctx *c, lane *l) {
   const double own = last->point.steps > 0 && last->point.sim_s > 0.0
                          ? last->point.wall_s / last->point.sim_s * last->step / l->b.h
                          : NAN;
-  if (c->bounds.cost_cap > 0.0 && own > c->bounds.cost_cap) {
+  if (c->bounds.cost_cap > 0.0 && l->b.h < last->step && own > c->bounds.cost_cap) {
     snprintf(why, sizeof why,
              "the cost cap: a step of %.3g s would cost about %.3g s a simulated s (cap %g)",
              l->b.h, own, c->bounds.cost_cap);

@@ -85,8 +85,8 @@ struct dv_comparison;
 typedef struct dv_search_bounds {
   int with_path;   /* the path too, at the scene's path limit scaled as its theta limit is
                       scaled to the tolerance (taken from the first probe that compared) */
-  double cost_cap; /* s of wall a simulated s: no probe is run whose cost, forecast from
-                      the choice's last probe, is above it (<= 0: none) */
+  double cost_cap; /* s of wall a simulated s: no finer step is probed whose cost, forecast
+                      from the choice's last probe, is above it (<= 0: none) */
   int stop_at_floor; /* a choice whose error falls at an order below DV_FLOOR_ORDER over
                         two halvings of the step, both exceeding, is searched no further */
   const struct dv_comparison *refs; /* the references of the scene already run, reused by

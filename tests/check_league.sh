@@ -28,6 +28,10 @@ check '[ $code -eq 0 ]' "league exit $code: $(cat "$work/err")"
 check '[ "$(jq ".cells | length" "$json")" -eq 8 ]' "not 8 cells: $(jq ".cells | length" "$json")"
 check '[ "$(jq "[.cells[] | select(.outcome == \"not run\" or (.why | startswith(\"error\")))] | length" "$json")" -eq 0 ]' \
   "a cell did not run: $(jq -c "[.cells[] | select(.outcome == \"not run\") | .why]" "$json")"
+# both engines reach both targets on both objects (measured: every cell reached, the
+# nearest to its limit MuJoCo's coin at 1e-3, path 4.9e-5 of 1.1e-4 m)
+check '[ "$(jq "[.cells[] | select(.reached)] | length" "$json")" -eq 8 ]' \
+  "cells not reached: $(jq -c "[.cells[] | select(.reached | not) | [.object, .engine, .target, .why]]" "$json")"
 # a reached cell's own numbers are within its targets, and its report is there
 bad=$(jq -r '.cells[] | select(.reached) | select(.theta_max_err > .target or
   .path_max_err > .path_target) | "\(.object) \(.engine) \(.target)"' "$json")
@@ -74,9 +78,10 @@ fi
 # the cache: nothing runs again; an edited object's cells do
 keys() { jq -r '.cells[] | "\(.object) \(.engine) \(.target) \(.key) \(.wall_s)"' "$1"; }
 keys "$json" >"$work/keys1"
+jq -S .cells "$json" >"$work/cells1"
 league --out "$work/L" >/dev/null 2>"$work/err2"
 check 'grep -q "8 of 8 cells from the cache" "$work/err2"' "the second league ran again: $(cat "$work/err2")"
-check 'keys "$json" | cmp -s - "$work/keys1"' "the cached cells changed"
+check 'jq -S .cells "$json" | cmp -s - "$work/cells1"' "the cells read back from the cache differ"
 echo "; edited" >>"$work/euro_coin.ini"
 league --out "$work/L" >/dev/null 2>"$work/err3"
 check 'grep -q "4 of 8 cells from the cache" "$work/err3"' "an edited object was not run again: $(cat "$work/err3")"
@@ -101,6 +106,15 @@ stop_league --out "$work/S" >/dev/null 2>"$work/err4"
 check 'grep -q "$kept of 4 cells from the cache" "$work/err4"' "the resumed league: $(head -2 "$work/err4")"
 check '[ "$(jq "[.cells[] | select(.outcome == \"not run\")] | length" "$work/S/league.json")" -eq 0 ]' \
   "the resumed league left cells not run"
+
+# the cost cap: no run over it; a cell it stops says so
+# (measured: ODE's first run on the circle, at 4.4e-6 s, costs 0.2 s a simulated s
+# for 2e-4 rad; 1e-5 rad needs finer steps)
+"$diskval" league "$work/short_circle.ini" --engines ode --targets 1e-5 --cost-cap 0.02 --cause none \
+  --quiet --out "$work/C" >/dev/null 2>&1
+check 'jq -e ".cells[0] | (.reached | not) and (.why | startswith(\"cost cap\"))
+  and ([.points[] | select(.step < 4.4e-6)] | length == 0)" "$work/C/league.json" >/dev/null' \
+  "a cap of 0.02 s a simulated s: $(jq -c ".cells[0] | [.outcome, .why, [.points[].step]]" "$work/C/league.json")"
 
 # bad input, and a --out that holds a user's file
 refused "targets not numbers" "targets" "$diskval" league "${objects[@]}" --targets 1e-3,abc --out "$work/B"

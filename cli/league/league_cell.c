@@ -113,6 +113,7 @@ static void why_not(const dv_search *s, int near, dv_league_cell *c) {
   char key[40];
   snprintf(key, sizeof key, "%s: ", p->choice);
   const char *at = strstr(s->stopped, key);
+  if (!at && s->stopped[0]) at = s->stopped; /* its choice was not searched on (a tie): the first */
   if (at) snprintf(own, sizeof own, "%.*s", (int)strcspn(at, ";"), at);
   const char *word = strstr(own, "cost cap")          ? "cost cap"
                      : strstr(own, "stops falling")   ? "error floor"
@@ -237,8 +238,11 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
     snprintf(c->why, sizeof c->why, "error: the compare at these settings: %.180s", err.msg);
     c->outcome = DV_LEAGUE_NOT_REACHED;
   } else if (c->theta_max_err <= c->target &&
-             (isnan(c->path_target) || c->path_max_err <= c->path_target))
+             (isnan(c->path_target) || c->path_max_err <= c->path_target)) {
     c->outcome = DV_LEAGUE_REACHED;
+    if (s->best < 0) /* the nearest run is within the targets, not within half of them */
+      snprintf(c->why, sizeof c->why, "marginal: no run within half the targets (best's margin)");
+  }
   else if (s->best >= 0) /* the search's winner, not met again by its compare */
     snprintf(c->why, sizeof c->why, "the compare at the search's settings: theta %.3g rad, path %.3g m",
              c->theta_max_err, c->path_max_err);

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "engine_choose.h"
 #include "exec_pool.h"
 #include "io_file.h"
 #include "io_json.h"
@@ -106,6 +107,9 @@ static void run_pair(size_t k, void *result, void *vctx) {
   const size_t o = k / x->nengines, e = k % x->nengines;
   dv_league_pair pair = {&rq->objects[o], &x->lg->objects[o], x->engines[e], rq->targets,
                          rq->ntargets, rq->cost_cap, rq->out_dir, rq->explain, NULL};
+  /* a probe derives its scene again: the settings of this engine alone are chosen (its own process) */
+  const dv_engine_type *const only[] = {dv_engine_find(x->engines[e]->name), NULL};
+  dv_engine_choose_only(only);
   int todo = 0;
   for (size_t t = 0; t < rq->ntargets; t++) todo |= cell_at(x->lg, k, t)->outcome == DV_LEAGUE_NOT_RUN;
   if (todo) pair.refs = dv_league_pair_references(&pair);
