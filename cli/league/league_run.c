@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "engine_choose.h"
+#include "exec_mpi.h"
 #include "exec_pool.h"
 #include "io_file.h"
 #include "io_json.h"
@@ -218,7 +219,8 @@ int dv_league_run(const dv_league_request *rq, dv_league *lg, dv_error *err) {
   int status = fill(rq, lg, err);
   char cache[4096];
   if (!status) status = dv_io_path(cache, sizeof cache, err, "%s/" CACHE_DIR, rq->out_dir);
-  if (!status) status = dv_io_make_dirs(cache, err);
+  /* rank 0 alone: its check of the --out comes first (a worker's folder would fail it) */
+  if (!status && dv_exec_mpi_rank() == 0) status = dv_io_make_dirs(cache, err);
   if (status) return status;
   league_ctx x = {rq, lg, 0, 0, NULL, NULL, NULL};
   x.engines = calloc(lg->nengines + 1, sizeof *x.engines);
