@@ -8,6 +8,7 @@
 #   - the cache: the same league again runs nothing; an edited object's cells
 #     run again, the other's are kept; a league stopped by SIGTERM exits 130,
 #     and the next run finishes only what was left
+#   - an engine with no shape for the object's body is "cannot model", run on nothing
 #   - bad input refused in one line, and a --out holding a user's file
 #     refused with the file untouched
 # Exit status: 0 as expected, 1 a difference, 77 skipped (no jq).
@@ -115,6 +116,14 @@ check '[ "$(jq "[.cells[] | select(.outcome == \"not run\")] | length" "$work/S/
 check 'jq -e ".cells[0] | (.reached | not) and (.why | startswith(\"cost cap\"))
   and ([.points[] | select(.step < 4.4e-6)] | length == 0)" "$work/C/league.json" >/dev/null' \
   "a cap of 0.02 s a simulated s: $(jq -c ".cells[0] | [.outcome, .why, [.points[].step]]" "$work/C/league.json")"
+
+# an engine with no shape for the object's body: said, nothing run (the test adapter
+# simulates a cylinder, never the thin disk)
+DISKVAL_ADAPTERS=$src/tests/adapters "$diskval" league "$work/short_circle.ini" --engines replay \
+  --cause none --quiet --out "$work/T" >/dev/null 2>&1
+check 'jq -e ".cells[0] | .outcome == \"cannot model\" and (.why | startswith(\"cannot model: no thin disk\"))
+  and .report == \"\" and (.points | length) == 0" "$work/T/league.json" >/dev/null' \
+  "a thin object in an engine with no thin disk: $(jq -c ".cells[0] | [.outcome, .why]" "$work/T/league.json")"
 
 # bad input, and a --out that holds a user's file
 refused "targets not numbers" "targets" "$diskval" league "${objects[@]}" --targets 1e-3,abc --out "$work/B"

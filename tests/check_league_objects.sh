@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check_objects.sh DISKVAL LEAGUE_DIR: the league's objects are what
+# check_league_objects.sh DISKVAL LEAGUE_DIR: the league's objects are what
 # league/README.md says they are.
 #   - every file is valid (read, checked and its steady motion solved: a run of
 #     the reference over one output step exits 0), begins with its `;`
@@ -17,8 +17,8 @@
 # About 0.5 s in all.
 set -u
 export LC_ALL=C
-dv=${1:?usage: check_objects.sh DISKVAL LEAGUE_DIR}
-dir=${2:?usage: check_objects.sh DISKVAL LEAGUE_DIR}
+dv=${1:?usage: check_league_objects.sh DISKVAL LEAGUE_DIR}
+dir=${2:?usage: check_league_objects.sh DISKVAL LEAGUE_DIR}
 fail=0
 check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 work=$(mktemp -d)
