@@ -24,7 +24,7 @@ long=$sc/hard/long_horizon.ini
 start_long() {
   "$dv" simulate "$long" --engine mujoco --out "$1" --forces "$1.forces" 2>/dev/null &
   pid=$!
-  for _ in $(seq 100); do
+  for _ in $(seq 1200); do # up to 60 s: a sanitizer build on a busy machine starts slowly
     compgen -G ".diskval-tmp.$pid.*" >/dev/null && return
     sleep 0.05
   done
