@@ -49,6 +49,10 @@ void dv_league_settings_words(const dv_league_cell *c, char *buf, size_t size) {
 
 void dv_league_short_why(const dv_league_cell *c, char *buf, size_t size) {
   const char *why = c->why[0] ? c->why : dv_league_outcome_name(c->outcome);
+  const char *outcome = dv_league_outcome_name(c->outcome);
+  const size_t lead = strlen(outcome);
+  if (!strncmp(why, outcome, lead) && !strncmp(why + lead, ": ", 2) && why[lead + 2])
+    why += lead + 2; /* "cannot model: no thin disk": the outcome is said beside it */
   size_t n = strcspn(why, ":;(");
   const char *comma = strstr(why, ", ");
   if (comma && (size_t)(comma - why) < n) n = (size_t)(comma - why);
