@@ -37,6 +37,10 @@ check '[ "$(jq "[.cells[] | select(.reached)] | length" "$json")" -eq 8 ]' \
 bad=$(jq -r '.cells[] | select(.reached) | select(.theta_max_err > .target or
   .path_max_err > .path_target) | "\(.object) \(.engine) \(.target)"' "$json")
 check '[ -z "$bad" ]' "reached cells beyond their targets: $bad"
+# the settings of a reached cell are one of its search's points (its star on the figure)
+unmatched=$(jq -r '.cells[] | select(.reached) | . as $c | select([.points[] |
+  select(.choice == $c.choice and .step == $c.step)] | length == 0) | "\(.object) \(.engine) \(.target)"' "$json")
+check '[ -z "$unmatched" ]' "reached cells whose settings are none of their points: $unmatched"
 for r in $(jq -r '.cells[] | select(.reached) | .report' "$json"); do
   check '[ -f "$work/L/$r/report.json" ]' "no backing report $r"
 done

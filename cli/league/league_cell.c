@@ -48,7 +48,9 @@ static void keep_points(const dv_search *s, const char *choice, dv_league_cell *
       if ((strcmp(p->choice, choice) == 0) != (pass == 0)) continue;
       dv_league_point *q = &c->points[c->npoints++];
       snprintf(q->choice, sizeof q->choice, "%s", p->choice);
-      q->step = p->step;
+      char step[32]; /* as the probe's override wrote it (the cell's step too) */
+      snprintf(step, sizeof step, "%.9g", p->step);
+      q->step = strtod(step, NULL);
       q->ok = p->state != DV_PROBE_FAILED;
       q->theta_err = q->ok ? p->point.metric[DV_THETA_MAX_ERR] : NAN;
       q->path_err = q->ok ? p->point.metric[DV_PATH_MAX_ERR] : NAN;
