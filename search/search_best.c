@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "dv_clock.h"
+#include "run_limits.h"
 #include "run_progress.h"
 #include "scenario.h"
 
@@ -34,17 +35,18 @@ static double shortfall(const dv_search *s, const dv_sweep_point *q) {
   const double theta = q->metric[DV_THETA_MAX_ERR] / s->tolerance;
   if (isnan(s->path_tolerance)) return theta;
   const double path = q->metric[DV_PATH_MAX_ERR] / s->path_tolerance;
-  return isnan(path) || isnan(theta) ? NAN : fmax(theta, path);
+  /* slip at its own limit, not scaled: within the margin when within the limit */
+  const double slip = s->margin * q->metric[DV_SLIP_MAX] / q->limit[DV_SLIP_MAX];
+  return isnan(path) || isnan(theta) ? NAN : fmax(fmax(theta, path), slip > 0.0 ? slip : 0.0);
 }
 
 /* the path target, from the first probe that compared: the scene's path limit
- * scaled as its theta limit is scaled to the tolerance */
+ * scaled as the default theta limit is scaled to the tolerance */
 static void take_path_tolerance(const ctx *c, const dv_sweep_point *q) {
   dv_search *s = c->out;
-  const double theta = q->limit[DV_THETA_MAX_ERR], path = q->limit[DV_PATH_MAX_ERR];
-  if (c->bounds.with_path && isnan(s->path_tolerance) && theta > 0.0 && path > 0.0 &&
-      isfinite(theta) && isfinite(path))
-    s->path_tolerance = path * s->tolerance / theta;
+  const double path = q->limit[DV_PATH_MAX_ERR];
+  if (c->bounds.with_path && isnan(s->path_tolerance) && path > 0.0 && isfinite(path))
+    s->path_tolerance = path * s->tolerance / DV_LIMIT_THETA;
 }
 
 /* one probe: choice (NULL: the scenario's) and step */

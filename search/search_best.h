@@ -83,8 +83,9 @@ typedef struct dv_search {
  * (dv_search_best_bounded) */
 struct dv_comparison;
 typedef struct dv_search_bounds {
-  int with_path;   /* the path too, at the scene's path limit scaled as its theta limit is
-                      scaled to the tolerance (taken from the first probe that compared) */
+  int with_path;   /* the path too, at the scene's path limit scaled as the default theta
+                      limit (DV_LIMIT_THETA) is scaled to the tolerance (taken from the first
+                      probe that compared), and the slip within its limit */
   double cost_cap; /* s of wall a simulated s: no finer step is probed whose cost, forecast
                       from the choice's last probe, is above it (<= 0: none) */
   int stop_at_floor; /* a choice whose error falls at an order below DV_FLOOR_ORDER over

@@ -14,6 +14,7 @@
 #include "io_owned.h"
 #include "league.h"
 #include "league_run.h"
+#include "league_words.h"
 #include "run_progress.h"
 #include "run_scenario.h"
 
@@ -38,25 +39,40 @@ static const char HELP[] =
     "the same DIR resumes where a league stopped (a cell is reused while its object file,\n"
     "engine version, target, cost cap and --set are the same).\n"
     "--jobs N: pairs of object and engine at a time (default: the cores); under mpirun the\n"
-    "ranks share them.\n"
+    "ranks share them. At most 64 objects and 6 targets (each in (0, pi) rad).\n"
+    "--quiet: no progress line on a terminal, no warning before a long league.\n"
+    "A cell's claim re-runs with the league's --set overrides too (league.json: overrides).\n"
     "Exit status: 0 every cell ran, 1 a cell ended in an error, 2 bad input, 130 stopped by\n"
     "a signal (what finished is written and kept).\n";
 
-/* "1e-2,1e-3" into targets */
+/* "1e-2,1e-3" into targets: each in (0, pi) rad, told apart by the name of its files */
 static int parse_targets(const char *list, double *targets, size_t *n) {
   *n = 0;
-  for (const char *p = list; *p;) {
+  for (const char *p = list;;) {
     char *end;
     const double v = strtod(p, &end);
-    if (end == p || (*end && *end != ',') || !(v > 0.0 && v < 3.2))
-      return dv_cli_usage_error("league", "--targets: '%s' is no list of numbers in (0, 3.2) rad",
+    if (end == p || (*end && *end != ',') || !(v > 0.0 && v < M_PI))
+      return dv_cli_usage_error("league", "--targets: '%s' is no list of numbers in (0, pi) rad",
                                 list);
     if (*n == DV_LEAGUE_MAX_TARGETS)
       return dv_cli_usage_error("league", "--targets: at most %d", DV_LEAGUE_MAX_TARGETS);
+    for (size_t k = 0; k < *n; k++) {
+      char a[32], b[32];
+      snprintf(a, sizeof a, "%g", targets[k]), snprintf(b, sizeof b, "%g", v);
+      if (!strcmp(a, b))
+        return dv_cli_usage_error("league", "--targets: %s and %.17g are one target (%s)", a, v, b);
+    }
     targets[(*n)++] = v;
-    p = *end ? end + 1 : end;
+    if (!*end) return DV_EXIT_OK;
+    p = end + 1;
   }
-  return *n ? DV_EXIT_OK : dv_cli_usage_error("league", "--targets: none given");
+}
+
+/* whether objects a and b would write one figure (or are one object) */
+static int same_figure(const char *a, const char *b) {
+  char fa[128], fb[128];
+  dv_league_figure_file(a, fa, sizeof fa), dv_league_figure_file(b, fb, sizeof fb);
+  return !strcmp(a, b) || !strcmp(fa, fb);
 }
 
 /* every contact engine, outside ones too (NULL list), or the list's */
@@ -65,6 +81,10 @@ static int engine_list(const char *list, const dv_engine_type **engines) {
   if (list) {
     if (dv_engine_parse_list(list, engines, DV_MAX_ENGINES + 1, &err))
       return dv_cli_error("league", "%s", err.msg);
+    for (const dv_engine_type **e = engines; *e; e++)
+      if ((*e)->role != DV_ENGINE_CONTACT)
+        return dv_cli_usage_error("league", "--engines: %s is a reference, not a contact engine",
+                                  (*e)->name);
   } else {
     size_t n = 0;
     for (const dv_engine_type *const *e = dv_engine_list(); *e && n < DV_MAX_ENGINES; e++)
@@ -81,7 +101,7 @@ static void output_names(const dv_league *lg, char (*names)[96], const char **ou
   size_t n = 0;
   for (size_t i = 0; i < sizeof FIXED / sizeof FIXED[0]; i++) out[n++] = FIXED[i];
   for (size_t o = 0; o < lg->nobjects; o++) {
-    snprintf(names[o], sizeof names[o], "work_precision_%.64s.svg", lg->objects[o].name);
+    dv_league_figure_file(lg->objects[o].name, names[o], sizeof names[o]);
     out[n++] = names[o];
   }
   out[n] = NULL;
@@ -134,6 +154,9 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
   if (!code) code = dv_cli_explainer("league", cause, &a->sets, &explain);
   if (!code) code = engine_list(list, engines);
   if (!code) code = object_files(&a->args, &files);
+  if (!code && files.n > DV_LEAGUE_MAX_OBJECTS)
+    code = dv_cli_error("league", "%zu objects: a league takes at most %d", files.n,
+                        DV_LEAGUE_MAX_OBJECTS);
   /* loaded without a settings probe: every run of a search gives its own step and integrator */
   static const dv_engine_type *const none[] = {NULL};
   dv_engine_choose_only(none);
@@ -144,9 +167,9 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
     if (dv_cli_load_scenario("league", files.items[i], &a->sets, &objects[i], &err))
       code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
     for (size_t k = 0; !code && k < i; k++)
-      if (!strcmp(objects[k].name, objects[i].name))
-        code = dv_cli_error("league", "%s and %s both name their object '%s'", objects[k].path,
-                            objects[i].path, objects[k].name);
+      if (same_figure(objects[k].name, objects[i].name))
+        code = dv_cli_error("league", "%s and %s name their objects '%s' and '%s': one figure's name",
+                            objects[k].path, objects[i].path, objects[k].name, objects[i].name);
   }
   if (!code) dv_engine_choose_only(engines);
   dv_league lg = {0};
@@ -184,7 +207,7 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
       print_summary(&lg);
       size_t failed = 0;
       for (size_t k = 0; k < lg.ncells; k++)
-        failed += lg.cells[k].outcome == DV_LEAGUE_NOT_RUN || !strncmp(lg.cells[k].why, "error", 5);
+        failed += lg.cells[k].outcome == DV_LEAGUE_NOT_RUN || !strncmp(lg.cells[k].why, "error:", 6);
       printf("league: %s/league.html (%zu cells%s)\n", out, lg.ncells,
              status == DV_EVENT ? ", stopped by a signal: run again to resume" : "");
       code = status == DV_EVENT ? 130 : failed ? DV_EXIT_FAIL : DV_EXIT_OK;

@@ -103,6 +103,8 @@ typedef struct dv_league {
   size_t ncells; /* nobjects x (available engines) x ntargets, object-major, then engine, target */
   dv_league_cell *cells;
   int interrupted;
+  const char *const *overrides; /* the --set overrides every cell ran with (the caller's) */
+  size_t noverrides;
 } dv_league;
 
 /* an engine's standing at one target, over the objects it was run on */

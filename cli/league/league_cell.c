@@ -127,7 +127,8 @@ static void why_not(const dv_search *s, int near, dv_league_cell *c) {
 }
 
 /* the backing compare's numbers for the engine, from its report.json */
-static int read_report(const char *path, const char *engine, dv_league_cell *c, dv_error *err) {
+static int read_report(const char *path, const char *engine, dv_league_cell *c, int *slips,
+                       dv_error *err) {
   char why[256];
   cJSON *root = dv_io_json_read(path, 64L << 20, why, sizeof why);
   if (!root) return dv_fail(err, DV_ESYSTEM, "%.250s", why);
@@ -144,6 +145,11 @@ static int read_report(const char *path, const char *engine, dv_league_cell *c, 
 #define NUM(name) (cJSON_IsNumber(v = cJSON_GetObjectItemCaseSensitive(e, name)) ? v->valuedouble : NAN)
 #define TEXT(name) (cJSON_IsString(v = cJSON_GetObjectItemCaseSensitive(e, name)) ? v->valuestring : "")
     c->theta_max_err = NUM("theta_max_err");
+    const double slip = NUM("slip_max");
+    const cJSON *limits = cJSON_GetObjectItemCaseSensitive(e, "limits");
+    const cJSON *slip_limit = cJSON_GetObjectItemCaseSensitive(
+        cJSON_GetObjectItemCaseSensitive(limits, "slip_max"), "limit");
+    *slips = cJSON_IsNumber(slip_limit) && slip > slip_limit->valuedouble;
     c->path_max_err = NUM("path_max_err");
     c->wall_per_sim_s = NUM("wall_per_sim_s");
     const double steps = NUM("steps"), wall = NUM("wall_s");
@@ -163,7 +169,7 @@ static int read_report(const char *path, const char *engine, dv_league_cell *c, 
 /* the compare at the cell's settings with its targets as the engine's limits:
  * its report in the league's folder, its numbers into the cell */
 static int backing_compare(const dv_league_pair *pair, const dv_search *s, const dv_probe *p,
-                           dv_league_cell *c, dv_error *err) {
+                           dv_league_cell *c, int *slips, dv_error *err) {
   const char *engine = pair->engine->name;
   char over[4][192], dir[1024], rel[256], path[1200];
   const char *ptrs[4];
@@ -189,7 +195,7 @@ static int backing_compare(const dv_league_pair *pair, const dv_search *s, const
     status = code == DV_SUITE_ERROR ? DV_ESYSTEM : DV_OK;
   }
   if (!status) status = dv_io_path(path, sizeof path, err, "%s/%s/report.json", dir, sc->name);
-  if (!status) status = read_report(path, engine, c, err);
+  if (!status) status = read_report(path, engine, c, slips, err);
   if (!status) snprintf(c->report, sizeof c->report, "%.150s/%.60s", rel, sc->name);
   free(sc);
   return status;
@@ -209,10 +215,10 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
     const double h = dv_engine_half_thickness(type, pair->sc);
     c->outcome = DV_LEAGUE_CANNOT_MODEL;
     if (pair->sc->thickness > 0.0)
-      snprintf(c->why, sizeof c->why, "cannot model: no cylinder of the object's %.3g mm (it would simulate %s)",
+      snprintf(c->why, sizeof c->why, "cannot model: no cylinder of the object's %.3g mm (as the scene sets it up, it would simulate %s)",
                1e3 * pair->sc->thickness, h > 0.0 ? "another body" : "a thin disk");
     else
-      snprintf(c->why, sizeof c->why, "cannot model: no thin disk (it would simulate a cylinder %.3g mm thick)",
+      snprintf(c->why, sizeof c->why, "cannot model: no thin disk (as the scene sets it up, it would simulate a cylinder %.3g mm thick)",
                2e3 * h);
     c->wall_s = dv_clock_now() - began;
     return;
@@ -249,9 +255,14 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   }
   c->order = observed_order(s, p->choice);
   if (s->best < 0) why_not(s, at, c);
-  if (backing_compare(pair, s, p, c, &err)) {
+  int slips = 0;
+  if (backing_compare(pair, s, p, c, &slips, &err)) {
     snprintf(c->why, sizeof c->why, "error: the compare at these settings: %.180s", err.msg);
     c->outcome = DV_LEAGUE_NOT_REACHED;
+  } else if (slips) { /* the target is not reached by a disk that slides */
+    if (s->best >= 0 || !c->why[0])
+      snprintf(c->why, sizeof c->why, "slips: its slip is over its limit at theta %.3g rad, path %.3g m",
+               c->theta_max_err, c->path_max_err);
   } else if (c->theta_max_err <= c->target &&
              (isnan(c->path_target) || c->path_max_err <= c->path_target)) {
     c->outcome = DV_LEAGUE_REACHED;

@@ -173,6 +173,9 @@ int dv_league_write_json(const char *dir, const dv_league *lg, dv_error *err) {
   cJSON_AddStringToObject(root, "diskval_version", lg->diskval_version);
   add_number(root, "cost_cap", lg->cost_cap);
   cJSON_AddBoolToObject(root, "interrupted", lg->interrupted);
+  cJSON *sets = cJSON_AddArrayToObject(root, "overrides");
+  for (size_t i = 0; i < lg->noverrides; i++)
+    cJSON_AddItemToArray(sets, cJSON_CreateString(lg->overrides[i]));
   cJSON *targets = cJSON_AddArrayToObject(root, "targets");
   for (size_t t = 0; t < lg->ntargets; t++) cJSON_AddItemToArray(targets, dv_io_json_double(lg->targets[t]));
   cJSON *objects = cJSON_AddArrayToObject(root, "objects");

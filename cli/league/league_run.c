@@ -67,8 +67,13 @@ static int from_cache(const char *dir, dv_league_cell *c) {
   if (access(path, F_OK)) return -1;
   cJSON *j = dv_io_json_read(path, 16L << 20, why, sizeof why);
   dv_league_cell *got = malloc(sizeof *got);
-  const int ok = j && got && !dv_league_cell_from_json(j, got, &err) && !strcmp(got->key, c->key) &&
-                 got->outcome != DV_LEAGUE_NOT_RUN;
+  int ok = j && got && !dv_league_cell_from_json(j, got, &err) && !strcmp(got->key, c->key) &&
+           got->outcome != DV_LEAGUE_NOT_RUN;
+  /* a cell whose backing report is gone is run again: its link would lead nowhere */
+  if (ok && got->report[0] &&
+      (dv_io_path(path, sizeof path, &err, "%s/%s/report.json", dir, got->report) ||
+       access(path, F_OK)))
+    ok = 0;
   if (ok) *c = *got;
   cJSON_Delete(j);
   free(got);
@@ -92,8 +97,8 @@ typedef struct league_ctx {
   dv_league *lg;
   size_t npairs, nengines; /* available engines */
   const dv_league_engine **engines;
-  int *todo;               /* per pair: some cell to run */
-  dv_league_cell *slots;   /* npairs x ntargets, the pool's results */
+  size_t *todo, ntodo;     /* the pairs with a cell to run: the pool's tasks */
+  dv_league_cell *slots;   /* ntodo x ntargets, the pool's results */
 } league_ctx;
 
 static dv_league_cell *cell_at(dv_league *lg, size_t pair, size_t t) {
@@ -101,8 +106,9 @@ static dv_league_cell *cell_at(dv_league *lg, size_t pair, size_t t) {
 }
 
 /* the pool's task: the pair's cells not in the cache, each cached as it ends */
-static void run_pair(size_t k, void *result, void *vctx) {
+static void run_pair(size_t task, void *result, void *vctx) {
   const league_ctx *x = vctx;
+  const size_t k = x->todo[task];
   const dv_league_request *rq = x->rq;
   dv_league_cell *cells = result;
   const size_t o = k / x->nengines, e = k % x->nengines;
@@ -125,11 +131,12 @@ static void run_pair(size_t k, void *result, void *vctx) {
 }
 
 /* as each pair ends: its cells into the league, and a progress note */
-static void pair_ended(size_t k, int ran, void *vctx) {
+static void pair_ended(size_t task, int ran, void *vctx) {
   league_ctx *x = vctx;
+  const size_t k = x->todo[task];
   char note[160] = "";
   if (ran) {
-    for (size_t t = 0; t < x->lg->ntargets; t++) *cell_at(x->lg, k, t) = x->slots[k * x->lg->ntargets + t];
+    for (size_t t = 0; t < x->lg->ntargets; t++) *cell_at(x->lg, k, t) = x->slots[task * x->lg->ntargets + t];
     const dv_league_cell *c = cell_at(x->lg, k, 0);
     snprintf(note, sizeof note, "%s %s: %s", c->object, c->engine, dv_league_outcome_name(c->outcome));
   }
@@ -159,6 +166,8 @@ static void describe_machine(dv_league *lg) {
 static int fill(const dv_league_request *rq, dv_league *lg, dv_error *err) {
   describe_machine(lg);
   lg->cost_cap = rq->cost_cap;
+  lg->overrides = rq->overrides;
+  lg->noverrides = rq->noverrides;
   if (rq->ntargets > DV_LEAGUE_MAX_TARGETS || !rq->ntargets)
     return dv_fail(err, DV_EINPUT, "from 1 to %d targets", DV_LEAGUE_MAX_TARGETS);
   if (rq->nobjects > DV_LEAGUE_MAX_OBJECTS)
@@ -222,14 +231,20 @@ int dv_league_run(const dv_league_request *rq, dv_league *lg, dv_error *err) {
   /* rank 0 alone: its check of the --out comes first (a worker's folder would fail it) */
   if (!status && dv_exec_mpi_rank() == 0) status = dv_io_make_dirs(cache, err);
   if (status) return status;
-  league_ctx x = {rq, lg, 0, 0, NULL, NULL, NULL};
+  league_ctx x = {rq, lg, 0, 0, NULL, NULL, 0, NULL};
   x.engines = calloc(lg->nengines + 1, sizeof *x.engines);
   for (size_t e = 0; x.engines && e < lg->nengines; e++)
     if (lg->engines[e].available) x.engines[x.nengines++] = &lg->engines[e];
   x.npairs = lg->nobjects * x.nengines;
-  x.slots = calloc(x.npairs ? x.npairs * lg->ntargets : 1, sizeof *x.slots);
-  if (!x.engines || !x.slots) {
-    free(x.engines), free(x.slots);
+  x.todo = calloc(x.npairs + 1, sizeof *x.todo);
+  for (size_t k = 0; x.todo && k < x.npairs; k++) {
+    int some = 0;
+    for (size_t t = 0; t < lg->ntargets; t++) some |= cell_at(lg, k, t)->outcome == DV_LEAGUE_NOT_RUN;
+    if (some) x.todo[x.ntodo++] = k;
+  }
+  x.slots = calloc(x.ntodo ? x.ntodo * lg->ntargets : 1, sizeof *x.slots);
+  if (!x.engines || !x.slots || !x.todo) {
+    free(x.engines), free(x.slots), free(x.todo);
     return dv_fail(err, DV_ESYSTEM, "out of memory");
   }
   size_t cached = 0;
@@ -237,11 +252,12 @@ int dv_league_run(const dv_league_request *rq, dv_league *lg, dv_error *err) {
   if (cached)
     dv_run_progress_say("%zu of %zu cells from the cache (%s/" CACHE_DIR ")", cached, lg->ncells,
                         rq->out_dir);
-  dv_run_progress_tasks_begin("pair", x.npairs);
-  const int ran = dv_exec_pool_run(x.npairs, lg->ntargets * sizeof *x.slots, run_pair, &x, x.slots,
-                                   rq->jobs, pair_ended);
+  dv_run_progress_tasks_begin("pair", x.ntodo);
+  const int ran = x.ntodo ? dv_exec_pool_run(x.ntodo, lg->ntargets * sizeof *x.slots, run_pair, &x,
+                                             x.slots, rq->jobs, pair_ended)
+                          : DV_EXEC_DONE;
   dv_run_progress_tasks_end();
-  free(x.engines), free(x.slots);
+  free(x.engines), free(x.slots), free(x.todo);
   if (ran == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
   if (ran == DV_EXEC_WORKER) return DV_LEAGUE_WORKER;
   lg->interrupted = ran == DV_EXEC_INTERRUPTED;

@@ -117,7 +117,10 @@ static void put_provenance(FILE *fp, const dv_league *lg) {
     dv_report_escape_markdown(fp, en->available ? en->version : "not available");
     if (!en->available && en->why[0]) put_md(fp, " (", en->why, ")");
   }
-  fprintf(fp, ". Cost cap: %s s of wall per simulated s.\n\n", cap);
+  fprintf(fp, ". Cost cap: %s s of wall per simulated s.", cap);
+  for (size_t i = 0; i < lg->noverrides; i++) /* a claim re-runs with them too */
+    put_md(fp, i ? " " : " Every cell ran with --set ", lg->overrides[i], i + 1 < lg->noverrides ? "," : ".");
+  fputs("\n\n", fp);
   fputs(
       "A cell's settings are the cheapest that best's search finds meeting both its theta "
       "target and the matching path target (the scene's path limit scaled as its theta limit "
