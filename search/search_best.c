@@ -203,6 +203,10 @@ static int step_lane(ctx *c, lane *l, dv_error *err) {
     l->b.h = NAN;
     return -2;
   }
+  char given[32]; /* the step as a run is given it (9 digits): what the probe, the limit and a
+                     rerun of the settings all hold */
+  snprintf(given, sizeof given, "%.9g", l->b.h);
+  l->b.h = strtod(given, NULL);
   const double began = dv_clock_now();
   const int ok = probe(c, l->choice, l->b.h, err);
   const double wall = dv_clock_now() - began;

@@ -53,7 +53,7 @@ typedef struct dv_step_cost {
 
 typedef struct dv_probe {
   char choice[32];      /* the discrete setting, e.g. "rk4" */
-  double step;          /* the continuous setting, e.g. the timestep */
+  double step;          /* the continuous setting, e.g. the timestep, as the run was given it */
   dv_sweep_point point; /* what the run gave */
   int pass;             /* ok and theta error within margin x tolerance */
   dv_probe_state state;

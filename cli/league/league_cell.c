@@ -48,9 +48,7 @@ static void keep_points(const dv_search *s, const char *choice, dv_league_cell *
       if ((strcmp(p->choice, choice) == 0) != (pass == 0)) continue;
       dv_league_point *q = &c->points[c->npoints++];
       snprintf(q->choice, sizeof q->choice, "%s", p->choice);
-      char step[32]; /* as the probe's override wrote it (the cell's step too) */
-      snprintf(step, sizeof step, "%.9g", p->step);
-      q->step = strtod(step, NULL);
+      q->step = p->step;
       q->ok = p->state != DV_PROBE_FAILED;
       q->theta_err = q->ok ? p->point.metric[DV_THETA_MAX_ERR] : NAN;
       q->path_err = q->ok ? p->point.metric[DV_PATH_MAX_ERR] : NAN;
@@ -243,9 +241,7 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   snprintf(c->choice_key, sizeof c->choice_key, "%s", s->choice_key);
   snprintf(c->choice, sizeof c->choice, "%s", p->choice);
   snprintf(c->step_key, sizeof c->step_key, "%s", s->step_key);
-  char step[32]; /* the step as the probe's override wrote it, so that it reruns exactly */
-  snprintf(step, sizeof step, "%.9g", p->step);
-  c->step = strtod(step, NULL);
+  c->step = p->step;
   keep_points(s, p->choice, c);
   if (s->probes[0].point.thinner) {
     c->outcome = DV_LEAGUE_CANNOT_MODEL;

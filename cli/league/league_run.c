@@ -117,9 +117,7 @@ static void run_pair(size_t task, void *result, void *vctx) {
   /* a probe derives its scene again: the settings of this engine alone are chosen (its own process) */
   const dv_engine_type *const only[] = {dv_engine_find(x->engines[e]->name), NULL};
   dv_engine_choose_only(only);
-  int todo = 0;
-  for (size_t t = 0; t < rq->ntargets; t++) todo |= cell_at(x->lg, k, t)->outcome == DV_LEAGUE_NOT_RUN;
-  if (todo) pair.refs = dv_league_pair_references(&pair);
+  pair.refs = dv_league_pair_references(&pair); /* a task is a pair with a cell to run */
   for (size_t t = 0; t < rq->ntargets; t++) {
     cells[t] = *cell_at(x->lg, k, t);
     if (cells[t].outcome != DV_LEAGUE_NOT_RUN) continue;
@@ -215,9 +213,7 @@ static int fill(const dv_league_request *rq, dv_league *lg, dv_error *err) {
         c->steps = -1;
         snprintf(c->why, sizeof c->why, "not run: the league ended before it");
         cell_key(rq, file, c);
-        char keep[sizeof c->key];
-        memcpy(keep, c->key, sizeof keep);
-        if (file && !from_cache(rq->out_dir, c)) memcpy(c->key, keep, sizeof keep);
+        if (file) from_cache(rq->out_dir, c); /* a cached cell has this key, or is not taken */
       }
   }
   return DV_OK;
