@@ -108,6 +108,11 @@ static void why_not(const dv_search *s, int near, dv_league_cell *c) {
              p->point.detail[0] ? p->point.detail : "no detail");
     return;
   }
+  if (isnan(p->point.metric[DV_THETA_MAX_ERR])) { /* no run compared a sample: nothing measured */
+    snprintf(c->why, sizeof c->why, "not judged: no run compared anything (%.180s)",
+             p->point.detail[0] ? p->point.detail : "no detail");
+    return;
+  }
   const double slip = p->point.metric[DV_SLIP_MAX], slip_limit = p->point.limit[DV_SLIP_MAX];
   char own[256] = ""; /* what ended the nearest probe's choice */
   char key[40];
