@@ -9,10 +9,21 @@
  *
  * Each engine has its colour (dv_report_plot_engine_colour), the thin
  * reference is black. A series without a drawable point is left out and the
- * title says "(no data: NAME, ...)". Where the compared window ends before the
- * run does, a dash-dotted line marks it over time ("window end"), and a
- * diamond the reference's contact point there on the path. Legends are inside
- * the frame, in the corner where they hide the fewest points.
+ * title says "(no data: NAME, ...)". What the verdict used is drawn strongly,
+ * the rest faintly (the same colour, translucent, thinner): each engine's
+ * curve up to the end of its compared window (on the error plot: to its
+ * horizon, where its pointwise metrics stop), a reference's up to the latest
+ * window's end; a window that compared nothing draws no strong curve. Marked
+ * over time: the latest window's end (black, dash-dotted, "window end"; on
+ * the path, a diamond at the reference's contact point there) when the runs
+ * go on after it, an engine's own window end where it ends earlier
+ * (dash-dotted, its colour), each engine's horizon before its window's end
+ * (dotted, its colour, labelled "NAME horizon"), on the error plot each
+ * engine's own theta limit (dashed, its colour, labelled; one black line,
+ * "limit", when all agree), on theta.svg the turning points compared (up
+ * and down triangles at maxima and minima, in each run's colour, to its
+ * window's end). Legends are outside the frame, right of it, and list those
+ * marks' line styles.
  *
  * and, separately, dv_report_plot_xy: one generic x-y plot (see below).
  */
@@ -31,6 +42,12 @@ typedef struct dv_plot_series {
   const dv_traj *traj;      /* the engine's samples */
   const dv_traj *reference; /* what its error is measured against (same times); NULL: the
                                series is a reference itself, drawn but not on the error plot */
+  double window_end;        /* s: its compared window's end, drawn strongly to there
+                               (INFINITY: the whole run; -INFINITY: nothing compared) */
+  double horizon;           /* s: where its pointwise metrics stop (dv_engine_result's
+                               pointwise_end); marked when before window_end (INFINITY: none) */
+  double theta_limit;       /* rad: its own limit of theta_max_err, on the error plot
+                               (NAN: none) */
 } dv_plot_series;
 
 typedef struct dv_plot_input {
@@ -38,10 +55,9 @@ typedef struct dv_plot_input {
   const dv_traj *thin; /* the thin-disk reference, drawn in every plot */
   size_t nseries;
   dv_plot_series series[DV_PLOT_MAX_SERIES];
-  double theta_limit; /* rad, drawn on the error plot (0 or NAN: none) */
-  double horizon;     /* s, the reference's predictability horizon, marked there (INFINITY: none) */
-  double window_end;  /* s, where the comparison stopped; marked when the runs go on
-                         after it (0 or NAN: none) */
+  double window_end; /* s, the latest compared window's end: the references are drawn
+                        strongly to there, and it is marked when the runs go on after it
+                        (INFINITY: the whole run) */
 } dv_plot_input;
 
 /* the colour (dv_plot_curve.colour) of an engine in every plot: 0 (black) for

@@ -2,7 +2,7 @@
  *
  * The palette (cmap0) is set on every stream dvp_write_svg opens: background,
  * foreground (axes, text, black references), grid, then DVP_NPALETTE series
- * colours. Series k of dv_report_plot_scenario and curve colour k + 1 of dv_report_plot_xy
+ * colours, then the foreground and the series colours again, translucent. Series k of dv_report_plot_scenario and curve colour k + 1 of dv_report_plot_xy
  * are the same colour.
  */
 #ifndef DV_PLOT_INTERNAL_H
@@ -20,20 +20,26 @@ enum {
   DVP_COL_GRID,
   DVP_COL_SERIES,
   DVP_NPALETTE = 16,
-  DVP_NCOLOURS = DVP_COL_SERIES + DVP_NPALETTE
+  DVP_COL_FAINT_FG = DVP_COL_SERIES + DVP_NPALETTE, /* the foreground, translucent */
+  DVP_COL_FAINT,                                    /* the series colours, translucent */
+  DVP_NCOLOURS = DVP_COL_FAINT + DVP_NPALETTE
 };
 
-#define DVP_PAGE_W 800       /* px */
+#define DVP_PAGE_W 960       /* px */
 #define DVP_PAGE_H 500       /* px */
 #define DVP_PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
+#define DVP_FAINT_ALPHA 0.3  /* opacity of what the verdict did not use */
 
-#define DVP_VIEWPORT_RIGHT 0.95     /* of the page: the legend is inside the frame */
-#define DVP_LEGEND_OFFSET 0.02      /* legend from the frame's corner, of the viewport */
-#define DVP_LEGEND_LINE 0.05        /* length of a legend's line sample, of the viewport */
+#define DVP_VIEWPORT_LEFT 0.09      /* of the page: the y tick labels run along the axis */
+#define DVP_YLABEL_DISP 3.2         /* the y axis's label from the frame, in character heights */
+#define DVP_LEGEND_LINE_MM 10.0     /* length of a legend's line sample */
 #define DVP_LEGEND_SCALE 0.8        /* legend text, of the default character height */
 #define DVP_LEGEND_SPACING 2.0      /* between legend lines, in character heights */
 #define DVP_DIAMOND "\xe2\x97\x86"  /* U+25C6 black diamond: the window's end on a path */
 #define DVP_WINDOW_END "window end" /* the label of where the comparison stopped */
+
+/* the translucent version of cmap0 colour c (foreground or series), c itself otherwise */
+PLINT dvp_faint(PLINT c);
 
 /* the points of one curve, in plot coordinates */
 typedef struct dvp_points {
@@ -41,16 +47,14 @@ typedef struct dvp_points {
   size_t n;
 } dvp_points;
 
-/* pllegend's position for a legend of nlines lines, in ncolumns, whose longest
- * text has longest bytes: inside the current viewport (window r: x0, x1, y0,
- * y1), in the corner where it would hide the fewest points of pts[0..npts) */
-PLINT dvp_legend_corner(const dvp_points *pts, size_t npts, const double r[4], int nlines,
-                        int ncolumns, size_t longest);
+/* set the viewport (after pladv) to leave room on the right for a legend of
+ * ncolumns columns whose longest text has longest bytes (none: nlines 0);
+ * the line sample's length, as pllegend's plot_width, into *line */
+void dvp_viewport_beside_legend(int nlines, int ncolumns, size_t longest, double *line);
 
-/* widen the window r (before plwind, the viewport set) so a legend of that
- * size fits in a corner without hiding any point: the top is raised */
-void dvp_legend_make_room(const dvp_points *pts, size_t npts, double r[4], int nlines, int ncolumns,
-                          size_t longest);
+/* pllegend's position and offsets for that legend: outside the frame, right of it, centred */
+#define DVP_LEGEND_POSITION (PL_POSITION_OUTSIDE | PL_POSITION_RIGHT | PL_POSITION_VIEWPORT)
+#define DVP_LEGEND_X 0.015 /* gap between the frame and the legend, of the viewport */
 
 /* copy text into out with PLplot's escape character doubled, then suffix */
 void dvp_escape(char *out, size_t size, const char *text, const char *suffix);

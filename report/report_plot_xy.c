@@ -133,14 +133,12 @@ static void draw_marks(const xy_curve *c) {
   plschr(0, 1.0);
 }
 
-/* the points of f's curves, for placing its legend; its lines into *nlines and
- * its longest text's length */
-static size_t legend_points(const xy_figure *f, dvp_points *pts, int *nlines) {
+/* the legend's lines into *nlines; its longest text's length */
+static size_t legend_lines(const xy_figure *f, int *nlines) {
   size_t longest = f->marks ? strlen(MARK_TEXT) : 0;
   *nlines = f->marks;
   for (size_t k = 0; k < f->n; k++) {
     const xy_curve *c = &f->c[k];
-    pts[k] = (dvp_points){c->x, c->y, c->n};
     if (!c->any || !c->label[0]) continue;
     ++*nlines;
     if (strlen(c->label) > longest) longest = strlen(c->label);
@@ -153,15 +151,12 @@ static int legend_columns(int nlines) {
   return nlines > 8 ? 2 : 1;
 }
 
-/* a legend inside the frame: every labelled curve with data, then the marks if any */
-static void draw_legend(const xy_figure *f, const double r[4]) {
+/* a legend right of the frame: every labelled curve with data, then the marks if any */
+static void draw_legend(const xy_figure *f, double line) {
   enum { M = DV_PLOT_MAX_CURVES + 1 };
   PLINT opt[M], tcol[M], lcol[M], lstyle[M], scol[M], snum[M];
   PLFLT lwidth[M], sscale[M];
   const char *text[M], *sym[M];
-  dvp_points pts[DV_PLOT_MAX_CURVES];
-  int nlines;
-  const size_t longest = legend_points(f, pts, &nlines);
   PLINT n = 0;
   for (size_t k = 0; k < f->n; k++) {
     const xy_curve *c = &f->c[k];
@@ -190,21 +185,21 @@ static void draw_legend(const xy_figure *f, const double r[4]) {
   }
   if (n == 0) return;
   const PLINT columns = legend_columns(n), rows = (n + columns - 1) / columns;
-  const PLINT where = dvp_legend_corner(pts, f->n, r, n, columns, longest);
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, where, DVP_LEGEND_OFFSET,
-           DVP_LEGEND_OFFSET, DVP_LEGEND_LINE, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, DVP_LEGEND_POSITION,
+           DVP_LEGEND_X, 0.0, line, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
            0.8, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
            lstyle, lwidth, scol, sscale, snum, sym);
 }
 
-/* the options of one axis's box (y: labels parallel to it), its tick step in decades */
-static const char *box_opts(int log, int y, double span, double *step) {
+/* the options of one axis's box, its tick step in decades; the y axis's labels
+ * run along it, so however long they are its title never covers them */
+static const char *box_opts(int log, double span, double *step) {
   *step = log ? ceil(span / 8.0) : 0.0;
-  if (!log) return y ? "bcnstv" : "bcnst";
-  if (*step > 1) return y ? "bcnotv" : "bcnot"; /* every few decades, labels of our own */
+  if (!log) return "bcnst";
+  if (*step > 1) return "bcnot"; /* every few decades, labels of our own */
   *step = 0.0;
-  return y ? "bcnstlv" : "bcnstl";
+  return "bcnstl";
 }
 
 /* draw figure f (an xy_figure *) on the current, initialised stream */
@@ -217,15 +212,12 @@ static void draw_figure(const void *arg) {
     axis_range(&r[0], &r[1], logx);
     axis_range(&r[2], &r[3], logy);
   }
-  /* small variations about a large value need long tick labels: more room */
-  const int narrow = !logy && r[3] - r[2] < 1e-3 * fmax(fabs(r[2]), fabs(r[3]));
   pladv(0);
-  plvpor(narrow ? 0.16 : 0.12, DVP_VIEWPORT_RIGHT, 0.12, 0.88);
   plsyax(8, 0);
-  dvp_points pts[DV_PLOT_MAX_CURVES];
   int nlines;
-  const size_t longest = legend_points(f, pts, &nlines);
-  dvp_legend_make_room(pts, f->n, r, nlines, legend_columns(nlines), longest);
+  double line;
+  const size_t longest = legend_lines(f, &nlines);
+  dvp_viewport_beside_legend(nlines, legend_columns(nlines), longest, &line);
   if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(DVP_COL_GRID);
@@ -233,12 +225,12 @@ static void draw_figure(const void *arg) {
   plbox(logx ? "gl" : "g", 0, 0, logy ? "gl" : "g", 0, 0);
   plcol0(DVP_COL_FG);
   double xstep, ystep;
-  const char *xopt = box_opts(logx, 0, r[1] - r[0], &xstep);
-  const char *yopt = box_opts(logy, 1, r[3] - r[2], &ystep);
+  const char *xopt = box_opts(logx, r[1] - r[0], &xstep);
+  const char *yopt = box_opts(logy, r[3] - r[2], &ystep);
   if (xstep > 1 || ystep > 1) plslabelfunc(dvp_decade_label, NULL);
   plbox(xopt, xstep, 0, yopt, ystep, 0);
   pllab(f->xlabel ? f->xlabel : "", "", f->title);
-  plmtex("l", narrow ? 8.0 : logy ? 5.5 : 5.0, 0.5, 0.5, f->ylabel ? f->ylabel : "");
+  plmtex("l", DVP_YLABEL_DISP, 0.5, 0.5, f->ylabel ? f->ylabel : "");
   for (int black = 1; black >= 0; black--) /* black references wide, underneath */
     for (size_t k = 0; k < f->n; k++) {
       const xy_curve *c = &f->c[k];
@@ -251,7 +243,7 @@ static void draw_figure(const void *arg) {
   for (size_t k = 0; k < f->n; k++) draw_marks(&f->c[k]);
   plcol0(DVP_COL_FG);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
-  draw_legend(f, r);
+  draw_legend(f, line);
 }
 
 /* f's title: title, then "(zero at every point: ...)" and "(no data: ...)"

@@ -368,6 +368,11 @@ static int same_run(const dv_comparison *c, size_t k, size_t j) {
          c->r[k - 1].engine == dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
 }
 
+/* the end of r's compared window, -INFINITY when it compared nothing past the start */
+static double compared_until(const dv_engine_result *r) {
+  return r->vs_ref.n_window >= 2 ? r->vs_ref.t_window : -INFINITY;
+}
+
 int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
   char name[96];
   for (size_t k = 0; k <= 2 * c->n; k++) /* one file is never two of the report's outputs */
@@ -383,11 +388,10 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
     }
   snprintf(name, sizeof name, "%s.csv", dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
   int status = write_csv(dir, name, &c->thin, err);
-  dv_plot_input plot = {c->sc->name, &c->thin, 0, {{0}}, INFINITY, c->horizon, 0.0};
-  for (size_t i = 0; i < c->n; i++) { /* the tightest theta limit, the latest window end */
-    plot.theta_limit = fmin(plot.theta_limit, c->r[i].tolerance[DV_THETA_MAX_ERR]);
-    plot.window_end = fmax(plot.window_end, c->r[i].vs_ref.t_window);
-  }
+  dv_plot_input plot = {.title = c->sc->name, .thin = &c->thin, .window_end = -INFINITY};
+  for (size_t i = 0; i < c->n; i++) /* the latest window end */
+    plot.window_end = fmax(plot.window_end, compared_until(&c->r[i]));
+  if (c->n == 0) plot.window_end = INFINITY; /* the references alone: nothing was compared */
   for (size_t i = 0; !status && i < c->n; i++) {
     const dv_engine_result *r = &c->r[i];
     snprintf(name, sizeof name, "%s.csv", r->engine->name);
@@ -398,7 +402,8 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
       status = write_csv(dir, name, &r->matched, err);
     }
     plot.series[plot.nseries++] = (dv_plot_series){
-        r->engine->name, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin};
+        r->engine->name,       &r->traj,         r->half_thickness > 0.0 ? &r->matched : &c->thin,
+        compared_until(r),     r->pointwise_end, r->tolerance[DV_THETA_MAX_ERR]};
   }
   /* the reference a thick engine's verdict uses, drawn beside the thin one */
   char matched_label[96] = "";
@@ -406,7 +411,8 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
     if (c->r[i].half_thickness > 0.0 && plot.nseries < DV_PLOT_MAX_SERIES) {
       snprintf(matched_label, sizeof matched_label, "reference (matched, thickness %.3g mm)",
                2e3 * c->r[i].half_thickness);
-      plot.series[plot.nseries++] = (dv_plot_series){matched_label, &c->r[i].matched, NULL};
+      plot.series[plot.nseries++] =
+          (dv_plot_series){matched_label, &c->r[i].matched, NULL, plot.window_end, INFINITY, NAN};
     }
   if (!status) status = dv_report_plot_scenario(dir, &plot, err);
   if (!status) status = dv_report_portraits(dir, c, err);

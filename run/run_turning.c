@@ -72,6 +72,19 @@ static size_t turning_points(const dv_traj *tr, double t_end, turn *out) {
   return n;
 }
 
+size_t dv_run_turning_points(const dv_traj *tr, double t_end, double *t, double *theta, int *kind) {
+  turn *all = malloc((tr->n + 1) * sizeof *all);
+  if (!all) return 0;
+  const size_t n = turning_points(tr, t_end, all);
+  for (size_t i = 0; i < n; i++) {
+    t[i] = all[i].t;
+    theta[i] = all[i].theta;
+    kind[i] = all[i].kind;
+  }
+  free(all);
+  return n;
+}
+
 /* the turning points of one kind, in order: into out; their count */
 static size_t of_kind(const turn *all, size_t n, int kind, turn *out) {
   size_t m = 0;

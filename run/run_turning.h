@@ -49,6 +49,11 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
 double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, double max_lag,
                           double *lag);
 
+/* the turning points theta_turning_err compares: those of tr up to t_end,
+ * in time order, into t, theta and kind (+1 maximum, -1 minimum), tr->n of
+ * room each; their count (0 also when out of memory) */
+size_t dv_run_turning_points(const dv_traj *tr, double t_end, double *t, double *theta, int *kind);
+
 /* the largest |theta_dot| of tr up to t_end (rad/s) */
 double dv_run_theta_rate_max(const dv_traj *tr, double t_end);
 

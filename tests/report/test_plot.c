@@ -9,7 +9,7 @@
  * dv_report_plot_engine_colour), the thin reference is black; a series without
  * data is left out of the legend and named in the title, never "(no data)";
  * the compared window's end is marked when the runs go on after it, not when
- * it is the end; legends lie inside the frame (the grid's box). */
+ * it is the end; legends lie right of the frame (the grid's box). */
 #include <dirent.h>
 #include <limits.h>
 #include <math.h>
@@ -42,6 +42,11 @@ static int make_traj(dv_traj *tr, size_t n, double offset) {
     if (dv_run_traj_push(tr, &s) != 0) return -1;
   }
   return 0;
+}
+
+/* a series compared over its whole run, no horizon, no limit */
+static dv_plot_series whole_run(const char *label, const dv_traj *traj, const dv_traj *ref) {
+  return (dv_plot_series){label, traj, ref, INFINITY, INFINITY, NAN};
 }
 
 /* the whole file at path, or NULL */
@@ -422,13 +427,13 @@ static void test_engine_plots(const dv_traj *ref, const dv_traj *a, const dv_tra
   char dirs[5][32];
   for (int k = 0; k < 5; k++) snprintf(dirs[k], sizeof dirs[k], "/tmp/test_plot_eng.XXXXXX");
   /* mujoco alone, ode alone, both the other way round: an engine keeps its colour */
-  dv_plot_input mj = {.title = "mujoco", .thin = ref, .nseries = 1, .horizon = INFINITY};
-  mj.series[0] = (dv_plot_series){"mujoco", a, ref};
+  dv_plot_input mj = {.title = "mujoco", .thin = ref, .nseries = 1, .window_end = INFINITY};
+  mj.series[0] = whole_run("mujoco", a, ref);
   dv_plot_input od = mj, both = mj;
-  od.series[0] = (dv_plot_series){"ode", b, ref};
+  od.series[0] = whole_run("ode", b, ref);
   both.nseries = 3;
   both.series[0] = od.series[0];
-  both.series[1] = (dv_plot_series){"matched", empty, ref}; /* no data: left out */
+  both.series[1] = whole_run("matched", empty, ref); /* no data: left out */
   both.series[2] = mj.series[0];
   both.window_end = 6.0; /* the runs last 10 s */
   dv_plot_input whole = mj;
@@ -472,9 +477,9 @@ static void test_engine_plots(const dv_traj *ref, const dv_traj *a, const dv_tra
     const int boxed = svg && svg_grid_box(svg, box), legend = svg && svg_text_at(svg, "mujoco", at);
     CHECK(boxed && legend, "%s: no grid (%d) or no legend (%d)", *name, boxed, legend);
     if (boxed && legend)
-      CHECK(at[0] > box[0] && at[0] < box[1] && at[1] > box[2] && at[1] < box[3],
-            "%s: legend text at (%g, %g) outside the frame [%g, %g] x [%g, %g]", *name, at[0],
-            at[1], box[0], box[1], box[2], box[3]);
+      CHECK(at[0] > box[1] && at[1] > box[2] && at[1] < box[3],
+            "%s: legend text at (%g, %g) not right of the frame [%g, %g] x [%g, %g]", *name,
+            at[0], at[1], box[0], box[1], box[2], box[3]);
     free(text);
     free(svg);
     svg = plot_text(dirs[3], *name), text = svg ? svg_text(svg) : NULL;
@@ -502,11 +507,11 @@ int main(int argc, char **argv) {
   holed.s[50].energy = NAN;
   holed.s[51].y[RED_TH] = NAN;
 
-  dv_plot_input in = {.title = "synthetic #1", .thin = &ref, .nseries = 4};
-  in.series[0] = (dv_plot_series){"close (1e-6)", &close_by, &ref};
-  in.series[1] = (dv_plot_series){"holed", &holed, &ref};
-  in.series[2] = (dv_plot_series){"empty", &empty, &ref};
-  in.series[3] = (dv_plot_series){"flat", &flat, &flat};
+  dv_plot_input in = {.title = "synthetic #1", .thin = &ref, .nseries = 4, .window_end = INFINITY};
+  in.series[0] = whole_run("close (1e-6)", &close_by, &ref);
+  in.series[1] = whole_run("holed", &holed, &ref);
+  in.series[2] = whole_run("empty", &empty, &ref);
+  in.series[3] = whole_run("flat", &flat, &flat);
 
   /* a kept dir (argv[1]) lets one look at the plots */
   char dir[] = "/tmp/test_plot.XXXXXX";
@@ -519,8 +524,8 @@ int main(int argc, char **argv) {
   }
 
   /* nothing to draw at all: still four valid plots */
-  dv_plot_input none = {.title = "nothing", .thin = &empty, .nseries = 1};
-  none.series[0] = (dv_plot_series){"empty", &empty, &empty};
+  dv_plot_input none = {.title = "nothing", .thin = &empty, .nseries = 1, .window_end = INFINITY};
+  none.series[0] = whole_run("empty", &empty, &empty);
   char dir2[] = "/tmp/test_plot.XXXXXX";
   CHECK(mkdtemp(dir2) != NULL, "mkdtemp failed");
   CHECK(dv_report_plot_scenario(dir2, &none, &err) == DV_OK, "empty input: %s", err.msg);
