@@ -232,15 +232,12 @@ static double last_time(const dvp_figure *f) {
   return t;
 }
 
-/* the legend's lines (curves, then marks) and its longest text's length */
-static size_t legend_lines(const dvp_figure *f, const dvp_mark_legend *marks, int *nlines) {
-  size_t longest = 0;
-  for (size_t k = 0; k < f->ncurves; k++)
-    if (strlen(f->c[k].label) > longest) longest = strlen(f->c[k].label);
-  for (int k = 0; k < marks->n; k++)
-    if (strlen(marks->text[k]) > longest) longest = strlen(marks->text[k]);
-  *nlines = (int)f->ncurves + marks->n;
-  return longest;
+/* the legend's texts (curves, then marks) into text; their count */
+static int legend_texts(const dvp_figure *f, const dvp_mark_legend *marks, const char **text) {
+  int n = 0;
+  for (size_t k = 0; k < f->ncurves; k++) text[n++] = f->c[k].label;
+  for (int k = 0; k < marks->n; k++) text[n++] = marks->text[k];
+  return n;
 }
 
 /* a legend right of the frame: one line per curve, then the marks' styles */
@@ -306,28 +303,29 @@ static void draw_figure(const void *arg) {
   const double t_last = last_time(f); /* the path plot's x is no time: unused there */
   dvp_mark_legend marks;
   dvp_mark_legend_of(f, r, t_last, &marks);
-  int nlines;
-  const size_t longest = legend_lines(f, &marks, &nlines);
+  const char *text[DV_PLOT_MAX_SERIES + 1 + 6];
+  const int nlines = legend_texts(f, &marks, text);
   pladv(0);
   plsyax(8, 0);
-  dvp_viewport_beside_legend(nlines, 1, longest, &line);
+  dvp_viewport_beside_legend(text, nlines, 1, &line);
   if (f->kind == DVP_PATH) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(DVP_COL_GRID);
   plwidth(1.0);
   plbox("g", 0, 0, logy ? "gl" : "g", 0, 0);
   plcol0(DVP_COL_FG);
-  /* a log axis labels every decade (PLplot's "l"), or every few with labels of our own;
-   * the y labels run along the axis, so its title never covers them */
+  /* a log axis labels every decade (PLplot's "l"), or every few with labels of our own */
   const double ystep = logy ? ceil((r[3] - r[2]) / 8.0) : 0.0;
   if (ystep > 1) plslabelfunc(dvp_decade_label, NULL);
-  plbox("bcnst", 0, 0, !logy ? "bcnst" : ystep > 1 ? "bcnot" : "bcnstl", ystep, 0);
+  plbox("bcnst", 0, 0, dvp_yaxis_opts(logy, ystep > 1), ystep, 0);
   pllab(kinds[f->kind].xlabel, "", f->title);
-  plmtex("l", DVP_YLABEL_DISP, 0.5, 0.5, kinds[f->kind].ylabel);
-  for (size_t k = 0; k < f->ncurves; k++) {
-    draw_curve(&f->c[k]);
-    if (f->kind == DVP_PATH) draw_ends(&f->c[k]);
-  }
+  plmtex("l", dvp_ylabel_disp(logy), 0.5, 0.5, kinds[f->kind].ylabel);
+  for (int judged = 0; judged <= 1; judged++) /* the references underneath the engines */
+    for (size_t k = 0; k < f->ncurves; k++) {
+      if (f->c[k].judged != judged) continue;
+      draw_curve(&f->c[k]);
+      if (f->kind == DVP_PATH) draw_ends(&f->c[k]);
+    }
   dvp_draw_marks(f, r, t_last);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
   draw_legend(f, &marks, line);

@@ -31,12 +31,19 @@ enum {
 #define DVP_FAINT_ALPHA 0.3  /* opacity of what the verdict did not use */
 
 #define DVP_VIEWPORT_LEFT 0.09      /* of the page: the y tick labels run along the axis */
-#define DVP_YLABEL_DISP 3.2         /* the y axis's label from the frame, in character heights */
 #define DVP_LEGEND_LINE_MM 10.0     /* length of a legend's line sample */
 #define DVP_LEGEND_SCALE 0.8        /* legend text, of the default character height */
 #define DVP_LEGEND_SPACING 2.0      /* between legend lines, in character heights */
 #define DVP_DIAMOND "\xe2\x97\x86"  /* U+25C6 black diamond: the window's end on a path */
 #define DVP_WINDOW_END "window end" /* the label of where the comparison stopped */
+
+/* plbox's options for the y axis: a linear axis's labels run along it (however
+ * many digits they have, its title never covers them), a log axis's decades
+ * (10^k, own: every few, labelled by dvp_decade_label) across it */
+const char *dvp_yaxis_opts(int log, int own_decades);
+
+/* the y axis's title from the frame, in character heights, for those labels */
+double dvp_ylabel_disp(int log);
 
 /* the translucent version of cmap0 colour c (foreground or series), c itself otherwise */
 PLINT dvp_faint(PLINT c);
@@ -48,9 +55,9 @@ typedef struct dvp_points {
 } dvp_points;
 
 /* set the viewport (after pladv) to leave room on the right for a legend of
- * ncolumns columns whose longest text has longest bytes (none: nlines 0);
- * the line sample's length, as pllegend's plot_width, into *line */
-void dvp_viewport_beside_legend(int nlines, int ncolumns, size_t longest, double *line);
+ * the nlines texts (PLplot text) in ncolumns columns (none: nlines 0); the
+ * line sample's length, as pllegend's plot_width, into *line */
+void dvp_viewport_beside_legend(const char *const *text, int nlines, int ncolumns, double *line);
 
 /* pllegend's position and offsets for that legend: outside the frame, right of it, centred */
 #define DVP_LEGEND_POSITION (PL_POSITION_OUTSIDE | PL_POSITION_RIGHT | PL_POSITION_VIEWPORT)

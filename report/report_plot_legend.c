@@ -1,20 +1,22 @@
-/* dvp_viewport_beside_legend: the frame, and room right of it for the legend.
+/* dvp_viewport_beside_legend: the frame, room right of it for the legend,
+ * and left of it for the y axis's labels.
  *
  * A legend inside the frame hides data wherever it goes (a steel Euler
  * disk's energy curves fill every corner), so it sits outside, right of the
  * frame; the frame is as wide as that leaves. The legend's width is estimated
- * from PLplot's character height and the layout pllegend is given
- * (DVP_LEGEND_*): each column a line sample plus its longest text.
+ * from PLplot's character height at the legend's scale and the layout
+ * pllegend is given (DVP_LEGEND_*): each column a line sample plus its
+ * longest text.
  */
 #include <math.h>
+#include <string.h>
 
 #include "report_plot_internal.h"
 
-/* pllegend's box as it draws it on the SVG page (measured: its returned width
- * for 1 to 17 lines, labels of 3 to 25 characters, came within 10%) */
 #define CHAR_WIDTH 0.6  /* per character of the longest text, in character heights */
-#define TEXT_LEAD 3.0   /* the text's offset and the box's padding, in character heights */
-#define MARGIN 1.1      /* what the fit missed, and a little air */
+#define TEXT_LEAD 6.5   /* the text's offset and the box's padding, in character heights (fit
+                           to the widths pllegend returned for 12- and 21-character texts) */
+#define MARGIN 1.05     /* what the estimate missed, and a little air */
 #define PAGE_RIGHT 0.99 /* of the page: the legend's right edge at most */
 #define FRAME_MIN 0.45  /* of the page: the frame's width at least (long labels are cut) */
 
@@ -25,16 +27,27 @@ PLINT dvp_faint(PLINT c) {
   return c;
 }
 
-void dvp_viewport_beside_legend(int nlines, int ncolumns, size_t longest, double *line) {
+void dvp_viewport_beside_legend(const char *const *text, int nlines, int ncolumns, double *line) {
   PLFLT def, ht, sx0, sx1, sy0, sy1;
-  plgchr(&def, &ht);              /* mm */
   plgspa(&sx0, &sx1, &sy0, &sy1); /* subpage, mm */
+  plschr(0, DVP_LEGEND_SCALE);
+  plgchr(&def, &ht); /* mm */
+  size_t longest = 0;
+  for (int k = 0; k < nlines; k++) longest = strlen(text[k]) > longest ? strlen(text[k]) : longest;
+  plschr(0, 1.0);
   const double page_w = sx1 - sx0;
-  const double col_mm = DVP_LEGEND_LINE_MM +
-                        (TEXT_LEAD + CHAR_WIDTH * (double)longest) * DVP_LEGEND_SCALE * ht;
+  const double col_mm = DVP_LEGEND_LINE_MM + (TEXT_LEAD + CHAR_WIDTH * (double)longest) * ht;
   double legend = nlines > 0 ? MARGIN * ncolumns * col_mm / page_w : 0.0;
   double right = PAGE_RIGHT - legend - (nlines > 0 ? 0.02 : 0.0);
   if (right < DVP_VIEWPORT_LEFT + FRAME_MIN) right = DVP_VIEWPORT_LEFT + FRAME_MIN;
   plvpor(DVP_VIEWPORT_LEFT, right, 0.12, 0.88);
   *line = DVP_LEGEND_LINE_MM / ((right - DVP_VIEWPORT_LEFT) * page_w);
+}
+
+const char *dvp_yaxis_opts(int log, int own_decades) {
+  return !log ? "bcnst" : own_decades ? "bcnotv" : "bcnstlv";
+}
+
+double dvp_ylabel_disp(int log) {
+  return log ? 5.5 : 4.0; /* "10^-16" across the axis is about 4.5 characters wide */
 }

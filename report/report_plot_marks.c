@@ -80,7 +80,7 @@ static void draw_limits(const dvp_figure *f, const double r[4]) {
     pljoin(r[0], c->limit, r[1], c->limit);
     pllsty(1);
     /* labels staggered along the line, so equal-looking limits stay apart */
-    plptex(r[1] - (0.02 + 0.3 * (nth++ % 3)) * dx, c->limit + 0.015 * dy, 1, 0, 1, text);
+    plptex(r[1] - (0.02 + 0.3 * (nth++ % 3)) * dx, c->limit + 0.04 * dy, 1, 0, 1, text);
   }
   if (!differ) {
     char text[64];
@@ -89,7 +89,7 @@ static void draw_limits(const dvp_figure *f, const double r[4]) {
     pllsty(STYLE_LIMIT);
     pljoin(r[0], one, r[1], one);
     pllsty(1);
-    plptex(r[1] - 0.02 * dx, one + 0.015 * dy, 1, 0, 1, text);
+    plptex(r[1] - 0.02 * dx, one + 0.04 * dy, 1, 0, 1, text);
   }
   plschr(0, 1.0);
 }

@@ -133,17 +133,13 @@ static void draw_marks(const xy_curve *c) {
   plschr(0, 1.0);
 }
 
-/* the legend's lines into *nlines; its longest text's length */
-static size_t legend_lines(const xy_figure *f, int *nlines) {
-  size_t longest = f->marks ? strlen(MARK_TEXT) : 0;
-  *nlines = f->marks;
-  for (size_t k = 0; k < f->n; k++) {
-    const xy_curve *c = &f->c[k];
-    if (!c->any || !c->label[0]) continue;
-    ++*nlines;
-    if (strlen(c->label) > longest) longest = strlen(c->label);
-  }
-  return longest;
+/* the legend's texts (labelled curves with data, then the marks' if any) into text; their count */
+static int legend_texts(const xy_figure *f, const char **text) {
+  int n = 0;
+  for (size_t k = 0; k < f->n; k++)
+    if (f->c[k].any && f->c[k].label[0]) text[n++] = f->c[k].label;
+  if (f->marks) text[n++] = MARK_TEXT;
+  return n;
 }
 
 /* the legend's columns for nlines lines: two for more than 8 (up to 17 lines) */
@@ -192,10 +188,10 @@ static void draw_legend(const xy_figure *f, double line) {
            lstyle, lwidth, scol, sscale, snum, sym);
 }
 
-/* the options of one axis's box, its tick step in decades; the y axis's labels
- * run along it, so however long they are its title never covers them */
-static const char *box_opts(int log, double span, double *step) {
+/* the options of one axis's box, its tick step in decades */
+static const char *box_opts(int log, int y, double span, double *step) {
   *step = log ? ceil(span / 8.0) : 0.0;
+  if (y) return dvp_yaxis_opts(log, *step > 1);
   if (!log) return "bcnst";
   if (*step > 1) return "bcnot"; /* every few decades, labels of our own */
   *step = 0.0;
@@ -216,8 +212,9 @@ static void draw_figure(const void *arg) {
   plsyax(8, 0);
   int nlines;
   double line;
-  const size_t longest = legend_lines(f, &nlines);
-  dvp_viewport_beside_legend(nlines, legend_columns(nlines), longest, &line);
+  const char *text[DV_PLOT_MAX_CURVES + 1];
+  nlines = legend_texts(f, text);
+  dvp_viewport_beside_legend(text, nlines, legend_columns(nlines), &line);
   if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   plcol0(DVP_COL_GRID);
@@ -225,12 +222,13 @@ static void draw_figure(const void *arg) {
   plbox(logx ? "gl" : "g", 0, 0, logy ? "gl" : "g", 0, 0);
   plcol0(DVP_COL_FG);
   double xstep, ystep;
-  const char *xopt = box_opts(logx, r[1] - r[0], &xstep);
-  const char *yopt = box_opts(logy, r[3] - r[2], &ystep);
+  const char *xopt = box_opts(logx, 0, r[1] - r[0], &xstep);
+  const char *yopt = box_opts(logy, 1, r[3] - r[2], &ystep);
+  if (logy && ystep <= 1) ystep = 0.0;
   if (xstep > 1 || ystep > 1) plslabelfunc(dvp_decade_label, NULL);
   plbox(xopt, xstep, 0, yopt, ystep, 0);
   pllab(f->xlabel ? f->xlabel : "", "", f->title);
-  plmtex("l", DVP_YLABEL_DISP, 0.5, 0.5, f->ylabel ? f->ylabel : "");
+  plmtex("l", dvp_ylabel_disp(logy), 0.5, 0.5, f->ylabel ? f->ylabel : "");
   for (int black = 1; black >= 0; black--) /* black references wide, underneath */
     for (size_t k = 0; k < f->n; k++) {
       const xy_curve *c = &f->c[k];
