@@ -29,6 +29,7 @@ static dv_sample sample(double t, double offset) {
   memset(&s, 0, sizeof s);
   s.t = t;
   s.y[RED_TH] = 1.0 + 0.1 * sin(t) + offset;
+  s.y[RED_VTH] = 0.1 * cos(t); /* turns at t = pi/2 + k pi */
   s.contact[0] = 0.5 * cos(0.3 * t) + offset;
   s.contact[1] = 0.5 * sin(0.3 * t);
   s.energy = 2.0 + 1e-9 * t + offset;
@@ -491,6 +492,135 @@ static void test_engine_plots(const dv_traj *ref, const dv_traj *a, const dv_tra
   for (int k = 0; k < 4; k++) remove_dir(dirs[k]);
 }
 
+/* ---- what the verdict used ---- */
+
+/* the polylines of svg stroked in colour ("": any but black, white and the grid's)
+ * with more than min_pts points and an opacity in [op_lo, op_hi]: their count,
+ * the box (x0, x1, y0, y1) of their points into box */
+static int svg_lines(const char *svg, const char *colour, size_t min_pts, double op_lo,
+                     double op_hi, double box[4]) {
+  int n = 0, any = 0;
+  for (const char *p = svg; (p = strstr(p, "<polyline")); p++) {
+    char c[16], op[32];
+    const char *end = strstr(p, "/>"), *pts = strstr(p, "points=\"");
+    if (!end || !pts || pts > end || !attr_of(p, "stroke=\"", c, sizeof c) ||
+        !attr_of(p, "stroke-opacity=\"", op, sizeof op))
+      continue;
+    const int other = strcmp(c, "#000000") && strcmp(c, "#FFFFFF") && strcmp(c, "#E1E1E1");
+    if ((colour[0] ? strcmp(c, colour) != 0 : !other) || atof(op) < op_lo || atof(op) > op_hi)
+      continue;
+    double lbox[4] = {0};
+    size_t m = 0;
+    double x, y;
+    for (const char *q = pts + 8; q < end && sscanf(q, "%lf,%lf", &x, &y) == 2; m++) {
+      if (!m || x < lbox[0]) lbox[0] = x;
+      if (!m || x > lbox[1]) lbox[1] = x;
+      if (!m || y < lbox[2]) lbox[2] = y;
+      if (!m || y > lbox[3]) lbox[3] = y;
+      q += strcspn(q, " \n\"");
+      q += strspn(q, " \n");
+    }
+    if (m <= min_pts) continue;
+    for (int k = 0; k < 4; k++)
+      box[k] = !any ? lbox[k] : k % 2 ? fmax(box[k], lbox[k]) : fmin(box[k], lbox[k]);
+    any = 1;
+    n++;
+  }
+  return n;
+}
+
+/* the box of the legend's frame: the black closed polyline of 5 points */
+static int svg_legend_box(const char *svg, double box[4]) {
+  for (const char *p = svg; (p = strstr(p, "<polyline")); p++) {
+    char c[16], pts[512];
+    if (!attr_of(p, "stroke=\"", c, sizeof c) || strcmp(c, "#000000") ||
+        !attr_of(p, "points=\"", pts, sizeof pts))
+      continue;
+    double x[6], y[6];
+    int m = 0;
+    for (const char *q = pts; m < 6 && q && sscanf(q, "%lf,%lf", &x[m], &y[m]) == 2; m++)
+      q = strpbrk(q + 1, " \n") ? q + strcspn(q, " \n") + 1 : NULL;
+    if (m != 5 || x[0] != x[4] || y[0] != y[4]) continue;
+    box[0] = fmin(fmin(x[0], x[1]), x[2]), box[1] = fmax(fmax(x[0], x[1]), x[2]);
+    box[2] = fmin(fmin(y[0], y[1]), y[2]), box[3] = fmax(fmax(y[0], y[1]), y[2]);
+    return 1;
+  }
+  return 0;
+}
+
+/* occurrences of needle in hay */
+static int count_of(const char *hay, const char *needle) {
+  int n = 0;
+  for (const char *p = hay; (p = strstr(p, needle)); p++) n++;
+  return n;
+}
+
+/* mujoco over its whole run with a horizon at 3 s, ode to 6 s, dart comparing
+ * nothing (its window 0 s), their limits unequal: theta_error.svg draws dart
+ * only faintly, mujoco strongly to its horizon, marks it there, labels each
+ * limit; theta.svg marks the turns compared; every legend is beside the data */
+static void test_verdict_marks(const dv_traj *ref, const dv_traj *a, const dv_traj *b) {
+  char dir[] = "/tmp/test_plot_marks.XXXXXX";
+  dv_plot_input in = {.title = "marks", .thin = ref, .nseries = 3, .window_end = 10.0};
+  in.series[0] = (dv_plot_series){"mujoco", a, ref, 10.0, 3.0, 0.01};
+  in.series[1] = (dv_plot_series){"ode", b, ref, 6.0, 6.0, 0.01};
+  in.series[2] = (dv_plot_series){"dart", b, ref, -INFINITY, -INFINITY, 0.02};
+  plot_into(dir, &in);
+  char *err = plot_text(dir, "theta_error.svg"), *theta = plot_text(dir, "theta.svg");
+  CHECK(err && theta, "no theta_error.svg or theta.svg");
+  if (err && theta) {
+    const char *dart = "#D62728", *mujoco = "#1F77B4";
+    double box[4] = {0}, strong[4] = {0}, faint[4] = {0};
+    CHECK(svg_lines(err, dart, 2, 0.99, 1.0, strong) == 0, "dart, compared over 0 s, drawn strongly");
+    CHECK(svg_lines(err, dart, 2, 0.0, 0.5, faint) > 0, "dart's run not drawn faintly");
+    const int boxed = svg_grid_box(err, box);
+    CHECK(boxed, "theta_error.svg: no grid");
+    /* the frame spans t = 0 .. 10 s: 3 s is 0.3 of it */
+    const double at3 = box[0] + 0.3 * (box[1] - box[0]), px = 1.5;
+    const double step = (box[1] - box[0]) / (N - 1); /* a sample's interval: the last before 3 s */
+    CHECK(svg_lines(err, mujoco, 2, 0.99, 1.0, strong) > 0 && strong[1] <= at3 + px &&
+              strong[1] > at3 - step,
+          "mujoco's strong curve ends at x %g, its horizon is at %g", strong[1], at3);
+    int at_horizon = 0;
+    for (const char *p = err; (p = strstr(p, "<polyline")); p++) { /* a vertical mujoco segment */
+      char c[16], pts[128];
+      double x0, y0, x1, y1;
+      if (attr_of(p, "stroke=\"", c, sizeof c) && !strcmp(c, mujoco) &&
+          attr_of(p, "points=\"", pts, sizeof pts) &&
+          sscanf(pts, "%lf,%lf %lf,%lf", &x0, &y0, &x1, &y1) == 4 && fabs(x0 - at3) < px &&
+          fabs(x1 - at3) < px && y0 != y1)
+        at_horizon = 1;
+    }
+    CHECK(at_horizon, "no mark at mujoco's horizon (x %g)", at3);
+    char *text = svg_text(err);
+    CHECK(text && strstr(text, "mujoco horizon 3 s"), "the horizon is not labelled");
+    CHECK(text && strstr(text, "mujoco limit 0.01 rad") && strstr(text, "dart limit 0.02 rad"),
+          "each engine's own limit is not labelled");
+    CHECK(text && !strstr(text, "ode horizon"), "ode's horizon at its window's end is marked");
+    free(text);
+    /* turns to each window's end: the thin disk's and mujoco's minimum at 3 pi / 2, ode's; none of dart's */
+    CHECK(count_of(theta, "&#x25bc;") == 3, "theta.svg: %d minima marked, want 3",
+          count_of(theta, "&#x25bc;"));
+  }
+  for (const char *const *name = dv_report_plot_files; *name; name++) {
+    char *svg = plot_text(dir, *name);
+    double data[4] = {0}, legend[4] = {0};
+    const int drawn = svg && svg_lines(svg, "", 2, 0.0, 1.0, data) > 0;
+    const int boxed = svg && svg_legend_box(svg, legend);
+    CHECK(drawn && boxed, "%s: no data (%d) or no legend box (%d)", *name, drawn, boxed);
+    if (drawn && boxed)
+      CHECK(legend[0] > data[1] || legend[1] < data[0] || legend[2] > data[3] ||
+                legend[3] < data[2],
+            "%s: the legend [%g, %g] x [%g, %g] covers data [%g, %g] x [%g, %g]", *name,
+            legend[0], legend[1], legend[2], legend[3], data[0], data[1], data[2], data[3]);
+    CHECK(!boxed || legend[1] <= 960.0, "%s: the legend runs off the page at x %g", *name, legend[1]);
+    free(svg);
+  }
+  free(err);
+  free(theta);
+  remove_dir(dir);
+}
+
 int main(int argc, char **argv) {
   dv_traj ref = {0}, close_by = {0}, holed = {0}, empty = {0}, flat = {0};
   CHECK(make_traj(&ref, N, 0.0) == 0 && make_traj(&close_by, N, 1e-6) == 0 &&
@@ -547,6 +677,7 @@ int main(int argc, char **argv) {
   else
     remove_dir(dir);
   test_engine_plots(&ref, &close_by, &holed, &empty);
+  test_verdict_marks(&ref, &close_by, &holed);
   dv_run_traj_free(&ref);
   dv_run_traj_free(&close_by);
   dv_run_traj_free(&holed);
