@@ -601,6 +601,10 @@ static void test_verdict_marks(const dv_traj *ref, const dv_traj *a, const dv_tr
     /* turns to each window's end: the thin disk's and mujoco's minimum at 3 pi / 2, ode's; none of dart's */
     CHECK(count_of(theta, "&#x25bc;") == 3, "theta.svg: %d minima marked, want 3",
           count_of(theta, "&#x25bc;"));
+    /* maxima at pi / 2 and 5 pi / 2: the thin disk's and mujoco's two, ode's first (its
+     * window ends at 6 s), and the legend's two triangles */
+    CHECK(count_of(theta, "&#x25b2;") == 7, "theta.svg: %d maxima marked, want 7",
+          count_of(theta, "&#x25b2;"));
   }
   for (const char *const *name = dv_report_plot_files; *name; name++) {
     char *svg = plot_text(dir, *name);
