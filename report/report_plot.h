@@ -74,8 +74,7 @@ int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *
 /* ---- generic x-y plot ------------------------------------------------------
  *
  * dv_report_plot_xy draws up to DV_PLOT_MAX_CURVES curves into one SVG file, with a
- * legend inside the frame (in the corner where it hides the fewest points)
- * listing every labelled curve in the order given; a curve with nothing
+ * legend right of the frame (it hides no point) listing every labelled curve in the order given; a curve with nothing
  * drawable is left out of it and named in the title, "(no data: label)".
  * Uses: work-precision diagrams (log-log, Pareto points marked), error against time step, U(theta),
  * phase planes (a black reference level set under coloured trajectories).
