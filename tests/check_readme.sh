@@ -12,6 +12,7 @@
 #   - README's first object (its indented scenario file) loads;
 #   - every relative link in README.md and docs/*.md names a file that exists,
 #     and its #anchor a heading of that file;
+#   - docs/README.md, the manual's index, links every file of docs/;
 #   - README's command table names every command `diskval --help` lists, and
 #     no other.
 # Exit status: 0 consistent, 1 a difference (each one printed), 2 usage.
@@ -123,6 +124,13 @@ for f in "${docs[@]}"; do
   done < <(grep -oE '\]\([^)[:space:]]+\)' "$f" | sed -E 's/^\]\(//; s/\)$//' | grep -vE '^[a-z]+:')
 done
 [ "$links" -gt 0 ] || differ "README.md and docs/ link to nothing"
+
+# the manual's index, docs/README.md, links every file of docs/
+for f in "$src"/docs/*.md; do
+  name=$(basename "$f")
+  [ "$name" = README.md ] && continue
+  grep -qF "]($name)" "$src/docs/README.md" || differ "docs/README.md (the index) does not link $name"
+done
 
 # README's command table against diskval --help's command list
 "$dv" --help | awk '/^commands:/ { on = 1; next } on && /^  [a-z]/ { print $1 }' | sort >"$work/known"
