@@ -12,7 +12,7 @@
 # eps) to diskval's error, or to the floor where diskval is below it. Then
 # PAIRS (default 7) paired runs, alternating which goes first; prints the
 # median wall times and their ratio (diskval / plain). The 2000 s case runs
-# twice: at the defaults (the reference folds the periodic motion, README
+# twice: at the defaults (the reference folds the periodic motion, docs/reference.md
 # "Periodic motion") and with fold = off (stepping to the end).
 set -u
 diskval=$1 plain=$2 pairs=${3:-7}

@@ -25,7 +25,7 @@ static const char HELP[] =
     "the lying down, the validity window; DIR/<scenario>/ as compare writes it (default DIR:\n"
     "report), and the JUnit XML to FILE. A TRAJECTORY is a CSV in the state form\n"
     "(t,theta[,phi,psi,x,y][,contact_x,contact_y][,theta_dot,phi_dot,psi_dot][,energy]) or the\n"
-    "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); README \"Judge your own engine\".\n"
+    "pose form (t,x,y,z,qw,qx,qy,qz[,vx,vy,vz,wx,wy,wz]); docs/judge.md.\n"
     "--name: each trajectory's name in the report: 1 to 40 letters, digits, '_-.+', not\n"
     "starting with '.' (as a scenario's). Default: its file name without extension, cut to 40\n"
     "characters, and where that is no such name, every character but those '_'. No name is\n"

@@ -20,6 +20,10 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${DISKVAL_SCENARI
         COMPONENT runtime FILES_MATCHING PATTERN "*.ini")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/league/ DESTINATION ${CMAKE_INSTALL_DATADIR}/diskval/league
         COMPONENT runtime FILES_MATCHING PATTERN "*.ini" PATTERN "*.md")
+# the README and its manual side by side, so the README's links to docs/ hold
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
+        COMPONENT runtime FILES_MATCHING PATTERN "*.md")
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/diskvalConfig.cmake.in
   ${PROJECT_BINARY_DIR}/diskvalConfig.cmake INSTALL_DESTINATION ${DISKVAL_CMAKE_DIR}

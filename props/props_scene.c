@@ -101,7 +101,7 @@ static int judged_agrees(scene *s, const dv_traj *tr, int pose, dv_comparison *c
   return 1;
 }
 
-/* b: metric m's limit is the one README "Verdicts" states: 0.01 rad for
+/* b: metric m's limit is the one docs/verdicts.md states: 0.01 rad for
  * theta, 1% of the distance tr's contact point rolls over the window (at
  * least 1% of the radius) for the path, summed here on its own */
 static void documented(scene *s, const dv_traj *tr, const dv_engine_result *base, dv_metric_id m) {
@@ -273,7 +273,7 @@ static void invariance(scene *s, const dv_traj *tr, const props_error *e,
 
 /* e: tr judged on the scene at thickness 1e-9 r (but invariant_drift: the
  * integrals f1, f2 are the thin disk's, so a cylinder's is not judged at any
- * thickness; README "Verdicts") (its moments kept) as on the thin one */
+ * thickness; docs/verdicts.md) (its moments kept) as on the thin one */
 static void thin_limit(scene *s, const dv_traj *tr, const props_error *e,
                        const dv_engine_result *thin, const char *what) {
   static dv_scenario eps;

@@ -1,7 +1,7 @@
 /* run_turning: theta's turning points and the nutation period, cycle by cycle.
  *
  * The reduced motion nutates: theta swings between two turning points of the
- * effective potential, every period the same (README "Periodic motion").
+ * effective potential, every period the same (docs/reference.md, "Periodic motion").
  * These measures stay meaningful where a pointwise error measures timing:
  *   theta_turning_err    the largest |theta at the engine's k-th maximum -
  *                        theta at the reference's k-th maximum|, and the same

@@ -1,6 +1,6 @@
 /* scenario: a scenario file, parsed (inih) and validated against a schema.
  *
- * Sections and keys (radians, SI units), see README "Scenario files":
+ * Sections and keys (radians, SI units), see docs/scenarios.md:
  *   [scenario]   name, description, duration, output_dt, engines, memory_budget
  *   [disk]       radius, mass, thickness, A, C, gravity, friction
  *                (A, C default to a uniform disk of that thickness; thickness to 0, thin)
@@ -33,14 +33,14 @@
 
 /* the memory a run takes: DV_MEMORY_BASE_MIB MiB plus DV_MEMORY_PER_SAMPLE
  * bytes a sample (duration / output_dt); an upper bound on the peak RSS of
- * compare with four engines (tests/check_memory.sh, README "Reliability") */
+ * compare with four engines (tests/check_memory.sh, docs/reliability.md) */
 #define DV_MEMORY_PER_SAMPLE 1024
 #define DV_MEMORY_BASE_MIB 64
 #define DV_MEMORY_BUDGET_GIB 1.0 /* [scenario] memory_budget's default */
 
 /* [disk] friction's default: every shipped scene rolls within it up to where its
  * motion ends (the largest ratio |F_h| / F_z the reference needs: 1.55 on
- * steady_steep; README "Scenario files") */
+ * steady_steep; docs/scenarios.md) */
 #define DV_FRICTION_DEFAULT 2.0
 
 /* a scenario file larger than this is refused before more of it is read */

@@ -8,7 +8,7 @@
 #     the module itself in `diskval engines`;
 #   - MuJoCo 3 (mujoco-js) on the model and settings of the linked MuJoCo 2.2.2
 #     gives the same theta, row by row, to 1e-8 relative (measured: see
-#     README "Engines outside Debian");
+#     docs/adapters.md);
 #   - MuJoCo 3 passes the steady circle at the settings diskval chooses, and
 #     `verify` finds it converging to the reference (order 1.00, 1.8e-8 rad
 #     extrapolated on short_circle);

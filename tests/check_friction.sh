@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_friction.sh DISKVAL SCENARIO: [disk] friction, the one coefficient of
-# the scene (README "Scenario files"):
+# the scene (docs/scenarios.md):
 #   - a NaN, a negative or a non-number is refused: exit 2, one line
 #     FILE:LINE: friction: ...;
 #   - by default every engine and the validity window ([engines.matched]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_input_limits.sh DISKVAL SCENARIO_DIR: a scenario file is read with bounded
-# memory and time (README "Scenario files"):
+# memory and time (docs/scenarios.md):
 #   - /dev/zero (never ends, no newline) and a 3 MiB file are refused at once
 #     as larger than 1 MiB, with one line naming the file;
 #   - a 1 MiB line is refused as too long, at its line;

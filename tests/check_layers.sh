@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check_layers.sh SOURCE_DIR: the layers depend one way (README, "Architecture").
+# check_layers.sh SOURCE_DIR: the layers depend one way (docs/architecture.md).
 #
 # Every #include "x.h" in a layer's .c and .h files must name a header of
 # that layer or of one below it, and an engine's own header (engines/NAME/)

@@ -28,7 +28,7 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 scenarios=$prefix/share/diskval/scenarios
 for f in bin/diskval include/diskval/diskval.h lib*/cmake/diskval/diskvalConfig.cmake \
   lib*/cmake/diskval/diskvalConfigVersion.cmake lib*/pkgconfig/diskval.pc \
-  share/diskval/scenarios/steady_circle.ini; do
+  share/diskval/scenarios/steady_circle.ini share/doc/diskval/README.md share/doc/diskval/docs/judge.md; do
   compgen -G "$prefix/$f" >/dev/null || fail "not installed: $f"
 done
 if [ -f "$build/diskval.1" ]; then # built where help2man is installed
@@ -90,7 +90,7 @@ done
 contents=$(dpkg-deb -c "$deb")
 for f in ./usr/bin/diskval ./usr/lib/.*libdiskval.so.0.[0-9]* ./usr/include/diskval/diskval.h \
   ./usr/share/diskval/scenarios/steady_circle.ini ./usr/lib/.*cmake/diskval/diskvalConfig.cmake \
-  ./usr/lib/.*pkgconfig/diskval.pc; do
+  ./usr/lib/.*pkgconfig/diskval.pc ./usr/share/doc/diskval/README.md ./usr/share/doc/diskval/docs/README.md; do
   grep -q " $f" <<<"$contents" || fail ".deb holds no $f"
 done
 echo "package: $(basename "$deb"): command, library, headers, CMake and pkg-config files, scenarios"

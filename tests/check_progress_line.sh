@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_progress_line.sh DISKVAL SCENARIO: the progress line of long runs
-# (README, "Progress line").
+# (docs/commands.md, "Progress line").
 #  - under a pseudo-terminal (script(1)) simulate, compare, verify, suite,
 #    sweep and map draw it (\r, the engine, "t T/D s", "left"; tasks "scenario k/n"),
 #    clear it at the end, and the suite's task processes draw nothing;

@@ -8,7 +8,7 @@
 #include "engine_shape.h"
 
 /* [engines.mujoco]: the defaults are the most accurate affordable settings
- * measured (README, "Engine settings"), not MuJoCo's own; the timestep and
+ * measured (docs/engines.md), not MuJoCo's own; the timestep and
  * the contact time constant follow from the scene (MODELS below) */
 typedef struct mujoco_settings {
   double timestep;                               /* s */

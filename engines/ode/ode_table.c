@@ -42,7 +42,7 @@ static const dv_setting_spec KEYS[] = {
 
 /* The error model of engine_scene.h per stepper: the theta error is first
  * order in the timestep (x4 steps give x4 errors); contact softness changes
- * nothing measurable (README), so only the step is derived. c is the largest
+ * nothing measurable (docs/engines.md), so only the step is derived. c is the largest
  * err T^2 / (dt D) measured on the shipped scenarios (thin disk, whole
  * validity window, T the shortest time scale, D the duration) at dt =
  * 6.25e-6 s: nonuniform 2.27 (its wobble's phase), steady_steep 0.74,

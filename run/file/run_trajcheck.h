@@ -1,5 +1,5 @@
 /* run_trajcheck: what a trajectory's columns say about each other and about
- * the ground (run_trajfile.h reads them; README "Judge your own engine").
+ * the ground (run_trajfile.h reads them; docs/judge.md).
  *
  * The pose form gives the body's height: its lowest point is watched as a
  * linked engine's is (engine_watch.h, the same limits): deeper than

@@ -1,7 +1,7 @@
 /* run_trajfile: a trajectory from outside (another engine, often Python),
  * read strictly and converted to diskval's samples.
  *
- * Two forms, told apart by the header (README "Judge your own engine"):
+ * Two forms, told apart by the header (docs/judge.md):
  *   the state form, diskval's own CSV (run_trajectory.h: DV_CSV_HEADER):
  *     t and theta, plus contact_x,contact_y or phi,psi,x,y (or both); any of
  *     theta_dot,phi_dot,psi_dot (all three or none) and energy;

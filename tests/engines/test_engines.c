@@ -97,7 +97,7 @@ static void differences(const traj *a, const traj *b, double *th, double *path) 
 /* Bullet's sequential impulse solver (10 iterations) does not converge on a
  * friction row of effective mass C / r^2: the probe's btRigidBody completes
  * but errs 0.19 rad / 0.20 m (measured; btMultiBody diverges); a regression
- * bound, not accuracy (README, "Engine settings") */
+ * bound, not accuracy (docs/engines.md) */
 #define SMALL_C_BULLET_TH 0.6
 #define SMALL_C_BULLET_P 0.6
 /* Simbody: the constraints' model is the reference's; what remains is its

@@ -19,7 +19,7 @@ static double max_energy_drift(const red_disk *dk, const tl_traj *tr) {
   return drift;
 }
 
-/* the README's promise at the defaults (rtol 1e-12, atol 1e-13): theta within
+/* the promise of docs/reference.md at the defaults (rtol 1e-12, atol 1e-13): theta within
  * 1e-10 rad of a 1e-14 run stepped onto the outputs over 200 s, energy within
  * 1e-11 relative. Measured (this test's output): theta 7.0e-12 rad every 1 ms,
  * 1.2e-11 every 1 s (two 1e-14 references differ by 2e-11 there: rounding);

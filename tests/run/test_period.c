@@ -1,7 +1,7 @@
 /* test_period: the reference folds a periodic motion (red_period.h) without
  * losing accuracy, and folds nothing else.
  *
- * - The README's promise at the defaults (theta within 1e-10 rad over 200 s,
+ * - The promise of docs/reference.md at the defaults (theta within 1e-10 rad over 200 s,
  *   energy 1e-11, output every 1 ms or 1 s) holds for the folded reference.
  * - Folded against stepped: over 200 s and 2000 s of a spinning disk, and
  *   100 s of the C = 0 disk, the default (folded) reference is as close to
@@ -105,7 +105,7 @@ static errors check_fold(const char *path, const char *duration, const char *dt,
   return ef;
 }
 
-/* the README's promise at the defaults, folded as the engine runs them: theta
+/* the promise of docs/reference.md at the defaults, folded as the engine runs them: theta
  * within 1e-10 rad of a 1e-14 run over 200 s, energy within 1e-11, on a 1 ms
  * and a 1 s grid */
 static void check_promise(const char *path) {

@@ -27,7 +27,7 @@
  * residuals, with the energy, check the model (gsl_odeiv2's rk8pd at 1e-13).
  * The start is the scenario's initial state (diskval's C API reads the
  * scenario: its disk and initial state, nothing else) turned into a pose by
- * the formulas of README "Judge your own engine": q = qz(phi) qy(theta)
+ * the formulas of docs/judge.md: q = qz(phi) qy(theta)
  * qz(psi - pi/2), omega = phi' ez - theta' t + psi' n, v_G = -omega x rho.
  *
  * Prints the largest relative energy drift, no-slip residual (m/s), corner
