@@ -107,12 +107,15 @@ static void window_end_words(const dv_comparison *c, const dv_traj *ref,
                "describe",
                ref_end, F[2]);
     } else {
-      const double need = F ? hypot(F[0], F[1]) / F[2] : NAN;
+      double need = 0.0; /* the most friction rolling needs from there on */
+      for (size_t k = i; k < ref->n; k++)
+        if (ref->s[k].force[2] > 0.0)
+          need = fmax(need, hypot(ref->s[k].force[0], ref->s[k].force[1]) / ref->s[k].force[2]);
       snprintf(brief, size, "rolling needs more friction than mu = %g from t = %g s", mu, ref_end);
       snprintf(full, size,
-               "from t = %g s rolling needs more friction than mu = %g (a friction force %.3g "
-               "times the normal force): the disk slips there, which the reduced equations of "
-               "rolling do not describe",
+               "from t = %g s rolling needs more friction than mu = %g (up to %.3g times the "
+               "normal force by the reference's end): the disk slips there, which the reduced "
+               "equations of rolling do not describe",
                ref_end, mu, need);
     }
   } else if (cross && r->half_thickness > 0.0 && ref_end <= t_w + half) {
