@@ -168,10 +168,12 @@ static void one_line(const dv_comparison *c, const dv_traj *ref, const char *bri
     else
       snprintf(line, sizeof line, "not judged: its samples are its reference's own");
   } else if (dv_run_verdict_failed(r->verdict)) {
-    snprintf(line, sizeof line, "fails: the run %s at t = %.3g s%s",
+    char what[64];
+    first_clause(r->stats.detail, what, 60);
+    snprintf(line, sizeof line, "fails: the run %s at t = %.3g s%s%s%s",
              r->verdict == DV_VERDICT_ERROR ? "stopped with an error"
                                             : dv_run_verdict_name(r->verdict),
-             t_eng, body);
+             t_eng, what[0] ? ": " : "", what, body);
   } else if (m < 0 && !r->pass) {
     snprintf(line, sizeof line, "fails: it %s%s", r->event.why[0] ? r->event.why : "fails", body);
   } else if (m < 0) {
