@@ -50,9 +50,14 @@
  *                                   theta_rms_err, path_max_err, path_rms_err)
  *                                   cover the window to here: the engine's
  *                                   horizon (run_horizon.h)
- *         "decided": TEXT,          which part decided the verdict, with the
+ *         "decided": TEXT,          what decided the verdict, one line of at
+ *                                   most DV_DECIDED_MAX characters starting
+ *                                   "passes", "fails" or "not judged"
+ *                                   (run_decided.h)
+ *         "decided_why": TEXT,      why, in sentences: where the compared
+ *                                   window ends and why, the horizon (the
  *                                   engine's early error, the reference's
- *                                   amplification and why the horizon is there
+ *                                   amplification), the deciding limit's source
  *         "horizon": {"t": s | null, "early_error": rad, "early_until": s,
  *                     "early_errors": {"theta": rad, "theta_dot", "phi_dot",
  *                                      "psi_dot": rad/s},

@@ -186,6 +186,7 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
   cJSON_AddNumberToObject(o, "pointwise_end", r->pointwise_end);
   cJSON_AddStringToObject(o, "decided", r->decided);
+  cJSON_AddStringToObject(o, "decided_why", r->decided_why);
   cJSON_AddItemToObject(o, "horizon", horizon_json(r));
   cJSON_AddStringToObject(o, "cause", r->cause);
   cJSON_AddNumberToObject(o, "reference_half_thickness", r->half_thickness);
@@ -301,13 +302,11 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   }
   for (size_t i = 0; i < c->n; i++) { /* what decided: each metric against its limit */
     const dv_engine_result *r = &c->r[i];
-    fprintf(fp,
-            "\n%s: %s, decided by %s; compared window to t = %g s (%.0f%% of the reference's "
-            "run), pointwise metrics to t = %g s\n\n",
-            r->engine->name, dv_run_verdict_name(r->verdict), r->decided, r->vs_ref.t_window,
-            100 * r->window_fraction, r->pointwise_end);
-    fprintf(fp, "Horizon: %s.\n\n", r->horizon_why);
-    if (r->reference_note[0]) fprintf(fp, "%s: %s.\n\n", r->engine->name, r->reference_note);
+    fprintf(fp, "\n%s: %s: ", r->engine->name, dv_run_verdict_name(r->verdict));
+    dv_report_escape_markdown(fp, r->decided);
+    fputs("\n\n", fp);
+    dv_report_escape_markdown(fp, r->decided_why);
+    fputs("\n\n", fp);
     const dv_replay *rp = dv_run_replay_of(r->engine);
     if (rp) { /* a recorded trajectory: where from (the user's path: escaped), what its
                * interpolation may add */
@@ -431,7 +430,7 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
             measured(th, sizeof th, "%.2e rad", r->vs_ref.value[DV_THETA_MAX_ERR]),
             measured(path, sizeof path, "%.2e m", r->vs_ref.value[DV_PATH_MAX_ERR]), body,
             r->pass ? "pass" : "FAIL");
-    fprintf(fp, "    decided by %s\n", r->decided);
+    fprintf(fp, "    %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);
     if (r->event.judged && r->event.agrees) fprintf(fp, "    lies down: %s\n", r->event.note);
     for (size_t k = 0; k < r->nfailures; k++) fprintf(fp, "    %s\n", r->failures[k]);

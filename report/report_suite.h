@@ -36,7 +36,8 @@
  *     <properties> give, passing or not, outcome, reference (engine,
  *     half-thickness or thin disk, integrator and rtol), for every metric
  *     METRIC, METRIC.limit, METRIC.margin ("%.6g", "none" when not judged)
- *     and METRIC.limit_from, window_end, pointwise_end and decided; a
+ *     and METRIC.limit_from, window_end, pointwise_end, decided and
+ *     decided_why; a
  *     failing engine then carries <failure message=FIRST>ALL</failure> (its
  *     outcome and detail when it lists no failure). An errored scenario is a
  *     test suite of one test case, named after its dir, carrying <error>.

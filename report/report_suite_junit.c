@@ -112,6 +112,7 @@ static void put_case_properties(FILE *fp, const cJSON *report, const cJSON *eng)
     put_number(fp, "horizon.amplification", item(hz, "amplification"));
   }
   if (item(eng, "decided")) put_property(fp, "decided", text(eng, "decided"));
+  if (item(eng, "decided_why")) put_property(fp, "decided_why", text(eng, "decided_why"));
   fputs("      </properties>\n", fp);
 }
 

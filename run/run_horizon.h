@@ -51,7 +51,7 @@
 
 /* rad: near or below the engines' early errors (measured 7.2e-10 to 5.5e-5
  * rad at the derived settings: `diskval suite scenarios scenarios/hard`,
- * report.json "decided"; a smaller one is taken as the nudge), far above the
+ * report.json "decided_why"; a smaller one is taken as the nudge), far above the
  * reference's own error (1e-10 rad over 200 s: README "The reference") */
 #define DV_HORIZON_NUDGE 1e-6
 #define DV_HORIZON_SPREAD 1e-2 /* rad: the default theta limit */

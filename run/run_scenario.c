@@ -9,6 +9,7 @@
 
 #include "dv_reference.h"
 #include "engine_scene.h"
+#include "run_decided.h"
 #include "run_horizon.h"
 #include "run_limits.h"
 #include "run_progress.h"
@@ -154,32 +155,6 @@ static void pointwise_to_horizon(const dv_traj *eng, const dv_traj *ref, double 
   r->pointwise_end = early.t_window;
 }
 
-/* what decided the verdict, in words */
-static void say_decided(const dv_scenario *sc, dv_engine_result *r) {
-  int failed[2] = {0, 0}; /* pointwise, timing-insensitive */
-  for (int m = 0; m < DV_NMETRICS; m++)
-    if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) == DV_LIMIT_OVER)
-      failed[!dv_run_metric_pointwise((dv_metric_id)m)] = 1;
-  const int whole = r->pointwise_end >= r->vs_ref.t_window - 0.5 * sc->output_dt;
-  char part[660];
-  if (whole)
-    snprintf(part, sizeof part, "pointwise over the whole window: %s", r->horizon_why);
-  else
-    snprintf(part, sizeof part, "pointwise to its horizon t = %g s, timing-insensitive after: %s",
-             r->pointwise_end, r->horizon_why);
-  if (r->verdict == DV_VERDICT_NOT_JUDGED || r->verdict == DV_VERDICT_OUTSIDE_VALIDITY ||
-      dv_run_verdict_failed(r->verdict))
-    snprintf(r->decided, sizeof r->decided, "the run: %s", dv_run_verdict_name(r->verdict));
-  else if (failed[0] || failed[1])
-    snprintf(r->decided, sizeof r->decided, "%s metrics (%s)",
-             failed[0] && failed[1] ? "pointwise and timing-insensitive"
-             : failed[0]            ? "pointwise"
-                                    : "timing-insensitive",
-             part);
-  else
-    snprintf(r->decided, sizeof r->decided, "every metric within its limit (%s)", part);
-}
-
 /* a window too short to judge: why into why, 0 when it is long enough */
 static int window_too_short(const dv_comparison *c, const dv_metrics *w, double t0, double lay_down,
                             char *why, size_t size) {
@@ -298,7 +273,7 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
       t_eng < t_ref - 0.5 * sc->output_dt)
     r->verdict = DV_VERDICT_ENDED_BY_EVENT;
   r->pass = r->nfailures == 0;
-  say_decided(sc, r);
+  dv_run_say_decided(c, ref, ref_st, ref_end, r);
 }
 
 /* a reference run that failed: err names the run, what */

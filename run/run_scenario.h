@@ -36,6 +36,8 @@
 #define DV_MIN_WINDOW_FRACTION 0.1
 /* nor one of fewer samples than this (the first is the shared start) */
 #define DV_MIN_WINDOW_SAMPLES 10
+/* characters of an engine's one-line "decided" (run_decided.h) */
+#define DV_DECIDED_MAX 120
 
 typedef struct dv_engine_result {
   const dv_engine_type *engine;
@@ -61,7 +63,8 @@ typedef struct dv_engine_result {
   double spread[DV_NMETRICS];     /* what its early errors as nudges move each metric by */
   dv_run_end nudged[2];           /* how those nudged reference runs ended */
   char horizon_why[560];          /* why the horizon is where it is, in words */
-  char decided[720];              /* which part decided the verdict, and why */
+  char decided[DV_DECIDED_MAX + 1]; /* what decided the verdict, one line (run_decided.h) */
+  char decided_why[1600];           /* why: the window's end, the horizon, the limit's source */
   char cause[200];                /* an excess's cause, from attribution ("": unknown) */
   char reference_note[200];       /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;         /* its lying down against the reference's (run_event.h) */

@@ -144,8 +144,18 @@ cleanup:
   return end;
 }
 
-void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]) {
+/* turn_err's new candidate err at the ordinal-th turn of kind: kept in *w when largest */
+static void consider(double *turn_err, double err, int kind, size_t ordinal, double lag, int only,
+                     dv_turning_worst *w) {
+  if (!(err > *turn_err)) return;
+  *turn_err = err;
+  if (w) *w = (dv_turning_worst){kind, ordinal, lag, only};
+}
+
+static void compare_turns(const dv_traj *e, const dv_traj *ref, double t_end, double out[3],
+                          dv_turning_worst *worst) {
   out[0] = out[1] = out[2] = NAN;
+  if (worst) *worst = (dv_turning_worst){0, 0, NAN, 0};
   turn *te = malloc((e->n + 1) * sizeof *te), *tr = malloc((ref->n + 1) * sizeof *tr);
   turn *ke = malloc((e->n + 1) * sizeof *ke), *kr = malloc((ref->n + 1) * sizeof *kr);
   if (!te || !tr || !ke || !kr) goto cleanup;
@@ -155,16 +165,20 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
   for (int kind = -1; kind <= 1; kind += 2) {
     const size_t me = of_kind(te, ne, kind, ke), mr = of_kind(tr, nr, kind, kr);
     const size_t paired = me < mr ? me : mr;
-    for (size_t k = 0; k < paired; k++) turn_err = fmax(turn_err, fabs(ke[k].theta - kr[k].theta));
+    for (size_t k = 0; k < paired; k++)
+      consider(&turn_err, fabs(ke[k].theta - kr[k].theta), kind, k + 1, ke[k].t - kr[k].t, 0,
+               worst);
     /* a turn the other run does not make: against that run's extreme of its
      * kind; not the last, where the other is still on its way to it (its turn
      * lies past the window: that is timing, the period's) */
     for (size_t k = paired; k < me; k++)
       if (k + 1 < me || !heading_to(ref, t_end, kind))
-        turn_err = fmax(turn_err, fabs(ke[k].theta - extreme(ref, t_end, kind)));
+        consider(&turn_err, fabs(ke[k].theta - extreme(ref, t_end, kind)), kind, k + 1, NAN, 1,
+                 worst);
     for (size_t k = paired; k < mr; k++)
       if (k + 1 < mr || !heading_to(e, t_end, kind))
-        turn_err = fmax(turn_err, fabs(kr[k].theta - extreme(e, t_end, kind)));
+        consider(&turn_err, fabs(kr[k].theta - extreme(e, t_end, kind)), kind, k + 1, NAN, -1,
+                 worst);
     ref_periods += mr > 1;
     for (size_t k = 0; k + 1 < paired; k++) {
       period_err = fmax(period_err, fabs((ke[k + 1].t - ke[k].t) - (kr[k + 1].t - kr[k].t)));
@@ -186,4 +200,14 @@ cleanup:
   free(tr);
   free(ke);
   free(kr);
+}
+
+void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]) {
+  compare_turns(e, ref, t_end, out, NULL);
+}
+
+void dv_run_turning_worst(const dv_traj *e, const dv_traj *ref, double t_end,
+                          dv_turning_worst *out) {
+  double err[3];
+  compare_turns(e, ref, t_end, err, out);
 }

@@ -54,6 +54,21 @@ double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, do
  * room each; their count (0 also when out of memory) */
 size_t dv_run_turning_points(const dv_traj *tr, double t_end, double *t, double *theta, int *kind);
 
+/* the turning point that made theta_turning_err: kind +1 a maximum, -1 a
+ * minimum (0: none), the ordinal-th of its kind (1: the first), lag the
+ * engine's time minus the reference's (s; NAN where one run alone makes it),
+ * only which run that is (1 the engine, -1 the reference, 0 both) */
+typedef struct dv_turning_worst {
+  int kind;
+  size_t ordinal;
+  double lag;
+  int only;
+} dv_turning_worst;
+
+/* that turning point of e against ref over samples up to t_end */
+void dv_run_turning_worst(const dv_traj *e, const dv_traj *ref, double t_end,
+                          dv_turning_worst *out);
+
 /* the largest |theta_dot| of tr up to t_end (rad/s) */
 double dv_run_theta_rate_max(const dv_traj *tr, double t_end);
 

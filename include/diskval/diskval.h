@@ -84,7 +84,8 @@ typedef struct diskval_comparison {
   int pass;                          /* 1: judged, every metric within its limit, lying down
                                       * (if it does) where the reference allows */
   char verdict[32];                  /* "agrees", "exceeds tolerance", "diverged", ... */
-  char decided[160];                 /* which part decided the verdict, and why */
+  char decided[160];                 /* what decided the verdict, one line: "passes: METRIC
+                                      * V <= L (...)", "fails: ...", "not judged: ..." */
   diskval_metrics metrics;           /* against its own reference */
   double limit[DISKVAL_MAX_METRICS]; /* each metric's limit, same order */
   double wall_s;                     /* wall-clock time of the engine's run, s */

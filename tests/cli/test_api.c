@@ -119,6 +119,8 @@ static void check_file(const char *dir) {
   CHECK(s == 0, "diskval_compare: %s", err.msg);
   if (s == 0) {
     CHECK(c.pass == 1 && strcmp(c.verdict, "agrees") == 0, "verdict %s (%s)", c.verdict, c.decided);
+    CHECK(strncmp(c.decided, "passes: ", 8) == 0 && !strchr(c.decided, '\n'),
+          "decided is no one line naming the pass: '%s'", c.decided);
     CHECK(c.metrics.n >= 9 && strcmp(c.metrics.name[0], "theta_max_err") == 0, "metric names");
     CHECK(c.metrics.value[0] <= c.limit[0], "theta_max_err %g > %g", c.metrics.value[0],
           c.limit[0]);

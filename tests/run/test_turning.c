@@ -76,12 +76,23 @@ int main(void) {
   /* measured 7.8e-8 rad (the decay shifts each turn off c +- amp) and 5.5e-7 s */
   CHECK_NEAR(v[0], fmax(last, last_min), 1e-6, "decaying amplitude: turning error");
   CHECK_NEAR(v[1], 0.0, 5e-6, "the decay barely moves the period");
+  /* which turn that is, for the one line that decides (run_decided.h): the
+   * fifth minimum, both runs making it; the decay moves it 1.56e-4 s earlier
+   * (measured: this check's message with the bound at 0) */
+  dv_turning_worst w;
+  dv_run_turning_worst(&decaying, &ref, INFINITY, &w);
+  CHECK(w.kind == -1 && w.ordinal == 5 && w.only == 0 && w.lag < 0 && w.lag > -1e-3,
+        "the worst turn: kind %d, ordinal %zu, only %d, lag %g s", w.kind, w.ordinal, w.only,
+        w.lag);
 
   /* an engine that stops nutating has lost every period, and its missing turns
    * compare with its own extremes (0.9): the amplitude */
   dv_run_turning_compare(&steady, &ref, INFINITY, v);
   CHECK_NEAR(v[0], 0.5, 1e-9, "no turns where the reference turns");
   CHECK(isinf(v[1]) && isinf(v[2]), "lost periods: %g %g", v[1], v[2]);
+  dv_run_turning_worst(&steady, &ref, INFINITY, &w); /* the reference's, which it does not make */
+  CHECK(w.kind != 0 && w.only == -1 && isnan(w.lag), "a turn it does not make: only %d, lag %g",
+        w.only, w.lag);
 
   /* nothing turns: nothing to compare (not judged), whatever the noise */
   dv_run_turning_compare(&noisy, &steady, INFINITY, v);

@@ -13,7 +13,9 @@
  * reference; a coarse step's early error ends
  * pointwise judging inside the window. f1, f2 along MuJoCo's own states are
  * conserved on a steady circle and drift when the contact slips. A window
- * the reference does not fill is not judged. The numbers in comments are
+ * the reference does not fill is not judged. Every comparison's one-line
+ * "decided" starts with its verdict's word and names the metric furthest over
+ * (a pass: nearest) its limit, with its value and limit. The numbers in comments are
  * this test's own printout.
  */
 #include <math.h>
@@ -42,6 +44,54 @@ static const char TILTED[] = /* r 0.06 m, 0.02 rad from upright, 0.3x critical s
     "[scenario]\nname = tilted\ndescription = d\nduration = 2\noutput_dt = 0.01\n"
     "[disk]\nradius = 0.06\nmass = 1\n[initial]\ntheta = 1.5507963267948966\npsi_dot = 2.215\n";
 
+/* metric m of r against its limit: value / limit, a value not measured the
+ * furthest over, NAN where m has no limit */
+static double margin_of(const dv_engine_result *r, int m) {
+  const double v = r->vs_ref.value[m], l = r->tolerance[m];
+  if (isnan(l)) return NAN;
+  if (isnan(v)) return INFINITY;
+  return l > 0 ? v / l : v > 0 ? INFINITY : 0.0;
+}
+
+/* printed (two significant digits at least) is value */
+static int near(double printed, double value) {
+  return isinf(value) ? printed == value : fabs(printed - value) <= 0.05 * fabs(value);
+}
+
+/* r's decided (issue 39): one line of at most DV_DECIDED_MAX characters,
+ * starting with its verdict's word; a named metric's value and limit are r's,
+ * over its limit and the furthest over on a fail, nearest it on a pass */
+static void check_decided(const dv_engine_result *r) {
+  const char *d = r->decided;
+  CHECK(strlen(d) <= DV_DECIDED_MAX && !strchr(d, '\n') && r->decided_why[0],
+        "decided is no line of at most %d characters with a why: '%s'", DV_DECIDED_MAX, d);
+  const int judged =
+      r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
+  const char *word = !judged ? "not judged: " : r->pass ? "passes: " : "fails: ";
+  CHECK(!strncmp(d, word, strlen(word)), "decided does not start with '%s': '%s'", word, d);
+  char metric[40], op[3];
+  double v, l, furthest = -INFINITY;
+  for (int m = 0; m < DV_NMETRICS; m++)
+    if (!isnan(margin_of(r, m))) furthest = fmax(furthest, margin_of(r, m));
+  if (sscanf(d + strlen(word), "%39[a-z_] %lf %2[<=>] %lf", metric, &v, op, &l) != 4) {
+    CHECK(!r->pass && !(r->verdict == DV_VERDICT_EXCEEDS && furthest > 1 && !r->event.why[0]),
+          "decided names no metric, value and limit: '%s'", d);
+    return;
+  }
+  int m = 0;
+  while (m < DV_NMETRICS && strcmp(dv_metric_names[m], metric)) m++;
+  if (m == DV_NMETRICS) {
+    CHECK(0, "decided names no metric: '%s'", d);
+    return;
+  }
+  CHECK(near(v, r->vs_ref.value[m]) && near(l, r->tolerance[m]),
+        "decided prints %g and %g, the metric is %g, its limit %g: '%s'", v, l,
+        r->vs_ref.value[m], r->tolerance[m], d);
+  CHECK(margin_of(r, m) == furthest && (r->pass ? margin_of(r, m) <= 1 : margin_of(r, m) > 1),
+        "decided's %s (%g of its limit) is not the metric %s its limit (%g): '%s'", metric,
+        margin_of(r, m), r->pass ? "nearest" : "furthest over", furthest, d);
+}
+
 /* compare scene (INI text) with overrides in one engine; the result in c */
 static int compare(const char *scene, const char *engine, const char *const *sets, size_t nsets,
                    dv_scenario *sc, dv_comparison *c) {
@@ -55,6 +105,7 @@ static int compare(const char *scene, const char *engine, const char *const *set
   const dv_engine_type *engines[] = {dv_engine_find(engine)};
   if (!status) status = dv_run_scenario(sc, NULL, engines, 1, c, &err);
   CHECK(status == 0, "%s: %s", engine, err.msg);
+  if (!status) check_decided(&c->r[0]);
   return status;
 }
 
