@@ -14,7 +14,7 @@ static const char css[] =
     "table{border-collapse:collapse;table-layout:fixed;width:100%}"
     "th,td{border:1px solid #bbb;padding:2px 5px;font-size:13px;white-space:nowrap;"
     "overflow:hidden;text-overflow:ellipsis;text-align:left}th{background:#eee}"
-    "col.e{width:9em}col.v{width:16em}col.j{width:11em}col.n{width:10em}col.c{width:6em}"
+    "col.e{width:9em}col.v{width:19em}col.j{width:10em}col.n{width:12.5em}col.c{width:5em}"
     "td.n{font-family:monospace}"
     ".pass{background:#c8f0c8;color:#075207}.fail{background:#f6c4c4;color:#8b0000}"
     ".nj{background:#e2e2e2;color:#444}.err{background:#ffe0a0;color:#7a4200}"
@@ -37,13 +37,14 @@ static void put_table(FILE *fp, const cJSON *engines) {
   fputs("<table>\n<colgroup><col class=\"e\" /><col class=\"v\" /><col /><col class=\"j\" />"
         "<col class=\"n\" /><col class=\"n\" /><col class=\"c\" /></colgroup>\n"
         "<thead><tr><th>engine</th><th>verdict</th><th>decided by</th><th>judged against</th>"
-        "<th>theta error / limit (rad)</th><th>path error / limit (m)</th>"
-        "<th title=\"wall-clock s per simulated s\">cost (s/s)</th></tr></thead>\n<tbody>\n",
+        "<th>theta err / limit (rad)</th><th>path err / limit (m)</th>"
+        "<th title=\"wall-clock s per simulated s\">cost</th></tr></thead>\n<tbody>\n",
         fp);
   cJSON_ArrayForEach(eng, engines) {
     char body[48];
     dvs_judged_words(eng, body, sizeof body);
-    dv_report_escape_put(fp, "<tr><td><a href=\"#e-", eng->string, 1, "\">");
+    dv_report_escape_put(fp, "<tr><td title=\"", eng->string, 1, "\">");
+    dv_report_escape_put(fp, "<a href=\"#e-", eng->string, 1, "\">");
     dv_report_escape_put(fp, "", eng->string, 0, "</a></td>");
     fprintf(fp, "<td class=\"%s\">", dvs_class_css[dvs_class_of(eng)]);
     dvs_put_verdict_words(fp, eng);
@@ -153,9 +154,10 @@ static void put_page(FILE *fp, const char *out_dir, const dvs_entry *e) {
   dv_report_escape_put(fp, "<p>Scenario file ", text(r, "file"), 0, "; ");
   dvs_put_num(fp, "duration ", item(r, "duration"), " s, ");
   dvs_put_num(fp, "output every ", item(r, "output_dt"), " s. ");
-  dv_report_escape_put(fp, "Reference: ", text(ref, "engine"), 0, " (thin disk, ");
-  dv_report_escape_put(fp, "", text(ref, "integrator"), 0, ", ");
-  dvs_put_num(fp, "rtol ", item(ref, "rtol"), "), ");
+  dv_report_escape_put(fp, "Reference: ", text(ref, "engine"), 0, " (thin disk");
+  put_para(fp, ", ", text(ref, "integrator"), "");
+  if (cJSON_IsNumber(item(ref, "rtol"))) dvs_put_num(fp, " rtol ", item(ref, "rtol"), "");
+  fputs("), ", fp);
   dv_report_escape_put(fp, "", text(ref, "outcome"), 0, "");
   dvs_put_num(fp, " at t = ", item(ref, "t_end"), " s");
   put_para(fp, ": ", text(ref, "detail"), "");

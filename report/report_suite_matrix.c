@@ -75,8 +75,9 @@ static void put_summary(FILE *fp, const dvs_entry *es, size_t n, size_t ncols) {
   fprintf(fp,
           "<p>%zu scenarios, %zu engines: <b class=\"pass\">%d pass</b>, "
           "<b class=\"fail\">%d fail</b>, <b class=\"nj\">%d not judged</b>, "
-          "<b class=\"err\">%d harness errors</b>.</p>\n<ul>\n",
-          n, ncols, count[DVS_PASS], count[DVS_FAIL], count[DVS_NOT_JUDGED], count[DVS_ERROR]);
+          "<b class=\"err\">%d harness error%s</b>.</p>\n<ul>\n",
+          n, ncols, count[DVS_PASS], count[DVS_FAIL], count[DVS_NOT_JUDGED], count[DVS_ERROR],
+          count[DVS_ERROR] == 1 ? "" : "s");
   if (count[DVS_FAIL]) {
     fputs("<li>fail", fp);
     put_tally(fp, &fails, ": ");
@@ -147,7 +148,9 @@ static void put_cell(FILE *fp, const char *out_dir, const dvs_entry *e, const cJ
     dv_report_escape_put(fp, "<span><b>", *text(eng, "outcome") ? text(eng, "outcome") : "?", 0,
                          "</b></span>");
   }
-  dv_report_escape_put(fp, "<span>", body, 0, "</span></a></td>");
+  /* "vs" said once, in the legend: the cell names the body */
+  const char *shown = strncmp(body, "vs ", 3) ? body : body + 3;
+  dv_report_escape_put(fp, "<span>", shown, 0, "</span></a></td>");
 }
 
 void dvs_write_matrix(FILE *fp, const char *out_dir, const dvs_entry *es, size_t n, int pass) {
@@ -160,7 +163,7 @@ void dvs_write_matrix(FILE *fp, const char *out_dir, const dvs_entry *es, size_t
           pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL");
   put_summary(fp, es, n, ncols);
   fputs("<p>A cell: the verdict's colour; the judged metric nearest (or furthest over) its limit, "
-        "as value / limit; the reference that judged it. Point at a cell for the line that "
+        "as value / limit; the body whose reference judged it. Point at a cell for the line that "
         "decided; click it for the scenario's page. Summary: <a href=\"summary.json\">"
         "summary.json</a>.</p>\n",
         fp);
