@@ -18,7 +18,7 @@ static const char HELP[] =
     "Run SCENARIO in the engines (default: every contact engine) and in the references, compare\n"
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
     "DIR/<scenario>/ (default DIR: report): every trajectory as CSV, the plots,\n"
-    "report.json and report.md. Prints one line per engine.\n"
+    "report.json, report.md and index.html (its page). Prints one line per engine.\n"
     "--timeout S: stop the comparison after S s of wall time (an error report); one whose\n"
     "probed cost is more than twice S is not started. Default 0: no limit.\n"
     "--jobs N: run the engines (each with its settings probes), the references, then the\n"
@@ -66,7 +66,7 @@ int dv_cli_compare(int argc, char **argv) {
            DV_EXIT_ERROR)
     dv_cli_error("compare", "%s: %s", sc.path, err.msg);
   else
-    printf("report: %s/%s/report.md\n", out, sc.name);
+    printf("report: %s/%s/report.md\npage: %s/%s/index.html\n", out, sc.name, out, sc.name);
   dv_io_unlock_dir(out, lock);
   dv_cli_args_free(&cmd, &a);
   return code;

@@ -231,6 +231,7 @@ int dv_cli_judge(int argc, char **argv) {
     } else {
       if ((step_list || file_steps) && print_convergence(steps, errors, n)) code = DV_EXIT_FAIL;
       printf("report: %s/%s/report.md\n", out, sc.name);
+      printf("page: %s/%s/index.html\n", out, sc.name);
     }
   }
   dv_io_unlock_dir(out, lock);

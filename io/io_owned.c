@@ -63,7 +63,7 @@ static int mark_listing(const char *dir, dv_error *err) {
  * marks listed them): what a report then held */
 static int legacy_name(const char *name) {
   const size_t len = strlen(name);
-  return !strcmp(name, "report.json") || !strcmp(name, "report.md") ||
+  return !strcmp(name, "report.json") || !strcmp(name, "report.md") || !strcmp(name, "index.html") ||
          (len > 4 && (!strcmp(name + len - 4, ".csv") || !strcmp(name + len - 4, ".svg")));
 }
 

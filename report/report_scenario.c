@@ -13,6 +13,7 @@
 #include "run_meta.h"
 #include "io_file.h"
 #include "report_escape.h"
+#include "report_page.h"
 #include "report_plot.h"
 #include "report_portrait.h"
 #include "run_trajectory.h"
@@ -417,6 +418,7 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
   if (!status) status = dv_report_portraits(dir, c, err);
   if (!status) status = write_markdown(dir, c, err);
   if (!status) status = write_json(dir, c, 1, err);
+  if (!status) status = dv_report_page_write(dir, err); /* read back from report.json */
   return status;
 }
 

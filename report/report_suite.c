@@ -1,9 +1,9 @@
-/* dv_suite_report: summary.json, index.html and JUnit XML from the scenarios' report.json. */
+/* dv_suite_report: summary.json, index.html (the matrix: scenarios down, engines across),
+ * JUnit XML and each scenario's page, from their report.json. */
 #include "report_suite.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,14 +21,196 @@
 
 typedef dvs_entry entry;
 
-/* the page's only style: pass green, FAIL red, harness ERROR amber */
+#define MAX_COLUMNS 64 /* engine columns; the suite's scenarios name at most this many */
+#define MAX_REASONS 24 /* distinct reasons counted per class; the rest are "other" */
+
+/* fixed layout, one line per text and ellipses: no width or height grows with the text */
 static const char css[] =
-    "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse}"
-    "th,td{border:1px solid #bbb;padding:3px 7px;vertical-align:top}th{background:#eee}"
-    "td.n{text-align:right;font-family:monospace}.pass,.fail,.err{font-weight:bold}"
+    "body{font-family:sans-serif;margin:12px;color:#222;font-size:14px}"
+    "table{border-collapse:collapse;table-layout:fixed;width:100%}"
+    "th,td{border:1px solid #bbb;padding:2px 4px;font-size:12px;line-height:15px;"
+    "white-space:nowrap;overflow:hidden;text-overflow:ellipsis;text-align:left}"
+    "thead th{background:#eee}th.s{width:11em;background:#f6f6f6}"
+    "td a,th a{color:inherit;text-decoration:none;display:block;overflow:hidden;"
+    "text-overflow:ellipsis}td a span{display:block;overflow:hidden;text-overflow:ellipsis}"
     ".pass{background:#c8f0c8;color:#075207}.fail{background:#f6c4c4;color:#8b0000}"
-    ".err{background:#ffe0a0;color:#7a4200}figure{display:inline-block;margin:.5em}"
-    "img{max-width:560px;border:1px solid #ddd}section{border-top:2px solid #ccc}";
+    ".nj{background:#e2e2e2;color:#444}.err{background:#ffe0a0;color:#7a4200}"
+    "h1 span{padding:0 .3em}ul{margin:.3em 0}p{margin:.4em 0}";
+
+/* reasons and how many times each came up */
+typedef struct tally {
+  const char *what[MAX_REASONS];
+  int count[MAX_REASONS];
+  int n, other;
+} tally;
+
+/* count one more of what in t */
+static void add(tally *t, const char *what) {
+  for (int i = 0; i < t->n; i++)
+    if (!strcmp(t->what[i], what)) {
+      t->count[i]++;
+      return;
+    }
+  if (t->n == MAX_REASONS) {
+    t->other++;
+    return;
+  }
+  t->what[t->n] = what;
+  t->count[t->n++] = 1;
+}
+
+/* ": 3 diverged, 2 lost contact" for t (nothing when empty) */
+static void put_tally(FILE *fp, const tally *t, const char *pre) {
+  for (int i = 0; i < t->n; i++) {
+    fprintf(fp, "%s%d ", i ? ", " : pre, t->count[i]);
+    dv_report_escape(fp, t->what[i], 0);
+  }
+  if (t->other) fprintf(fp, ", %d other", t->other);
+}
+
+/* the counts by class at the top, and why by class: outcome, deciding metric */
+static void put_summary(FILE *fp, const dvs_entry *es, size_t n, size_t ncols) {
+  int count[DVS_NCLASSES] = {0};
+  static const tally none;
+  tally fails = none, metrics = none, unjudged = none;
+  for (size_t i = 0; i < n; i++) {
+    const cJSON *eng, *worst;
+    count[DVS_ERROR] += es[i].error[0] != 0;
+    cJSON_ArrayForEach(eng, es[i].engines) {
+      const dvs_class k = dvs_class_of(eng);
+      const char *outcome = *text(eng, "outcome") ? text(eng, "outcome") : "no outcome";
+      count[k]++;
+      if (k == DVS_NOT_JUDGED) add(&unjudged, outcome);
+      if (k != DVS_FAIL) continue;
+      add(&fails, outcome);
+      if (!strcmp(outcome, "exceeds tolerance") && (worst = dvs_deciding_limit(eng)))
+        add(&metrics, worst->string);
+    }
+  }
+  fprintf(fp,
+          "<p>%zu scenarios, %zu engines: <b class=\"pass\">%d pass</b>, "
+          "<b class=\"fail\">%d fail</b>, <b class=\"nj\">%d not judged</b>, "
+          "<b class=\"err\">%d harness error%s</b>.</p>\n<ul>\n",
+          n, ncols, count[DVS_PASS], count[DVS_FAIL], count[DVS_NOT_JUDGED], count[DVS_ERROR],
+          count[DVS_ERROR] == 1 ? "" : "s");
+  if (count[DVS_FAIL]) {
+    fputs("<li>fail", fp);
+    put_tally(fp, &fails, ": ");
+    put_tally(fp, &metrics, "; over their limit: ");
+    fputs("</li>\n", fp);
+  }
+  if (count[DVS_NOT_JUDGED]) {
+    fputs("<li>not judged", fp);
+    put_tally(fp, &unjudged, ": ");
+    fputs("</li>\n", fp);
+  }
+  if (count[DVS_ERROR]) {
+    fputs("<li>harness errors (no report): ", fp);
+    int k = 0;
+    for (size_t i = 0; i < n; i++)
+      if (es[i].error[0]) dv_report_escape_put(fp, k++ ? ", " : "", es[i].name, 0, "");
+    fputs("</li>\n", fp);
+  }
+  fputs("</ul>\n", fp);
+}
+
+/* the engines of every scenario, each once, in the order they first appear */
+static size_t columns(const dvs_entry *es, size_t n, const char **cols) {
+  size_t ncols = 0;
+  for (size_t i = 0; i < n; i++) {
+    const cJSON *eng;
+    cJSON_ArrayForEach(eng, es[i].engines) {
+      size_t k = 0;
+      while (k < ncols && strcmp(cols[k], eng->string)) k++;
+      if (k == ncols && ncols < MAX_COLUMNS) cols[ncols++] = eng->string;
+    }
+  }
+  return ncols;
+}
+
+/* "<a href=DIR/index.html>" when the scenario has its page, else "<a>" */
+static void open_link(FILE *fp, const char *out_dir, const dvs_entry *e) {
+  if (dvs_file_exists(out_dir, e->dir, "index.html"))
+    dvs_put_url(fp, "<a href=\"", e->dir, "index.html", "\">");
+  else
+    fputs("<a>", fp);
+}
+
+/* one cell: the verdict's colour, value / limit of the deciding metric, the reference */
+static void put_cell(FILE *fp, const char *out_dir, const dvs_entry *e, const cJSON *eng) {
+  if (!eng) {
+    fputs("<td>&#8211;</td>", fp);
+    return;
+  }
+  const dvs_class k = dvs_class_of(eng);
+  const cJSON *worst = dvs_deciding_limit(eng);
+  char body[48];
+  dvs_judged_words(eng, body, sizeof body);
+  fprintf(fp, "<td class=\"%s\" title=\"", dvs_class_css[k]);
+  dv_report_escape(fp, eng->string, 1);
+  fputs(" on ", fp);
+  dv_report_escape(fp, e->name, 1);
+  fputs(" ", fp);
+  dv_report_escape(fp, body, 1);
+  fputs(": ", fp);
+  dv_report_escape(fp, text(eng, "decided"), 1);
+  fputs("\">", fp);
+  open_link(fp, out_dir, e);
+  if ((k == DVS_PASS || !strcmp(text(eng, "outcome"), "exceeds tolerance")) && worst) {
+    dvs_put_num(fp, "<span><b>", item(worst, "margin"), "&#215;</b> ");
+    dv_report_escape_put(fp, "", worst->string, 0, "</span>");
+  } else {
+    dv_report_escape_put(fp, "<span><b>", *text(eng, "outcome") ? text(eng, "outcome") : "?", 0,
+                         "</b></span>");
+  }
+  /* "vs" said once, in the legend: the cell names the body */
+  const char *shown = strncmp(body, "vs ", 3) ? body : body + 3;
+  dv_report_escape_put(fp, "<span>", shown, 0, "</span></a></td>");
+}
+
+void dvs_write_matrix(FILE *fp, const char *out_dir, const dvs_entry *es, size_t n, int pass) {
+  const char *cols[MAX_COLUMNS];
+  const size_t ncols = columns(es, n, cols);
+  fprintf(fp,
+          "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
+          "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"
+          "<h1>diskval suite: <span class=\"%s\">%s</span></h1>\n",
+          pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL");
+  put_summary(fp, es, n, ncols);
+  fputs("<p>A cell: the verdict's colour; the judged metric nearest (or furthest over) its limit, "
+        "as value / limit; the body whose reference judged it. Point at a cell for the line that "
+        "decided; click it for the scenario's page. Summary: <a href=\"summary.json\">"
+        "summary.json</a>.</p>\n",
+        fp);
+  fputs("<table>\n<thead><tr><th class=\"s\">scenario</th>", fp);
+  for (size_t c = 0; c < ncols; c++) {
+    dv_report_escape_put(fp, "<th title=\"", cols[c], 1, "\">");
+    dv_report_escape_put(fp, "", cols[c], 0, "</th>");
+  }
+  fputs("</tr></thead>\n<tbody>\n", fp);
+  for (size_t i = 0; i < n; i++) {
+    const dvs_entry *e = &es[i];
+    dv_report_escape_put(fp, "<tr><th class=\"s\" title=\"", e->name, 1, "\">");
+    open_link(fp, out_dir, e);
+    dv_report_escape_put(fp, "", e->name, 0, "</a></th>");
+    if (e->error[0]) {
+      fprintf(fp, "<td class=\"err\" colspan=\"%zu\"", ncols ? ncols : 1);
+      dv_report_escape_put(fp, " title=\"", e->error, 1, "\">");
+      dv_report_escape_put(fp, "<b>ERROR</b> ", e->error, 0, "</td></tr>\n");
+      continue;
+    }
+    for (size_t c = 0; c < ncols; c++)
+      put_cell(fp, out_dir, e, cJSON_GetObjectItemCaseSensitive(e->engines, cols[c]));
+    fputs("</tr>\n", fp);
+  }
+  fputs("</tbody>\n</table>\n", fp);
+  char stability[4096];
+  snprintf(stability, sizeof stability, "%s/stability.html", out_dir);
+  if (access(stability, F_OK) == 0) /* written by suite --stability */
+    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n",
+          fp);
+  fputs("</body>\n</html>\n", fp);
+}
 
 /* a scenario passed: usable report that says so, every engine passing */
 static int scenario_pass(const entry *e) {
@@ -38,18 +220,12 @@ static int scenario_pass(const entry *e) {
   return 1;
 }
 
-/* a file name that stays inside its scenario dir */
-static int safe_name(const char *s) {
-  return s && *s && !strchr(s, '/') && strcmp(s, ".") && strcmp(s, "..");
-}
-
 /* record in e why its report is unusable */
 static void unusable(entry *e, const char *why, const char *more) {
   snprintf(e->error, sizeof e->error, "%s/report.json: %s%s", e->dir, why, more);
 }
 
-/* read and parse out_dir/dir/report.json into e; failures are recorded in e->error */
-static void load_entry(const char *out_dir, const char *dir, entry *e) {
+void dvs_load_entry(const char *out_dir, const char *dir, entry *e) {
   char path[PATH_CAP], where[64];
   char *buf = NULL;
   size_t len;
@@ -141,136 +317,6 @@ static char *summary_text(const entry *es, size_t n, int pass) {
   return out;
 }
 
-/* pre, number v with %.3g (an en dash when absent), post */
-static void put_num(FILE *fp, const char *pre, const cJSON *v, const char *post) {
-  if (cJSON_IsNumber(v))
-    fprintf(fp, "%s%.3g%s", pre, v->valuedouble, post);
-  else
-    fprintf(fp, "%s&#8211;%s", pre, post);
-}
-
-/* pre, the relative URL dir/name percent-encoded ('/' kept), post */
-static void put_url(FILE *fp, const char *pre, const char *dir, const char *name,
-                    const char *post) {
-  char url[PATH_CAP];
-  snprintf(url, sizeof url, "%s/%s", dir, name);
-  fputs(pre, fp);
-  for (const unsigned char *p = (const unsigned char *)url; *p; p++) {
-    const int plain = (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
-                      (*p >= '0' && *p <= '9') || strchr("-._~/", *p);
-    fprintf(fp, plain ? "%c" : "%%%02X", *p);
-  }
-  fputs(post, fp);
-}
-
-/* out_dir/dir/name is a regular file */
-static int file_exists(const char *out_dir, const char *dir, const char *name) {
-  char path[PATH_CAP];
-  struct stat st;
-  if (!safe_name(name)) return 0;
-  if (snprintf(path, sizeof path, "%s/%s/%s", out_dir, dir, name) >= (int)sizeof path) return 0;
-  return stat(path, &st) == 0 && S_ISREG(st.st_mode);
-}
-
-/* a link to dir/name when it exists, separated from the previous one */
-static void put_link(FILE *fp, const char *out_dir, const char *dir, const char *name,
-                     int *nlinks) {
-  if (!file_exists(out_dir, dir, name)) return;
-  put_url(fp, *nlinks ? " &#183; <a href=\"" : "<a href=\"", dir, name, "\">");
-  dv_report_escape_put(fp, "", name, 0, "</a>");
-  ++*nlinks;
-}
-
-/* one summary-table row of engine eng of scenario i */
-/* the metric closest to (or furthest over) its limit: "0.42 (theta_max_err)" */
-static void put_margin(FILE *fp, const cJSON *limits) {
-  const cJSON *l, *worst = NULL;
-  cJSON_ArrayForEach(l, limits) {
-    const cJSON *m = item(l, "margin");
-    if (cJSON_IsNumber(m) && (!worst || m->valuedouble > item(worst, "margin")->valuedouble))
-      worst = l;
-  }
-  if (!worst) {
-    fputs("<td class=\"n\">&#8211;</td>", fp);
-    return;
-  }
-  fprintf(fp, "<td class=\"n\">%.3g (", item(worst, "margin")->valuedouble);
-  dv_report_escape_put(fp, "", worst->string, 0, ")</td>");
-}
-
-static void put_row(FILE *fp, const entry *e, size_t i, const cJSON *eng) {
-  static const char *const metrics[] = {"theta_max_err", "path_max_err", "phase_err",
-                                        "path_hausdorff", "energy_drift"};
-  const int ok = engine_pass(eng);
-  const cJSON *f;
-  fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
-  dv_report_escape_put(fp, "", e->name, 0, "</a></td>");
-  dv_report_escape_put(fp, "<td>", eng->string, 0, "</td>");
-  char body[48];
-  dvs_judged_words(eng, body, sizeof body);
-  dv_report_escape_put(fp, "<td>", body, 0, "</td>");
-  dv_report_escape_put(fp, "<td>", text(eng, "outcome"), 0, "</td>");
-  fprintf(fp, "<td class=\"%s\">%s</td>", ok ? "pass" : "fail", ok ? "pass" : "FAIL");
-  dv_report_escape_put(fp, "<td>", text(eng, "ran_with"), 0, "</td>");
-  for (size_t k = 0; k < sizeof metrics / sizeof *metrics; k++)
-    put_num(fp, "<td class=\"n\">", item(eng, metrics[k]), "</td>");
-  put_num(fp, "<td class=\"n\">", item(item(eng, "geometry_share"), "theta_max_err"), "</td>");
-  put_margin(fp, item(eng, "limits"));
-  put_num(fp, "<td class=\"n\">", item(eng, "wall_per_sim_s"), "</td><td>");
-  int nf = 0;
-  if (cJSON_IsString(item(eng, "decided")))
-    dv_report_escape_put(fp, "", text(eng, "decided"), 0, ""), nf = 1;
-  cJSON_ArrayForEach(f, item(eng, "failures")) if (cJSON_IsString(f))
-      dv_report_escape_put(fp, nf++ ? "<br />" : "", f->valuestring, 0, "");
-  fputs("</td></tr>\n", fp);
-}
-
-/* the section of scenario i: description, reference, engines, plots, files */
-static void put_section(FILE *fp, const char *out_dir, const entry *e, size_t i) {
-  fprintf(fp, "<section id=\"s%zu\">\n", i);
-  dv_report_escape_put(fp, "<h2>", e->name, 0, "</h2>\n");
-  if (e->error[0]) {
-    dv_report_escape_put(fp, "<p class=\"err\">harness error: ", e->error, 0, "</p>\n</section>\n");
-    return;
-  }
-  const cJSON *r = e->report, *ref = item(r, "reference"), *eng, *plot;
-  dv_report_escape_put(fp, "<p>", text(r, "description"), 0, "</p>\n");
-  dv_report_escape_put(fp, "<p>Scenario file ", text(r, "file"), 0, ": ");
-  put_num(fp, "duration ", item(r, "duration"), " s, ");
-  put_num(fp, "output every ", item(r, "output_dt"), " s.</p>\n");
-  dv_report_escape_put(fp, "<p>Reference ", text(ref, "engine"), 0, " (");
-  dv_report_escape_put(fp, "", text(ref, "integrator"), 0, ", ");
-  put_num(fp, "rtol ", item(ref, "rtol"), "): ");
-  dv_report_escape_put(fp, "<b>", text(ref, "outcome"), 0, "</b>");
-  put_num(fp, " at t = ", item(ref, "t_end"), " s. ");
-  dv_report_escape_put(fp, "", text(ref, "detail"), 0, "</p>\n<ul>\n");
-  cJSON_ArrayForEach(eng, e->engines) {
-    dv_report_escape_put(fp, "<li>", eng->string, 0, ": ");
-    dv_report_escape_put(fp, "", text(eng, "outcome"), 0, *text(eng, "detail") ? " &#8211; " : "");
-    dv_report_escape_put(fp, "", text(eng, "detail"), 0, "</li>\n");
-  }
-  fputs("</ul>\n<div>\n", fp);
-  cJSON_ArrayForEach(plot, item(r, "plots")) {
-    if (!cJSON_IsString(plot) || !file_exists(out_dir, e->dir, plot->valuestring)) continue;
-    put_url(fp, "<figure><img src=\"", e->dir, plot->valuestring, "\"");
-    dv_report_escape_put(fp, " alt=\"", plot->valuestring, 1, "\" />");
-    dv_report_escape_put(fp, "<figcaption>", plot->valuestring, 0, "</figcaption></figure>\n");
-  }
-  fputs("</div>\n<p>Files: ", fp);
-  int nlinks = 0;
-  char name[PATH_CAP];
-  put_link(fp, out_dir, e->dir, "report.md", &nlinks);
-  put_link(fp, out_dir, e->dir, "report.json", &nlinks);
-  put_link(fp, out_dir, e->dir, "reduced.csv", &nlinks);
-  cJSON_ArrayForEach(eng, e->engines) {
-    snprintf(name, sizeof name, "%s.csv", eng->string);
-    put_link(fp, out_dir, e->dir, name, &nlinks);
-    snprintf(name, sizeof name, "matched-%s.csv", eng->string);
-    put_link(fp, out_dir, e->dir, name, &nlinks);
-  }
-  fputs(nlinks ? "</p>\n</section>\n" : "none</p>\n</section>\n", fp);
-}
-
 void dvs_judged_words(const cJSON *eng, char *out, size_t size) {
   const cJSON *h = item(item(eng, "reference"), "half_thickness");
   if (!h) h = item(eng, "reference_half_thickness");
@@ -291,48 +337,16 @@ void dvs_tally(const dvs_entry *es, size_t n, int *runs, int *failing, int *erro
   }
 }
 
-/* index.html: title, summary table, one section per scenario */
-static void write_html(FILE *fp, const char *out_dir, const entry *es, size_t n, int pass) {
-  int runs = 0, failing = 0, errors = 0;
-  dvs_tally(es, n, &runs, &failing, &errors);
-  fprintf(fp,
-          "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
-          "<title>diskval suite: %s</title>\n<style>%s</style>\n</head>\n<body>\n"
-          "<h1>diskval suite: <span class=\"%s\">%s</span></h1>\n"
-          "<p>%zu scenarios, %d engine runs, %d failing, %d harness errors. "
-          "Errors against the reference: theta in rad, path and phase (an arc along the "
-          "reference's contact path) in m; energy drift relative; "
-          "geometry share: part of the theta error explained by the stand-in's geometry.</p>\n",
-          pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL", n, runs,
-          failing, errors);
-  fputs(
-      "<table>\n<tr><th>scenario</th><th>engine</th><th>judged</th><th>outcome</th><th>verdict</th>"
-      "<th>ran with</th><th>theta_max_err</th><th>path_max_err</th><th>phase_err</th>"
-      "<th>path_hausdorff</th>"
-      "<th>energy_drift</th><th>geometry share</th><th>largest margin (value / limit)</th>"
-      "<th>wall_per_sim_s</th><th>what decided; failures</th></tr>\n",
-      fp);
-  for (size_t i = 0; i < n; i++) {
-    const cJSON *eng;
-    if (es[i].error[0]) {
-      fprintf(fp, "<tr><td><a href=\"#s%zu\">", i);
-      dv_report_escape_put(fp, "", es[i].name, 0, "</a></td><td>&#8211;</td><td>error</td>");
-      dv_report_escape_put(fp, "<td class=\"err\">ERROR</td><td colspan=\"10\"></td><td>",
-                           es[i].error, 0, "</td></tr>\n");
-    }
-    cJSON_ArrayForEach(eng, es[i].engines) put_row(fp, &es[i], i, eng);
-  }
-  fputs("</table>\n", fp);
-  char stability[PATH_CAP];
-  snprintf(stability, sizeof stability, "%s/stability.html", out_dir);
-  if (access(stability, F_OK) == 0) /* written by suite --stability */
-    fputs("<p><a href=\"stability.html\">Stability limits and failure modes per engine</a></p>\n",
-          fp);
-  for (size_t i = 0; i < n; i++) put_section(fp, out_dir, &es[i], i);
-  fputs("</body>\n</html>\n", fp);
+/* out_dir/dir is a directory (a scenario's page can be written there) */
+static int is_dir(const char *out_dir, const char *dir) {
+  char path[PATH_CAP];
+  struct stat st;
+  return snprintf(path, sizeof path, "%s/%s", out_dir, dir) < (int)sizeof path &&
+         stat(path, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-/* load every report, then write the files: all opened before any is committed */
+/* load every report, then write the files: the scenarios' pages, then the suite's, all
+ * opened before any is committed */
 int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario_dirs,
                                 const char *const *not_ended, size_t n, const char *junit_path,
                                 dv_error *err) {
@@ -360,7 +374,7 @@ int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario
         es[i].dir = es[i].name = scenario_dirs[i];
         snprintf(es[i].error, sizeof es[i].error, "%s", not_ended[i]);
       } else {
-        load_entry(out_dir, scenario_dirs[i], &es[i]);
+        dvs_load_entry(out_dir, scenario_dirs[i], &es[i]);
       }
       pass &= scenario_pass(&es[i]);
     }
@@ -372,10 +386,12 @@ int dv_report_suite_write_ended(const char *out_dir, const char *const *scenario
   }
   for (int k = 0; k < 3 && !status; k++)
     if (targets[k]) status = dv_io_open(&outs[k], targets[k], err);
+  for (size_t i = 0; i < n && !status; i++) /* before the matrix: its cells link to them */
+    if (is_dir(out_dir, es[i].dir)) status = dvs_write_page(out_dir, &es[i], err);
   if (status) goto cleanup;
   fputs(summary, outs[0].fp);
   fputc('\n', outs[0].fp);
-  write_html(outs[1].fp, out_dir, es, n, pass);
+  dvs_write_matrix(outs[1].fp, out_dir, es, n, pass);
   if (junit_path) dvs_write_junit(outs[2].fp, es, n);
   for (int k = 0; k < 3 && !status; k++)
     if (targets[k]) status = dv_io_commit(&outs[k], err);
@@ -400,7 +416,7 @@ int dv_report_suite_write_junit(const char *out_dir, const char *dir, const char
     return dv_fail(err, DV_EINPUT, "path too long: %.200s", junit_path);
   entry e;
   memset(&e, 0, sizeof e);
-  load_entry(out_dir, dir, &e);
+  dvs_load_entry(out_dir, dir, &e);
   int status = dv_io_open(&out, junit_path, err);
   if (!status) {
     dvs_write_junit(out.fp, &e, 1);

@@ -14,6 +14,7 @@
 #include "io_lock.h"
 #include "io_owned.h"
 #include "io_temp.h"
+#include "report_page.h"
 
 int dv_report_dir_begin(char *tmp, size_t size, const char *out_dir, const char *name,
                         dv_error *err) {
@@ -112,6 +113,7 @@ static int write_error_files(const char *dir, const dv_scenario *sc, const char 
     status = dv_io_write_text(dir, "report.json", json, err);
   }
   if (!status) status = dv_io_write_text(dir, "report.md", md, err);
+  if (!status) status = dv_report_page_write(dir, err);
   free(json);
   free(md);
   return status;

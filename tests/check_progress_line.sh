@@ -78,7 +78,7 @@ on_tty cmp.log "'$dv' compare '$sc' ${long[*]} --out tty > tty.out"
 has_line cmp.log 'short_circle ode  t [0-9.]+/3 s' "compare"
 "$dv" compare "$sc" "${long[@]}" --out file >file.out 2>cmp.err
 no_line cmp.err "compare, stderr in a file"
-sed 's|^report: file/|report: tty/|' file.out | cmp -s - tty.out || { echo "FAIL: compare stdout differs"; fail=1; }
+sed -e 's|^report: file/|report: tty/|' -e 's|^page: file/|page: tty/|' file.out | cmp -s - tty.out || { echo "FAIL: compare stdout differs"; fail=1; }
 for f in reduced.csv mujoco.csv ode.csv report.json; do
   same "tty/short_circle/$f" "file/short_circle/$f" "compare $f"
 done

@@ -170,19 +170,34 @@ static void check_good_suite(void) {
         "xmllint rejects %s", path);
   if (text) check_numbers(out, text);
   free(text);
-  /* every src= of index.html exists */
+  /* the matrix links each scenario's page; every src= of those pages exists */
   snprintf(path, sizeof path, "%s/index.html", out);
   text = slurp(path);
-  size_t images = 0;
-  for (const char *p = text; p && (p = strstr(p, "src=\"")); p += 5) {
-    char file[1024], full[2048];
-    const char *end = strchr(p + 5, '"');
-    snprintf(file, sizeof file, "%.*s", end ? (int)(end - p - 5) : 0, p + 5);
-    snprintf(full, sizeof full, "%s/%s", out, file);
-    CHECK(exists(full), "index.html shows a missing file %s", file);
-    images++;
+  size_t images = 0, pages = 0;
+  char last[1024] = ""; /* a row links its page from every cell: each page once */
+  for (const char *p = text; p && (p = strstr(p, "href=\"")); p += 6) {
+    char page[1024], full[4096];
+    const char *end = strchr(p + 6, '"');
+    snprintf(page, sizeof page, "%.*s", end ? (int)(end - p - 6) : 0, p + 6);
+    const size_t len = strlen(page);
+    if (len < 11 || strcmp(page + len - 11, "/index.html") || !strcmp(page, last)) continue;
+    snprintf(last, sizeof last, "%s", page);
+    snprintf(full, sizeof full, "%s/%s", out, page);
+    char *html = slurp(full);
+    CHECK(html, "index.html links a missing page %s", page);
+    pages++;
+    page[len - 11] = '\0';
+    for (const char *q = html; q && (q = strstr(q, "src=\"")); q += 5) {
+      char file[1024];
+      const char *qend = strchr(q + 5, '"');
+      snprintf(file, sizeof file, "%.*s", qend ? (int)(qend - q - 5) : 0, q + 5);
+      snprintf(full, sizeof full, "%s/%s/%s", out, page, file);
+      CHECK(exists(full), "%s/index.html shows a missing file %s", page, file);
+      images++;
+    }
+    free(html);
   }
-  CHECK(images >= 8, "index.html shows %zu images", images);
+  CHECK(pages >= 2 && images >= 8, "index.html links %zu pages showing %zu images", pages, images);
   free(text);
   /* the same inputs again: identical reports apart from timing */
   char again[1024];

@@ -379,24 +379,55 @@ static void check_full(const char *fixtures, const char *out) {
   char *html = slurp(path);
   CHECK(html, "no index.html");
   if (html) {
-    const int nimg = check_refs(out, html);
-    CHECK(nimg == plots, "%d images, %d plots listed", nimg, plots);
-    CHECK(!strstr(html, "falling_fail/energy.svg"), "a plot the report does not list");
-    CHECK(!strstr(html, "falling_fail/theta_error.svg"), "a listed plot that is missing");
-    CHECK(!strstr(html, "<check>") && strstr(html, "&lt;check&gt; &amp; &quot;escape&quot;"),
-          "description not escaped");
-    CHECK(strstr(html, "\xce\xb8 = 1.2"), "UTF-8 text mangled");
-    CHECK(strstr(html, "0.000123") && !strstr(html, "0.000123456"), "numbers not %%.3g");
-    CHECK(!strstr(html, "<script") && strstr(html, "<style>"), "scripts or no inline CSS");
-    CHECK(strstr(html, "rolling_pass/report.md") && strstr(html, "rolling_pass/ode.csv"), "links");
-    CHECK(count(html, "class=\"err\">ERROR") == NERRORED, "error rows");
-    CHECK(strstr(html, "<td>integrator implicit, timestep 8e-06 s</td>"), "the settings that ran");
+    CHECK(check_refs(out, html) == 0, "the matrix shows images");
+    /* a cell per engine run, a row per errored scenario; each links the scenario's page */
+    CHECK(count(html, "<td class=\"pass\"") + count(html, "<td class=\"fail\"") == engines,
+          "%d engine cells", engines);
+    CHECK(count(html, "<td class=\"err\" colspan=") == NERRORED, "error rows");
+    CHECK(strstr(html, "href=\"rolling_pass/index.html\"") &&
+              strstr(html, "href=\"harness_failed/index.html\"") &&
+              !strstr(html, "missing/index.html"),
+          "the scenarios' pages: linked where they exist");
     /* the largest margin of steady_circle's mujoco: path 0.031 over theta 0.0123 (hausdorff null) */
-    CHECK(strstr(html, "<td class=\"n\">0.031 (path_max_err)</td>"), "not the largest margin");
+    CHECK(strstr(html, "<span><b>0.031&#215;</b> path_max_err</span>"), "not the largest margin");
+    CHECK(strstr(html, "<span>thin disk</span>"), "the reference judged against");
+    CHECK(strstr(html, "<b class=\"pass\">3 pass</b>") && strstr(html, "1 fail</b>") &&
+              strstr(html, "<li>fail: 1 exceeds tolerance</li>") &&
+              strstr(html, "3 harness errors</b>"),
+          "the summary's counts");
+    CHECK(!strstr(html, "<script") && strstr(html, "<style>"), "scripts or no inline CSS");
     xml_ok(html, "index.html");
     xmllint(path, NULL);
   }
   free(html);
+  /* the scenario pages: their plots, files, escaping and numbers; an error's page */
+  int nimg = 0;
+  for (int i = 0; i < NALL; i++) {
+    char dir[2048];
+    snprintf(dir, sizeof dir, "%s/%s", out, all_dirs[i]);
+    snprintf(path, sizeof path, "%s/index.html", dir);
+    html = slurp(path);
+    CHECK((html != NULL) == (i < NALL - 1), "%s: a page", all_dirs[i]);
+    if (!html) continue;
+    nimg += check_refs(dir, html);
+    CHECK((strstr(html, "<span class=\"err\">ERROR</span>") != NULL) == (i >= 2), "%s: error",
+          all_dirs[i]);
+    if (i == 0) {
+      CHECK(!strstr(html, "<check>") && strstr(html, "&lt;check&gt; &amp; &quot;escape&quot;"),
+            "description not escaped");
+      CHECK(strstr(html, "\xce\xb8 = 1.2"), "UTF-8 text mangled");
+      CHECK(strstr(html, "0.000123 / 0.01") && !strstr(html, "0.000123456"), "numbers not %%.3g");
+      CHECK(strstr(html, "href=\"report.md\"") && strstr(html, "href=\"ode.csv\""), "links");
+      CHECK(strstr(html, "integrator implicit, timestep 8e-06 s"), "the settings that ran");
+      CHECK(strstr(html, "passes: path_max_err 0.00031 &#8804; 0.01"), "the verdict's words");
+    }
+    if (i == 1) CHECK(strstr(html, "fails: exceeds tolerance"), "falling_fail: its verdict");
+    CHECK(!strstr(html, "<script") && strstr(html, "<style>"), "scripts or no inline CSS");
+    xml_ok(html, path);
+    xmllint(path, NULL);
+    free(html);
+  }
+  CHECK(nimg == plots, "%d images, %d plots listed", nimg, plots);
 }
 
 /* same inputs, same bytes */
