@@ -231,6 +231,28 @@ void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engin
   announce(what, total, 0, basis);
 }
 
+void dv_run_progress_plan_levels(const dv_scenario *sc, const dv_engine_type *const *engines,
+                                  size_t n, int levels) {
+  if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;
+  const double thin = estimate(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), sc);
+  double total = 0.0;
+  size_t runs = 0;
+  for (size_t i = 0; i < n; i++) {
+    const int thick = dv_engine_half_thickness(engines[i], sc) > 0.0;
+    const double one = estimate(engines[i], sc);
+    for (int k = 0; k < levels; k++) total += (3.0 + thick) * thin + one * (double)(1 << k);
+    runs += (size_t)levels * (4 + (size_t)thick);
+  }
+  if (!(total > DV_PROGRESS_WARN_S)) return;
+  P.planned = 1;
+  char what[160], basis[128];
+  snprintf(what, sizeof what, "%.60s: the verification to t = %g s (%d levels of %zu engines, %zu runs)",
+           sc->name, sc->duration, levels, n, runs);
+  snprintf(basis, sizeof basis,
+           "each engine's rate timed for %g s, level k's step 2^k times finer", DV_PROGRESS_PROBE_S);
+  announce(what, total, 0, basis);
+}
+
 void dv_run_progress_plan_total(const char *what, double seconds, const char *basis) {
   if (!P.warn || P.depth > 0 || P.planned || !(seconds > DV_PROGRESS_WARN_S)) return;
   P.planned = 1;
@@ -260,9 +282,8 @@ void dv_run_progress_run_begin(const char *scenario, const char *engine, int ref
   if (!P.running) return;
   snprintf(P.scenario, sizeof P.scenario, "%s", scenario);
   snprintf(P.engine, sizeof P.engine, "%s", engine);
-  if (!P.role) P.run_role = reference ? "reference" : "engine run";
   P.duration = duration;
-  P.run_role = P.role;
+  P.run_role = P.role ? P.role : reference ? "reference" : "engine run";
   P.calibrated = 0;
   P.began = P.last = dv_clock_now();
 }

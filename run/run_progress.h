@@ -54,6 +54,11 @@ void dv_run_progress_start(const char *command, int quiet, int stdout_busy);
 void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
                           const dv_engine_type *const *engines, size_t n);
 
+/* before verify's levels (each level k a comparison of each engine at a
+ * step 2^k times finer, its references run again): probed and announced as above */
+void dv_run_progress_plan_levels(const dv_scenario *sc, const dv_engine_type *const *engines,
+                                  size_t n, int levels);
+
 /* a single run of engine over sc (simulate): probed and announced as above */
 void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engine);
 
