@@ -246,8 +246,8 @@ void dv_run_progress_plan_levels(const dv_scenario *sc, const dv_engine_type *co
   if (!(total > DV_PROGRESS_WARN_S)) return;
   P.planned = 1;
   char what[160], basis[128];
-  snprintf(what, sizeof what, "%.60s: the verification to t = %g s (%d levels of %zu engines, %zu runs)",
-           sc->name, sc->duration, levels, n, runs);
+  snprintf(what, sizeof what, "%.60s: the verification to t = %g s (%d levels x %zu engine%s, %zu runs)",
+           sc->name, sc->duration, levels, n, n == 1 ? "" : "s", runs);
   snprintf(basis, sizeof basis,
            "each engine's rate timed for %g s, level k's step 2^k times finer", DV_PROGRESS_PROBE_S);
   announce(what, total, 0, basis);

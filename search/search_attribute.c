@@ -115,7 +115,9 @@ static int attribute(const dv_scenario *scenario, const char *engine_name, dv_at
   out->timestep = dt;
   const double began = dv_clock_now();
   const size_t items = SPLIT_RUNS + dv_search_attribute_knobs_count(scenario, engine);
-  dv_phase_item("attribution", 1, items, "its own run");
+  char subject[64];
+  snprintf(subject, sizeof subject, "%s, its own run", name);
+  dv_phase_item("attribution", 1, items, subject);
   int status = measures_nothing(&pr, &e.stand_in, out->not_measured, sizeof out->not_measured, err);
   if (status || out->not_measured[0]) { /* nothing to split, no knob to judge by */
     for (int m = 0; m < DV_NMETRICS; m++) out->base[m] = out->limit[m] = NAN;
@@ -135,20 +137,24 @@ static int attribute(const dv_scenario *scenario, const char *engine_name, dv_at
   snprintf(basis, sizeof basis, "its own run took %.3g s", dv_clock_now() - began);
   if (!status) dv_run_progress_announce(what, runs * (dv_clock_now() - began), basis);
   e.thin = e.stand_in;
-  dv_phase_item("attribution", 2, items, "the thin disk");
+  snprintf(subject, sizeof subject, "%s, the thin disk", name);
+  dv_phase_item("attribution", 2, items, subject);
   if (!status && !own) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
   for (int i = 0; !status && i < 3; i++) {
-    dv_phase_item("attribution", 3 + (size_t)i, items, i ? "a finer step" : "its step");
+    snprintf(subject, sizeof subject, "%s dt %.3g s", name, dt / (1 << i));
+    dv_phase_item("attribution", 3 + (size_t)i, items, subject);
     status =
         dv_search_probe_theta(&pr, &e.dt[i], err, shape, steps[i], follows ? softs[i] : NULL, NULL);
   }
-  dv_phase_item("attribution", 6, items, "a stiffer contact");
+  snprintf(subject, sizeof subject, "%s, a stiffer contact", name);
+  dv_phase_item("attribution", 6, items, subject);
   if (!status)
     status = dv_search_probe_theta(&pr, &e.stiff, err, shape, steps[f],
                                    k->softness_key ? stiff : NULL, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
-  dv_phase_item("attribution", SPLIT_RUNS, items, "the knobs' base");
+  snprintf(subject, sizeof subject, "%s, the knobs' base", name);
+  dv_phase_item("attribution", SPLIT_RUNS, items, subject);
   return dv_search_attribute_knobs(&pr, out, err);
 }
 

@@ -135,8 +135,9 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   if (end > 0.0) {
     snprintf(extra, sizeof extra, "scenario.duration=%.9g", end);
     out->window = end;
-    dv_phase_item("attribution", 1, 1 + dv_search_attribute_knobs_count(sc, engine),
-                  "the base over a window");
+    char subject[64];
+    snprintf(subject, sizeof subject, "%s, its base over %.3g s", engine->name, end);
+    dv_phase_item("attribution", 1, 1 + dv_search_attribute_knobs_count(sc, engine), subject);
     if (window_base(&pr, extra, out, err)) return dv_phase_end("attribution"), DV_EINPUT;
     if (out->window == 0.0) extra[0] = '\0';
   }

@@ -235,7 +235,9 @@ int dv_search_attribute_knobs_try(const dv_prober *pr, const char *const *first,
     }
     spent += fmax(kj->cost, 1.0);
     if (j > 0) after_first += fmax(kj->cost, 1.0);
-    dv_phase_item("attribution", before + j + 1, before + n, kj->name);
+    char subject[64];
+    snprintf(subject, sizeof subject, "%s %s", engine->name, kj->name);
+    dv_phase_item("attribution", before + j + 1, before + n, subject);
     dv_knob_probe *k = &out->knobs[out->nknobs];
     const char *over[4] = {kj->over[0], kj->over[1], kj->over[2], NULL};
     size_t nover = kj->n;
