@@ -32,7 +32,7 @@ long=(--set scenario.duration=3)
 
 # well_formed LOG WHAT: every line drawn in LOG names a phase with k/n, 1 <= k <= n and
 # n constant within a phase (its name and the engine its subject starts with,
-# while k does not fall back),
+# while k rises),
 # or a role; and says the time left
 phases='settings probe|verification level|attribution|comparison run|scenario|point|cell|pair'
 roles='reference|nudged references|engine run'
@@ -52,8 +52,8 @@ well_formed() {
         key = w[1]; sub(/ [0-9]+\/[0-9]+$/, "", key); key = key "|" w[2]
         kn = w[1]; sub(/.* /, "", kn); split(kn, q, "/")
         if (q[1] + 0 < 1 || q[1] + 0 > q[2] + 0) fail("k outside 1..n")
-        if ((key in n) && q[1] + 0 >= k[key] && n[key] != q[2]) fail("n changed within " key)
-        n[key] = q[2]; k[key] = q[1] + 0 # k falling back: the phase again (a second pool)
+        if ((key in n) && q[1] + 0 > k[key] && n[key] != q[2]) fail("n changed within " key)
+        n[key] = q[2]; k[key] = q[1] + 0 # k not rising: the phase again (a second pool, another scene)
       }
     }')
   if [ -n "$bad" ]; then
