@@ -34,7 +34,7 @@ long=(--set scenario.duration=3)
 # n constant within a phase (its name and the engine its subject starts with,
 # while k rises),
 # or a role; and says the time left
-phases='settings probe|verification level|attribution|comparison run|scenario|point|cell|pair'
+phases='settings probe|verification level|attribution|comparison run|scenario|reference point|point|cell|pair'
 roles='reference|nudged references|engine run'
 well_formed() {
   local bad
