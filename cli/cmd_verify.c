@@ -63,6 +63,11 @@ int dv_cli_verify(int argc, char **argv) {
           "verify", "--engines: %s is not a contact engine: nothing to verify", engines[i]->name);
   if (!code && dv_cli_load_scenario("verify", a.args.items[0], &a.sets, &sc, &err))
     code = dv_cli_error("verify", "%s", err.msg);
+  if (!code) { /* a verification longer than a minute says so first */
+    size_t n = 0;
+    while (engines[n]) n++;
+    dv_run_progress_plan_levels(&sc, engines, n, DV_VERIFY_LEVELS);
+  }
   for (size_t i = 0; code != DV_EXIT_ERROR && engines[i]; i++) {
     dv_verification v;
     if (dv_search_verify(&sc, engines[i]->name, &v, &err))

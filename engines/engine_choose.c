@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_phase.h"
 #include "dv_reference.h"
 
 #define MAX_CANDIDATES 16
@@ -297,7 +298,8 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
     no_probe = "a stand-in shape no reference models";
   else if (n < 2 && !isnan(given->timestep))
     no_probe = "nothing left to choose";
-  else if ((status = probe_reference(sc, ref, half, &pr)) == -2)
+  else if (dv_phase_item("settings probe", 1, (size_t)n + 1, engine->name),
+           (status = probe_reference(sc, ref, half, &pr)) == -2)
     no_probe = "the duration is over 4 of the longest probe's 2 s: too far to project";
   else if (status == -3) {
     snprintf(left, sizeof left,
@@ -323,6 +325,10 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   const candidate *best = NULL, *meets = NULL;
   int nprobed = 0;
   for (int i = 0; i < n && !meets; i++) {
+    char name[64], subject[96];
+    name_of(engine, kn, &c[i], name, sizeof name);
+    snprintf(subject, sizeof subject, "%s %s", engine->name, name);
+    dv_phase_item("settings probe", (size_t)i + 2, (size_t)n + 1, subject);
     probe_candidate(sc, engine, &pr, kn, &c[i]);
     nprobed++;
     if (c[i].probed > 0 && (!best || c[i].margin < best->margin)) best = &c[i];
@@ -392,6 +398,7 @@ void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,
   if (!hit) {
     fresh.chose = choose(sc, engine, knobs, default_choice, given, runs, &fresh.out, fresh.why,
                          sizeof fresh.why);
+    dv_phase_end("settings probe"); /* its reference and candidates, one item each */
     memo[next_slot] = fresh;
     next_slot = (next_slot + 1) % MEMO; /* full: the oldest entry goes */
     nmemo = nmemo < MEMO ? nmemo + 1 : MEMO;

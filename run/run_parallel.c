@@ -208,6 +208,16 @@ static int assemble(const plan *p, char *results, size_t size, const unsigned ch
   return status;
 }
 
+/* a task has ended: the progress line names its run */
+static void task_ended(size_t k, int ran, void *ctx) {
+  const plan *p = ctx;
+  char note[64] = "the references";
+  if (k > 0 && k <= p->nh) snprintf(note, sizeof note, "the reference of h = %g m", p->h[k - 1]);
+  if (k > p->nh) snprintf(note, sizeof note, "%s", p->engines[k - 1 - p->nh]->name);
+  (void)ran;
+  dv_run_progress_task_ended(note);
+}
+
 int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
                          const dv_engine_type *const *engines, size_t n, const dv_run_hook *hook,
                          int jobs, dv_comparison *c, dv_error *err) {
@@ -231,9 +241,12 @@ int dv_run_scenario_jobs(const dv_scenario *sc, const dv_scenario *ref_sc,
   char *results = calloc(ntasks, size);
   unsigned char *done = calloc(ntasks, 1);
   int status = DV_OK;
-  const dv_exec_options opt = {.jobs = jobs, .done = done, .local = 1};
+  const dv_exec_options opt = {.jobs = jobs, .on_result = task_ended, .done = done, .local = 1};
+  /* the tasks' processes draw nothing: this one counts them (their lines would interleave) */
+  dv_run_progress_tasks_begin("comparison run", ntasks);
   const int pool = results && done ? dv_exec_pool(ntasks, size, task, &p, results, &opt)
                                    : DV_EXEC_NOMEM;
+  dv_run_progress_tasks_end();
   if (pool == DV_EXEC_NOMEM)
     status = dv_fail(err, DV_ESYSTEM, "out of memory");
   else if (pool == DV_EXEC_INTERRUPTED) /* die of it, as in one process (temporaries removed) */

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "dv_clock.h"
+#include "dv_phase.h"
 #include "engine_scene.h"
 #include "run_trajectory.h"
 
@@ -24,6 +25,8 @@ static struct {
   double estimate;      /* s: an estimate probed for the next plan to use (NAN: none) */
   char scenario[32], engine[24];
   double duration, began;
+  const char *role;     /* what the runs that follow are (dv_run_progress_role), or NULL */
+  const char *run_role; /* what the run under way is */
   /* the pool under way */
   int depth; /* pools begun and not ended: 1 in the pool's parent */
   char noun[24];
@@ -31,14 +34,6 @@ static struct {
   double tasks_began;
   int tasks_warned;
 } P;
-
-void dv_run_progress_start(const char *command, int quiet, int stdout_busy) {
-  memset(&P, 0, sizeof P);
-  snprintf(P.command, sizeof P.command, "%s", command);
-  P.warn = !quiet;
-  P.estimate = NAN;
-  P.line = !quiet && isatty(STDERR_FILENO) && !(stdout_busy && isatty(STDOUT_FILENO));
-}
 
 /* seconds as "45s", "3m12s", "2h05m" */
 static void say_time(double s, char *buf, size_t size) {
@@ -66,6 +61,69 @@ static void clear(void) {
   snprintf(buf, sizeof buf, "\r%*s\r", (int)P.shown, "");
   fputs(buf, stderr);
   P.shown = 0;
+}
+
+/* the phases now: "attribution 2/11 (integrator), settings probe 3/8 (rk4 5e-05 s)" */
+static size_t say_phases(char *buf, size_t size) {
+  const dv_phase *s;
+  const size_t d = dv_phase_stack(&s);
+  size_t n = 0;
+  buf[0] = '\0';
+  for (size_t i = 0; i < d && n < size; i++) {
+    int m = snprintf(buf + n, size - n, "%s%s", i ? ", " : "", s[i].name);
+    if (m > 0 && s[i].n > 0 && n + (size_t)m < size)
+      m += snprintf(buf + n + (size_t)m, size - n - (size_t)m, " %zu/%zu", s[i].k, s[i].n);
+    if (m > 0 && s[i].subject[0] && n + (size_t)m < size)
+      m += snprintf(buf + n + (size_t)m, size - n - (size_t)m, " (%.40s)", s[i].subject);
+    if (m > 0) n += (size_t)m;
+  }
+  return n < size ? n : size - 1;
+}
+
+/* s left of the outermost counted phase, from its items done so far (its
+ * first item: as long as the run under way, whose run_left is given; NAN
+ * where nothing says) and at least run_left; no counted phase: run_left */
+static double phases_left(double now, double run_left) {
+  const dv_phase *s;
+  const size_t d = dv_phase_stack(&s);
+  for (size_t i = 0; i < d; i++) {
+    if (s[i].n == 0 || s[i].k == 0 || s[i].k > s[i].n) continue;
+    const double in_item = now - s[i].item_began;
+    const double item = s[i].k > 1 ? (s[i].item_began - s[i].began) / (double)(s[i].k - 1)
+                                   : in_item + run_left;
+    if (isnan(item)) return NAN;
+    const double rest = item * (double)(s[i].n - s[i].k);
+    return rest + fmax(item - in_item, isnan(run_left) ? 0.0 : run_left);
+  }
+  return run_left;
+}
+
+/* a phase's item began, or a phase ended, outside a run (a settings probe):
+ * its line; none once the last phase has ended */
+static void phase_changed(void) {
+  if (!P.line || P.depth > 0 || P.running) return;
+  const dv_phase *stack;
+  if (!dv_phase_stack(&stack)) return clear();
+  const double now = dv_clock_now();
+  if (now - P.last < 1.0 / DV_PROGRESS_HZ) return;
+  P.last = now;
+  char text[192], t_left[32];
+  const size_t n = say_phases(text, 120);
+  const double left = phases_left(now, NAN);
+  if (isnan(left))
+    snprintf(text + n, sizeof text - n, "  estimating the time left");
+  else
+    say_time(left, t_left, sizeof t_left), snprintf(text + n, sizeof text - n, "  %s left", t_left);
+  draw(text);
+}
+
+void dv_run_progress_start(const char *command, int quiet, int stdout_busy) {
+  memset(&P, 0, sizeof P);
+  snprintf(P.command, sizeof P.command, "%s", command);
+  P.warn = !quiet;
+  P.estimate = NAN;
+  P.line = !quiet && isatty(STDERR_FILENO) && !(stdout_busy && isatty(STDOUT_FILENO));
+  dv_phase_listen(P.line ? phase_changed : NULL);
 }
 
 /* the warning, on a line of its own: what will take about seconds (more) */
@@ -173,6 +231,28 @@ void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engin
   announce(what, total, 0, basis);
 }
 
+void dv_run_progress_plan_levels(const dv_scenario *sc, const dv_engine_type *const *engines,
+                                  size_t n, int levels) {
+  if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;
+  const double thin = estimate(dv_engine_of_role(DV_ENGINE_THIN_REFERENCE), sc);
+  double total = 0.0;
+  size_t runs = 0;
+  for (size_t i = 0; i < n; i++) {
+    const int thick = dv_engine_half_thickness(engines[i], sc) > 0.0;
+    const double one = estimate(engines[i], sc);
+    for (int k = 0; k < levels; k++) total += (3.0 + thick) * thin + one * (double)(1 << k);
+    runs += (size_t)levels * (4 + (size_t)thick);
+  }
+  if (!(total > DV_PROGRESS_WARN_S)) return;
+  P.planned = 1;
+  char what[160], basis[128];
+  snprintf(what, sizeof what, "%.60s: the verification to t = %g s (%d levels x %zu engine%s, %zu runs)",
+           sc->name, sc->duration, levels, n, n == 1 ? "" : "s", runs);
+  snprintf(basis, sizeof basis,
+           "each engine's rate timed for %g s, level k's step 2^k times finer", DV_PROGRESS_PROBE_S);
+  announce(what, total, 0, basis);
+}
+
 void dv_run_progress_plan_total(const char *what, double seconds, const char *basis) {
   if (!P.warn || P.depth > 0 || P.planned || !(seconds > DV_PROGRESS_WARN_S)) return;
   P.planned = 1;
@@ -194,12 +274,16 @@ void dv_run_progress_say(const char *fmt, ...) {
   fprintf(stderr, "diskval %s: %s\n", P.command, text);
 }
 
-void dv_run_progress_run_begin(const char *scenario, const char *engine, double duration) {
+void dv_run_progress_role(const char *role) { P.role = role; }
+
+void dv_run_progress_run_begin(const char *scenario, const char *engine, int reference,
+                               double duration) {
   P.running = (P.line || P.warn) && P.depth == 0 && !P.probing && duration > 0.0;
   if (!P.running) return;
   snprintf(P.scenario, sizeof P.scenario, "%s", scenario);
   snprintf(P.engine, sizeof P.engine, "%s", engine);
   P.duration = duration;
+  P.run_role = P.role ? P.role : reference ? "reference" : "engine run";
   P.calibrated = 0;
   P.began = P.last = dv_clock_now();
 }
@@ -221,10 +305,12 @@ void dv_run_progress_run_at(double t) {
     }
   }
   if (!P.line || spent < DV_PROGRESS_DELAY_S) return;
-  char text[160], t_left[32];
-  say_time(left, t_left, sizeof t_left);
-  snprintf(text, sizeof text, "%s %s  t %.1f/%g s  %s left", P.scenario, P.engine, t, P.duration,
-           t_left);
+  char text[256], t_left[32];
+  size_t n = say_phases(text, 120);
+  n += (size_t)snprintf(text + n, sizeof text - n, "%s%s", n ? ": " : "", P.run_role);
+  say_time(phases_left(now, left), t_left, sizeof t_left);
+  snprintf(text + n, sizeof text - n, "  %.31s %.23s  t %.1f/%g s  %s left", P.scenario, P.engine,
+           t, P.duration, t_left);
   draw(text);
 }
 

@@ -54,6 +54,11 @@ void dv_run_progress_start(const char *command, int quiet, int stdout_busy);
 void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
                           const dv_engine_type *const *engines, size_t n);
 
+/* before verify's levels (each level k a comparison of each engine at a
+ * step 2^k times finer, its references run again): probed and announced as above */
+void dv_run_progress_plan_levels(const dv_scenario *sc, const dv_engine_type *const *engines,
+                                  size_t n, int levels);
+
 /* a single run of engine over sc (simulate): probed and announced as above */
 void dv_run_progress_plan_run(const dv_scenario *sc, const dv_engine_type *engine);
 
@@ -64,9 +69,14 @@ double dv_run_progress_estimate(const dv_scenario *sc, const dv_scenario *ref_sc
                                 const dv_engine_type *const *engines, size_t n);
 double dv_run_progress_estimate_run(const dv_scenario *sc, const dv_engine_type *engine);
 
-/* a run of engine over scenario for duration simulated seconds begins, is at
- * simulated time t, has ended (dv_run_collect calls these) */
-void dv_run_progress_run_begin(const char *scenario, const char *engine, double duration);
+/* what the runs that follow are ("nudged references"); NULL: each says by its
+ * engine, "reference" or "engine run" */
+void dv_run_progress_role(const char *role);
+
+/* a run of engine (a reference or not) over scenario for duration simulated
+ * seconds begins, is at simulated time t, has ended (dv_run_collect calls these) */
+void dv_run_progress_run_begin(const char *scenario, const char *engine, int reference,
+                               double duration);
 void dv_run_progress_run_at(double t);
 void dv_run_progress_run_end(void);
 

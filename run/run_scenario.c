@@ -323,7 +323,9 @@ int dv_run_thin_reference(const dv_scenario *ref_sc, dv_comparison *c, dv_error 
   }
   c->thin_valid_end = dv_reference_valid_until(c->sc, c->thin.s, c->thin.n);
   const double t_horizon = dv_clock_now();
+  dv_run_progress_role("nudged references");
   status = dv_run_amplification(ref_sc, &c->thin, &c->amp, c->spread, err);
+  dv_run_progress_role(NULL);
   c->horizon_wall_s = dv_clock_now() - t_horizon;
   if (status < 0) return status; /* err names the nudged run */
   c->horizon = c->amp.horizon;
@@ -454,8 +456,10 @@ static int judge_against(dv_comparison *c, const dv_comparison *refs, const dv_s
   timing_horizon(&c->amp, ref, r);
   { /* its own nudges: the spread and the lying down they allow */
     const double t_spread = dv_clock_now();
+    dv_run_progress_role("nudged references");
     status =
         dv_run_nudged_spread(ref_sc, &c->thin, &c->amp, r->early_of, r->spread, r->nudged, err);
+    dv_run_progress_role(NULL);
     c->horizon_wall_s += dv_clock_now() - t_spread;
     if (status < 0) return status;
   }

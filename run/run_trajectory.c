@@ -65,7 +65,7 @@ int dv_run_collect(const dv_engine_type *type, const dv_scenario *sc, dv_sample_
   /* the first sample is read back from the engine: its own view of the start */
   if (!status) status = type->advance(engine, 0.0, &s, err);
   if (!status && sink(ctx, &s)) status = out_of_memory(type, 0, &s, err);
-  dv_run_progress_run_begin(sc->name, type->name, sc->duration);
+  dv_run_progress_run_begin(sc->name, type->name, type->role != DV_ENGINE_CONTACT, sc->duration);
   for (long k = 1; status == DV_OK; k++) {
     const double t = red_grid_time(0.0, sc->output_dt, sc->duration, k);
     status = type->advance(engine, t, &s, err);

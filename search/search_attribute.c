@@ -7,6 +7,7 @@
 
 #include "dv_clock.h"
 #include "dv_engine.h"
+#include "dv_phase.h"
 #include "run_progress.h"
 #include "search_sweep.h"
 
@@ -70,8 +71,12 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
   return DV_OK;
 }
 
-int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
-                        dv_error *err) {
+/* the attribution's runs, each an item of its phase: the scene's own, the
+ * thin disk's, three steps, the stiff contact, the knobs' base, each knob */
+#define SPLIT_RUNS 7
+
+static int attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
+                     dv_error *err) {
   const dv_engine_type *engine = dv_engine_find(engine_name);
   if (!engine) return dv_fail(err, DV_EINPUT, "unknown engine '%s'", engine_name);
   const dv_engine_contact *k = engine->contact;
@@ -109,6 +114,10 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   out->cause = -1;
   out->timestep = dt;
   const double began = dv_clock_now();
+  const size_t items = SPLIT_RUNS + dv_search_attribute_knobs_count(scenario, engine);
+  char subject[64];
+  snprintf(subject, sizeof subject, "%s, its own run", name);
+  dv_phase_item("attribution", 1, items, subject);
   int status = measures_nothing(&pr, &e.stand_in, out->not_measured, sizeof out->not_measured, err);
   if (status || out->not_measured[0]) { /* nothing to split, no knob to judge by */
     for (int m = 0; m < DV_NMETRICS; m++) out->base[m] = out->limit[m] = NAN;
@@ -128,14 +137,30 @@ int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv
   snprintf(basis, sizeof basis, "its own run took %.3g s", dv_clock_now() - began);
   if (!status) dv_run_progress_announce(what, runs * (dv_clock_now() - began), basis);
   e.thin = e.stand_in;
+  snprintf(subject, sizeof subject, "%s, the thin disk", name);
+  dv_phase_item("attribution", 2, items, subject);
   if (!status && !own) status = dv_search_probe_theta(&pr, &e.thin, err, thin, NULL, NULL, NULL);
-  for (int i = 0; !status && i < 3; i++)
+  for (int i = 0; !status && i < 3; i++) {
+    snprintf(subject, sizeof subject, "%s dt %.3g s", name, dt / (1 << i));
+    dv_phase_item("attribution", 3 + (size_t)i, items, subject);
     status =
         dv_search_probe_theta(&pr, &e.dt[i], err, shape, steps[i], follows ? softs[i] : NULL, NULL);
+  }
+  snprintf(subject, sizeof subject, "%s, a stiffer contact", name);
+  dv_phase_item("attribution", 6, items, subject);
   if (!status)
     status = dv_search_probe_theta(&pr, &e.stiff, err, shape, steps[f],
                                    k->softness_key ? stiff : NULL, rough);
   if (status) return status;
   dv_search_attribute_split(&e, stand_in, out);
+  snprintf(subject, sizeof subject, "%s, the knobs' base", name);
+  dv_phase_item("attribution", SPLIT_RUNS, items, subject);
   return dv_search_attribute_knobs(&pr, out, err);
+}
+
+int dv_search_attribute(const dv_scenario *scenario, const char *engine_name, dv_attribution *out,
+                        dv_error *err) {
+  const int status = attribute(scenario, engine_name, out, err);
+  dv_phase_end("attribution");
+  return status;
 }

@@ -105,6 +105,10 @@ struct dv_engine_type;
 double dv_search_attribute_knobs_cost(const struct dv_scenario *sc,
                                       const struct dv_engine_type *engine);
 
+/* how many knobs dv_search_attribute_knobs changes, one run each */
+size_t dv_search_attribute_knobs_count(const struct dv_scenario *sc,
+                                       const struct dv_engine_type *engine);
+
 /* causes over every knob: pr's scenario run, then each knob its engine
  * declares changed alone (search_attribute_knobs.c), every probe made by pr
  * (its references reused where it carries them); fills the knob part of out */

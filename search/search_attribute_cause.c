@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_phase.h"
 #include "run_progress.h"
 #include "run_scenario.h"
 #include "search_attribute.h"
@@ -134,7 +135,10 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
   if (end > 0.0) {
     snprintf(extra, sizeof extra, "scenario.duration=%.9g", end);
     out->window = end;
-    if (window_base(&pr, extra, out, err)) return DV_EINPUT;
+    char subject[64];
+    snprintf(subject, sizeof subject, "%s, its base over %.3g s", engine->name, end);
+    dv_phase_item("attribution", 1, 1 + dv_search_attribute_knobs_count(sc, engine), subject);
+    if (window_base(&pr, extra, out, err)) return dv_phase_end("attribution"), DV_EINPUT;
     if (out->window == 0.0) extra[0] = '\0';
   }
   const double share = out->window > 0.0 ? out->window / r->vs_ref.t_window : 1.0;
@@ -150,6 +154,9 @@ int dv_search_cause(const dv_scenario *sc, const dv_comparison *c, const dv_engi
            out->quick ? "quick, at most " : "", ceil(runs));
   snprintf(basis, sizeof basis, "its own run took %.3g s", r->wall_s);
   dv_run_progress_announce(what, runs * r->wall_s, basis);
-  return dv_search_attribute_knobs_try(&pr, first, nfirst, out->quick ? &budget : NULL,
-                                       extra[0] ? extra : NULL, extra[0] ? &whole : NULL, out, err);
+  const int status =
+      dv_search_attribute_knobs_try(&pr, first, nfirst, out->quick ? &budget : NULL,
+                                    extra[0] ? extra : NULL, extra[0] ? &whole : NULL, out, err);
+  dv_phase_end("attribution");
+  return status;
 }

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_phase.h"
 #include "run_verdict.h"
 #include "search_attribute.h"
 #include "search_sweep.h"
@@ -156,6 +157,11 @@ double dv_search_attribute_knobs_cost(const dv_scenario *sc, const dv_engine_typ
   return cost;
 }
 
+size_t dv_search_attribute_knobs_count(const dv_scenario *sc, const dv_engine_type *engine) {
+  knob kn[DV_MAX_KNOBS];
+  return engine->contact && engine->search ? declare(sc, engine, kn) : 0;
+}
+
 int dv_search_attribute_knobs(const dv_prober *pr, dv_attribution *out, dv_error *err) {
   const dv_scenario *sc = pr->sc;
   const dv_engine_type *engine = pr->engine;
@@ -211,6 +217,10 @@ int dv_search_attribute_knobs_try(const dv_prober *pr, const char *const *first,
   out->cause = -1;
   out->untried[0] = '\0';
   double spent = 0.0, after_first = 0.0;
+  /* each knob an item of the attribution phase, after the runs its caller counted there */
+  const dv_phase *ph;
+  const size_t depth = dv_phase_stack(&ph);
+  const size_t before = depth && !strcmp(ph[depth - 1].name, "attribution") ? ph[depth - 1].k : 0;
   dv_attribution w; /* the window's base, where knobs run over one */
   if (whole) w = *out;
   for (size_t j = 0; j < n; j++) {
@@ -225,6 +235,9 @@ int dv_search_attribute_knobs_try(const dv_prober *pr, const char *const *first,
     }
     spent += fmax(kj->cost, 1.0);
     if (j > 0) after_first += fmax(kj->cost, 1.0);
+    char subject[64];
+    snprintf(subject, sizeof subject, "%s %s", engine->name, kj->name);
+    dv_phase_item("attribution", before + j + 1, before + n, subject);
     dv_knob_probe *k = &out->knobs[out->nknobs];
     const char *over[4] = {kj->over[0], kj->over[1], kj->over[2], NULL};
     size_t nover = kj->n;

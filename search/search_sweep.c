@@ -320,7 +320,8 @@ int dv_search_sweep_run(const dv_scenario *sc, const char *engine, const dv_vary
   for (size_t k = 0; k < n; k++) not_run(&jb, k, &pts[k]);
   checkpoint_ctx ck = {&jb, out, pts, n, checkpoint_dir};
   /* under mpirun, rank 0 keeps the tables current as results arrive */
-  dv_run_progress_tasks_begin("point", n);
+  /* the reference's own curves follow a contact engine's points: a phase of their own */
+  dv_run_progress_tasks_begin(e->role == DV_ENGINE_CONTACT ? "point" : "reference point", n);
   const int pool = dv_exec_pool_run(n, sizeof *pts, farm_point, &ck, pts, jobs, point_ended);
   dv_run_progress_tasks_end();
   if (pool == 1 || pool < 0) { /* a worker rank: rank 0 has the results */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_phase.h"
 
 const char *dv_search_convergence_name(dv_convergence c) {
   static const char *const names[] = {"converges to the reference", "converges elsewhere",
@@ -118,10 +119,14 @@ int dv_search_verify(const dv_scenario *sc, const char *engine_name, dv_verifica
     snprintf(softness, sizeof softness, "engines.%s.%s=%.9g", name, k->softness_key,
              fmax(soft * h / dt, k->softness_min_steps * h));
     out->step[i] = h;
+    char subject[64];
+    snprintf(subject, sizeof subject, "%s dt %.3g s", name, h);
+    dv_phase_item("verification level", (size_t)i + 1, DV_VERIFY_LEVELS, subject);
     const int status = dv_search_probe_theta(&pr, &out->error[i], err, step,
                                              k->softness_key ? softness : NULL, NULL, NULL);
-    if (status) return status;
+    if (status) return dv_phase_end("verification level"), status;
   }
+  dv_phase_end("verification level");
   dv_search_verify_judge(out);
   if (out->verdict != DV_CONVERGES_ELSEWHERE) return DV_OK;
   dv_attribution a;
