@@ -48,9 +48,10 @@ static void say_time(double s, char *buf, size_t size) {
 
 /* rewrite the line with text, blanking what the last one left over */
 static void draw(const char *text) {
-  const size_t len = strlen(text);
+  const size_t len = strlen(text) < 200 ? strlen(text) : 200; /* the %.200s drawn */
   char buf[256];
-  snprintf(buf, sizeof buf, "\r%s%*s", text, P.shown > len ? (int)(P.shown - len) : 0, "");
+  const int pad = P.shown > len ? (int)((P.shown - len) % sizeof buf) : 0; /* P.shown < sizeof buf */
+  snprintf(buf, sizeof buf, "\r%.200s%*s", text, pad, "");
   fputs(buf, stderr); /* one write: stderr is unbuffered */
   P.shown = len;
 }
