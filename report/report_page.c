@@ -98,7 +98,7 @@ static const char css[] =
     "table{border-collapse:collapse;table-layout:fixed;width:100%}"
     "th,td{border:1px solid #bbb;padding:2px 5px;font-size:13px;white-space:nowrap;"
     "overflow:hidden;text-overflow:ellipsis;text-align:left}th{background:#eee}"
-    "col.e{width:9em}col.v{width:19em}col.j{width:10em}col.n{width:12.5em}col.c{width:5em}"
+    "col.e{width:9em}col.j{width:10em}col.n{width:12.5em}col.c{width:5em}"
     "td.n{font-family:monospace}"
     ".pass{background:#c8f0c8;color:#075207}.fail{background:#f6c4c4;color:#8b0000}"
     ".nj{background:#e2e2e2;color:#444}.err{background:#ffe0a0;color:#7a4200}"
@@ -115,12 +115,21 @@ static void put_against(FILE *fp, const cJSON *eng, const char *metric) {
   dvs_put_num(fp, "", lim, "</td>");
 }
 
+/* the line that decided eng's verdict; the verdict's words from its limits
+ * for a report written before the line existed */
+static void put_decided(FILE *fp, const cJSON *eng) {
+  if (*text(eng, "decided"))
+    dv_report_escape(fp, text(eng, "decided"), 0);
+  else
+    dvs_put_verdict_words(fp, eng);
+}
+
 /* the table: one row per engine, every text on one line */
 static void put_table(FILE *fp, const cJSON *engines) {
   const cJSON *eng;
-  fputs("<table>\n<colgroup><col class=\"e\" /><col class=\"v\" /><col /><col class=\"j\" />"
+  fputs("<table>\n<colgroup><col class=\"e\" /><col /><col class=\"j\" />"
         "<col class=\"n\" /><col class=\"n\" /><col class=\"c\" /></colgroup>\n"
-        "<thead><tr><th>engine</th><th>verdict</th><th>decided by</th><th>judged against</th>"
+        "<thead><tr><th>engine</th><th>verdict: what decided it</th><th>judged against</th>"
         "<th>theta err / limit (rad)</th><th>path err / limit (m)</th>"
         "<th title=\"wall-clock s per simulated s\">cost</th></tr></thead>\n<tbody>\n",
         fp);
@@ -130,10 +139,10 @@ static void put_table(FILE *fp, const cJSON *engines) {
     dv_report_escape_put(fp, "<tr><td title=\"", eng->string, 1, "\">");
     dv_report_escape_put(fp, "<a href=\"#e-", eng->string, 1, "\">");
     dv_report_escape_put(fp, "", eng->string, 0, "</a></td>");
-    fprintf(fp, "<td class=\"%s\">", dvs_class_css[dvs_class_of(eng)]);
-    dvs_put_verdict_words(fp, eng);
-    dv_report_escape_put(fp, "</td><td title=\"", text(eng, "decided"), 1, "\">");
-    dv_report_escape_put(fp, "", text(eng, "decided"), 0, "</td>");
+    dv_report_escape_put(fp, "<td title=\"", text(eng, "decided"), 1, "\" ");
+    fprintf(fp, "class=\"%s\">", dvs_class_css[dvs_class_of(eng)]);
+    put_decided(fp, eng);
+    fputs("</td>", fp);
     dv_report_escape_put(fp, "<td>", body, 0, "</td>");
     put_against(fp, eng, "theta_max_err");
     put_against(fp, eng, "path_max_err");
@@ -152,8 +161,8 @@ static void put_para(FILE *fp, const char *pre, const char *s, const char *post)
 static void put_why(FILE *fp, const cJSON *eng) {
   dv_report_escape_put(fp, "<h3 id=\"e-", eng->string, 1, "\">");
   dv_report_escape_put(fp, "", eng->string, 0, ": ");
-  dvs_put_verdict_words(fp, eng);
-  dv_report_escape_put(fp, "</h3>\n<p>Decided by ", text(eng, "decided"), 0, ".</p>\n");
+  put_decided(fp, eng);
+  fputs("</h3>\n", fp);
   if (*text(eng, "decided_why")) {
     put_para(fp, "<p>", text(eng, "decided_why"), "</p>\n");
   } else {
