@@ -131,7 +131,7 @@ static void put_table(FILE *fp, const cJSON *engines) {
         "<col class=\"n\" /><col class=\"n\" /><col class=\"c\" /></colgroup>\n"
         "<thead><tr><th>engine</th><th>verdict: what decided it</th><th>judged against</th>"
         "<th>theta err / limit (rad)</th><th>path err / limit (m)</th>"
-        "<th title=\"wall-clock s per simulated s\">cost</th></tr></thead>\n<tbody>\n",
+        "<th title=\"wall-clock s per simulated s\">cost (s/s)</th></tr></thead>\n<tbody>\n",
         fp);
   cJSON_ArrayForEach(eng, engines) {
     char body[48];
@@ -222,6 +222,54 @@ static void put_plots_and_files(FILE *fp, const char *out_dir, const dvs_entry *
   fputs(nlinks ? "</p>\n" : "none</p>\n", fp);
 }
 
+/* the engines judged against the reference of half-thickness h, as ": a, b" */
+static void put_judged_by(FILE *fp, const cJSON *engines, double h) {
+  const cJSON *eng;
+  int n = 0;
+  cJSON_ArrayForEach(eng, engines) {
+    const cJSON *hj = item(eng, "reference_half_thickness");
+    const double he = cJSON_IsNumber(hj) ? hj->valuedouble : 0.0;
+    if (he == h) dv_report_escape_put(fp, n++ ? ", " : "; it judged ", eng->string, 0, "");
+  }
+  if (!n) fputs("; it judged no engine", fp);
+}
+
+/* each reference and the engines it judged: the thin disk's, then each matched cylinder's */
+static void put_references(FILE *fp, const cJSON *ref, const cJSON *engines) {
+  dv_report_escape_put(fp, "<p>Reference of the thin disk: ", text(ref, "engine"), 0, " (");
+  put_para(fp, "", text(ref, "integrator"), "");
+  if (cJSON_IsNumber(item(ref, "rtol"))) dvs_put_num(fp, " rtol ", item(ref, "rtol"), "");
+  fputs("), ", fp);
+  dv_report_escape_put(fp, "", text(ref, "outcome"), 0, "");
+  dvs_put_num(fp, " at t = ", item(ref, "t_end"), " s");
+  put_para(fp, ": ", text(ref, "detail"), "");
+  put_judged_by(fp, engines, 0.0);
+  fputs(".</p>\n", fp);
+  double seen[16];
+  size_t nseen = 0;
+  const cJSON *eng;
+  cJSON_ArrayForEach(eng, engines) {
+    const cJSON *m = item(eng, "reference"), *hj = item(m, "half_thickness");
+    if (strcmp(text(m, "engine"), "matched") || !cJSON_IsNumber(hj) || !(hj->valuedouble > 0))
+      continue;
+    size_t k = 0;
+    while (k < nseen && seen[k] != hj->valuedouble) k++;
+    if (k < nseen || nseen == sizeof seen / sizeof *seen) continue;
+    seen[nseen++] = hj->valuedouble;
+    fprintf(fp, "<p>Reference of the cylinder of half-thickness %.3g mm: matched (",
+            1e3 * hj->valuedouble);
+    put_para(fp, "", text(m, "integrator"), "");
+    if (cJSON_IsNumber(item(m, "rtol"))) dvs_put_num(fp, " rtol ", item(m, "rtol"), "");
+    fputs("), ", fp);
+    dv_report_escape_put(fp, "", text(m, "outcome"), 0, "");
+    dvs_put_num(fp, " at t = ", item(m, "t_end"), " s");
+    put_judged_by(fp, engines, hj->valuedouble);
+    fputs(".</p>\n", fp);
+  }
+  put_para(fp, "<p>How the scene amplifies a nudge of its start: ",
+           text(item(ref, "amplification"), "words"), ".</p>\n");
+}
+
 /* the page of e: the scenario, the table, the reasons, the plots */
 static void put_page(FILE *fp, const char *out_dir, const dvs_entry *e) {
   const cJSON *r = e->report, *ref = item(r, "reference"), *eng;
@@ -246,17 +294,8 @@ static void put_page(FILE *fp, const char *out_dir, const dvs_entry *e) {
   put_para(fp, "<p>", text(r, "description"), "</p>\n");
   dv_report_escape_put(fp, "<p>Scenario file ", text(r, "file"), 0, "; ");
   dvs_put_num(fp, "duration ", item(r, "duration"), " s, ");
-  dvs_put_num(fp, "output every ", item(r, "output_dt"), " s. ");
-  dv_report_escape_put(fp, "Reference: ", text(ref, "engine"), 0, " (thin disk");
-  put_para(fp, ", ", text(ref, "integrator"), "");
-  if (cJSON_IsNumber(item(ref, "rtol"))) dvs_put_num(fp, " rtol ", item(ref, "rtol"), "");
-  fputs("), ", fp);
-  dv_report_escape_put(fp, "", text(ref, "outcome"), 0, "");
-  dvs_put_num(fp, " at t = ", item(ref, "t_end"), " s");
-  put_para(fp, ": ", text(ref, "detail"), "");
-  fputs(".</p>\n", fp);
-  put_para(fp, "<p>Amplification of the reference: ", text(item(ref, "amplification"), "words"),
-           ".</p>\n");
+  dvs_put_num(fp, "output every ", item(r, "output_dt"), " s.</p>\n");
+  put_references(fp, ref, e->engines);
   put_table(fp, e->engines);
   fputs("<h2>Why each verdict</h2>\n", fp);
   cJSON_ArrayForEach(eng, e->engines) put_why(fp, eng);

@@ -178,7 +178,8 @@ void dvs_write_matrix(FILE *fp, const char *out_dir, const dvs_entry *es, size_t
           pass ? "PASS" : "FAIL", css, pass ? "pass" : "fail", pass ? "PASS" : "FAIL");
   put_summary(fp, es, n, ncols);
   fputs("<p>A cell: the verdict's colour; the judged metric nearest (or furthest over) its limit, "
-        "as value / limit; the body whose reference judged it. Point at a cell for the line that "
+        "as its value over its limit (0.42&#215;: 42 % of the limit); the body whose reference judged "
+        "it. Point at a cell for the line that "
         "decided; click it for the scenario's page. Summary: <a href=\"summary.json\">"
         "summary.json</a>.</p>\n",
         fp);

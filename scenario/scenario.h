@@ -24,7 +24,7 @@
 #define DV_MAX_TOLERANCES 32
 #define DV_MAX_ENGINE_SECTIONS 20
 #define DV_SETTINGS_BYTES 256 /* the largest engine settings struct */
-#define DV_DERIVED_BYTES 640  /* why an engine's derived settings are what they are */
+#define DV_DERIVED_BYTES 1024 /* why an engine's derived settings are what they are */
 #define DV_REPLACED_BYTES 160 /* the given settings an engine's check changed */
 
 /* what a scenario name may hold: it names the report's directory, so it is
