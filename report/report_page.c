@@ -250,14 +250,13 @@ static void put_references(FILE *fp, const cJSON *ref, const cJSON *engines) {
   const cJSON *eng;
   cJSON_ArrayForEach(eng, engines) {
     const cJSON *m = item(eng, "reference"), *hj = item(m, "half_thickness");
-    if (strcmp(text(m, "engine"), "matched") || !cJSON_IsNumber(hj) || !(hj->valuedouble > 0))
-      continue;
+    if (!cJSON_IsNumber(hj) || !(hj->valuedouble > 0)) continue; /* the thin disk's */
     size_t k = 0;
     while (k < nseen && seen[k] != hj->valuedouble) k++;
     if (k < nseen || nseen == sizeof seen / sizeof *seen) continue;
     seen[nseen++] = hj->valuedouble;
-    fprintf(fp, "<p>Reference of the cylinder of half-thickness %.3g mm: matched (",
-            1e3 * hj->valuedouble);
+    fprintf(fp, "<p>Reference of the cylinder of half-thickness %.3g mm: ", 1e3 * hj->valuedouble);
+    dv_report_escape_put(fp, "", text(m, "engine"), 0, " (");
     put_para(fp, "", text(m, "integrator"), "");
     if (cJSON_IsNumber(item(m, "rtol"))) dvs_put_num(fp, " rtol ", item(m, "rtol"), "");
     fputs("), ", fp);
