@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_compare_jobs.sh DISKVAL SCENARIO: compare --jobs 1 and --jobs 2 write the same
-# report apart from the wall times (wall_* in the JSON, the wall column of the Markdown),
+# report apart from the wall times (wall_* in the JSON, the wall column of the Markdown and of the page),
 # a cause is searched (ODE at 40x its step fails), and every trajectory the pool's
 # processes handed back is the one `diskval simulate` writes in one process.
 # Cost: 0.6 s a compare on two busy cores (time diskval compare tests/data/short_circle.ini
@@ -16,6 +16,7 @@ untimed() {
   case "$1" in
     *.json) grep -vE '"(horizon_)?wall_(s|per_sim_s)"' "$1" ;;
     *.md) sed -E 's/\| [^|]* \|$/|/' "$1" ;;
+    *.html) sed -E 's#<td class="n wall">[^<]*</td>##' "$1" ;;
     *) cat "$1" ;;
   esac
 }
