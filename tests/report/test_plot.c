@@ -47,7 +47,7 @@ static int make_traj(dv_traj *tr, size_t n, double offset) {
 
 /* a series compared over its whole run, no horizon, no limit */
 static dv_plot_series whole_run(const char *label, const dv_traj *traj, const dv_traj *ref) {
-  return (dv_plot_series){label, traj, ref, INFINITY, INFINITY, NAN};
+  return (dv_plot_series){label, traj, ref, INFINITY, INFINITY, NAN, 0};
 }
 
 /* the whole file at path, or NULL */
@@ -562,9 +562,9 @@ static int count_of(const char *hay, const char *needle) {
 static void test_verdict_marks(const dv_traj *ref, const dv_traj *a, const dv_traj *b) {
   char dir[] = "/tmp/test_plot_marks.XXXXXX";
   dv_plot_input in = {.title = "marks", .thin = ref, .nseries = 3, .window_end = 10.0};
-  in.series[0] = (dv_plot_series){"mujoco", a, ref, 10.0, 3.0, 0.01};
-  in.series[1] = (dv_plot_series){"ode", b, ref, 6.0, 6.0, 0.01};
-  in.series[2] = (dv_plot_series){"dart", b, ref, -INFINITY, -INFINITY, 0.02};
+  in.series[0] = (dv_plot_series){"mujoco", a, ref, 10.0, 3.0, 0.01, 0};
+  in.series[1] = (dv_plot_series){"ode", b, ref, 6.0, 6.0, 0.01, 0};
+  in.series[2] = (dv_plot_series){"dart", b, ref, -INFINITY, -INFINITY, 0.02, 0};
   plot_into(dir, &in);
   char *err = plot_text(dir, "theta_error.svg"), *theta = plot_text(dir, "theta.svg");
   CHECK(err && theta, "no theta_error.svg or theta.svg");
