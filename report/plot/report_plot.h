@@ -99,7 +99,7 @@ int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *
  * Curves: black ones (colour 0) are drawn first, wider, underneath the
  * coloured ones. A point with a non-finite coordinate (or one that is <= 0 on
  * a log axis, or of magnitude >= 1e150) is skipped: it breaks a line. A lone
- * point of a line gets a dot.
+ * point of a line, or a line whose points are all one (a steady motion), gets a dot.
  *   DV_CURVE_LINE         a line through the points
  *   DV_CURVE_POINTS       a dot per point, not connected
  *   DV_CURVE_LINE_POINTS  a line through the points and a dot on each

@@ -20,6 +20,7 @@
 #define STAR_OUTLINE "\xe2\x98\x86" /* U+2606 white star: its outline */
 #define MARK_TEXT "Pareto-optimal"  /* the legend entry of marked points */
 #define DOT_SCALE 0.5               /* of the default character height */
+#define LONE_SCALE 1.2              /* a line that is one point */
 #define STAR_SCALE 1.4
 #define CHUNK 65536 /* points per plstring call */
 
@@ -103,7 +104,17 @@ static void glyphs(const xy_curve *c, size_t a, size_t b, const char *glyph) {
   }
 }
 
-/* the runs of drawn points of c: lines (a lone point: a dot) and/or dots */
+/* whether the points [a, b) of c, all drawn, are one point to 1e-9 of its
+ * coordinates (a steady motion's U(theta), theta still to 1e-14 rad) */
+static int one_point(const xy_curve *c, size_t a, size_t b) {
+  const double ex = 1e-9 * fabs(c->x[a]), ey = 1e-9 * fabs(c->y[a]);
+  for (size_t i = a + 1; i < b; i++)
+    if (fabs(c->x[i] - c->x[a]) > ex || fabs(c->y[i] - c->y[a]) > ey) return 0;
+  return 1;
+}
+
+/* the runs of drawn points of c: lines (a lone point, or a run that stays at one: a
+ * large dot) and/or dots */
 static void draw_curve(const xy_curve *c) {
   const int line = c->style != DV_CURVE_POINTS, dots = c->style != DV_CURVE_LINE;
   size_t i = 0;
@@ -111,8 +122,14 @@ static void draw_curve(const xy_curve *c) {
     while (i < c->n && !point_ok(c, i)) i++;
     size_t j = i;
     while (j < c->n && point_ok(c, j)) j++;
-    if (line) dvp_line(&c->x[i], &c->y[i], j - i);
-    if (dots || j - i == 1) {
+    if (line && j > i && one_point(c, i, j)) {
+      plschr(0, LONE_SCALE);
+      glyphs(c, i, i + 1, DOT);
+      plschr(0, 1.0);
+    } else if (line) {
+      dvp_line(&c->x[i], &c->y[i], j - i);
+    }
+    if (dots) {
       plschr(0, DOT_SCALE);
       glyphs(c, i, j, DOT);
       plschr(0, 1.0);
