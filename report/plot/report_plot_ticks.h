@@ -15,7 +15,6 @@
 
 #include <stddef.h>
 
-#include <plplot.h>
 
 #define DVP_TICK_DIGITS 5        /* significant digits a label may show */
 #define DVP_TICK_CHAR_WIDTH 0.8  /* a label's character, in character heights (a browser's
