@@ -403,7 +403,8 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
     }
     plot.series[plot.nseries++] = (dv_plot_series){
         r->engine->name,       &r->traj,         r->half_thickness > 0.0 ? &r->matched : &c->thin,
-        compared_until(r),     r->pointwise_end, r->tolerance[DV_THETA_MAX_ERR]};
+        compared_until(r),     r->pointwise_end, r->tolerance[DV_THETA_MAX_ERR],
+        isnan(r->tolerance[DV_THETA_TURNING_ERR]) || r->not_judged[0] != '\0'};
   }
   /* the reference a thick engine's verdict uses, drawn beside the thin one */
   char matched_label[96] = "";
@@ -412,7 +413,7 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
       snprintf(matched_label, sizeof matched_label, "reference (matched, thickness %.3g mm)",
                2e3 * c->r[i].half_thickness);
       plot.series[plot.nseries++] =
-          (dv_plot_series){matched_label, &c->r[i].matched, NULL, plot.window_end, INFINITY, NAN};
+          (dv_plot_series){matched_label, &c->r[i].matched, NULL, plot.window_end, INFINITY, NAN, 0};
     }
   if (!status) status = dv_report_plot_scenario(dir, &plot, err);
   if (!status) status = dv_report_portraits(dir, c, err);

@@ -18,6 +18,7 @@
 
 #include "report_plot_figure.h"
 #include "report_plot_internal.h"
+#include "report_plot_ticks.h"
 #include "run_turning.h"
 
 const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg",
@@ -102,7 +103,34 @@ static int curve_has_data(const dvp_curve *c) {
   return 0;
 }
 
-/* the thin reference's contact point at the end of the window, on the path
+/* whether an engine of in is judged against the thin reference (thin 1) or
+ * against a matched one (thin 0); turns: one whose theta_turning_err is */
+static int judges(const dv_plot_input *in, int thin, int turns) {
+  for (size_t k = 0; k < in->nseries; k++) {
+    const dv_plot_series *s = &in->series[k];
+    if (s->reference && (s->reference == in->thin) == thin && !(turns && s->turns_unjudged))
+      return 1;
+  }
+  return 0;
+}
+
+/* whether series s (NULL: the thin reference) of in was compared: an engine,
+ * a reference that judged one, or any when no engine is in */
+static int compared(const dv_plot_input *in, const dv_plot_series *s) {
+  return (s && s->reference) || (!judges(in, 0, 0) && !judges(in, 1, 0)) ||
+         judges(in, !s, 0);
+}
+
+/* the reference the window's end is marked on: the thin one, or the first
+ * matched one where the thin one judged nothing */
+static const dv_traj *window_reference(const dv_plot_input *in) {
+  if (compared(in, NULL)) return in->thin;
+  for (size_t k = 0; k < in->nseries; k++)
+    if (!in->series[k].reference) return in->series[k].traj;
+  return NULL;
+}
+
+/* that reference's contact point at the end of the window, on the path
  * plot, when its run goes on after it */
 static void window_point(dvp_figure *f, const dv_traj *thin) {
   f->window_at[0] = f->window_at[1] = NAN;
@@ -125,7 +153,8 @@ static int set_curve(dvp_curve *c, dvp_kind kind, const dv_plot_series *s, const
   c->colour = s ? (PLINT)(DVP_COL_SERIES + (dv_report_plot_engine_colour(s->label) - 1) % DVP_NPALETTE)
                 : DVP_COL_FG;
   c->judged = s && s->reference;
-  c->window_end = s ? s->window_end : in->window_end;
+  c->ranged = compared(in, s);
+  c->window_end = !c->ranged ? -INFINITY : s ? s->window_end : in->window_end;
   if (isnan(c->window_end)) c->window_end = -INFINITY;
   c->horizon = c->judged && s->horizon < c->window_end ? s->horizon : NAN;
   c->limit = kind == DVP_ERROR && c->judged && s->theta_limit > 0.0 ? log10(s->theta_limit) : NAN;
@@ -133,7 +162,8 @@ static int set_curve(dvp_curve *c, dvp_kind kind, const dv_plot_series *s, const
   const double strong_end = kind == DVP_ERROR && isfinite(c->horizon) ? c->horizon : c->window_end;
   const dv_traj *tr = s ? s->traj : in->thin;
   if (fill_curve(c, kind, tr, s ? s->reference : NULL, strong_end)) return -1;
-  return kind == DVP_THETA ? fill_turns(c, tr) : 0;
+  const int turns = c->judged ? !s->turns_unjudged : judges(in, !s, 1);
+  return kind == DVP_THETA && turns ? fill_turns(c, tr) : 0;
 }
 
 /* set up the curves of one plot, leaving out those without data (the title
@@ -142,7 +172,7 @@ static int build_figure(dvp_figure *f, dvp_kind kind, const dv_plot_input *in) {
   memset(f, 0, sizeof *f);
   f->kind = kind;
   f->window_end = isfinite(in->window_end) ? in->window_end : NAN;
-  if (kind == DVP_PATH) window_point(f, in->thin);
+  if (kind == DVP_PATH) window_point(f, window_reference(in));
   char name[160], missing[256] = "";
   dvp_escape(name, sizeof name, in->title, "");
   for (size_t k = 0; k <= in->nseries; k++) {
@@ -173,11 +203,13 @@ static void free_figure(dvp_figure *f) {
   f->ncurves = 0;
 }
 
-/* bounds of every drawable point; 0 when there is none */
+/* bounds of every drawable point of the curves that set the ranges (of all
+ * when those have none); 0 when there is none */
 static int data_range(const dvp_figure *f, double r[4]) {
   int any = 0;
-  for (size_t k = 0; k < f->ncurves; k++)
-    dvp_extend_range(f->c[k].x, f->c[k].y, f->c[k].n, r, &any);
+  for (int all = 0; all <= 1 && !any; all++)
+    for (size_t k = 0; k < f->ncurves; k++)
+      if (all || f->c[k].ranged) dvp_extend_range(f->c[k].x, f->c[k].y, f->c[k].n, r, &any);
   return any;
 }
 
@@ -241,15 +273,15 @@ static int legend_texts(const dvp_figure *f, const dvp_mark_legend *marks, const
 }
 
 /* a legend right of the frame: one line per curve, then the marks' styles */
-static void draw_legend(const dvp_figure *f, const dvp_mark_legend *marks, double line) {
+static void draw_legend(const dvp_figure *f, const dvp_mark_legend *marks, const dvp_layout *lay) {
   enum { M = DV_PLOT_MAX_SERIES + 1 + 6 };
   PLINT opt[M], tcol[M], lcol[M], lstyle[M], scol[M], snum[M];
   PLFLT lwidth[M], sscale[M];
   const char *text[M], *sym[M];
   PLINT n = 0;
   for (size_t k = 0; k < f->ncurves; k++, n++) {
-    opt[n] = PL_LEGEND_LINE;
-    lcol[n] = scol[n] = f->c[k].colour;
+    opt[n] = PL_LEGEND_LINE; /* faint where nothing of it was compared */
+    lcol[n] = scol[n] = f->c[k].nstrong >= 2 ? f->c[k].colour : dvp_faint(f->c[k].colour);
     lstyle[n] = 1;
     lwidth[n] = 2.0;
     text[n] = f->c[k].label;
@@ -269,9 +301,10 @@ static void draw_legend(const dvp_figure *f, const dvp_mark_legend *marks, doubl
     sym[k] = "\xe2\x96\xb2"; /* the turning points' triangle */
   }
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, DVP_LEGEND_POSITION,
-           DVP_LEGEND_X, 0.0, line, DVP_COL_BG, DVP_COL_FG, 1, n, 1, n, opt, 0.8,
-           DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
+  const PLINT rows = (n + lay->columns - 1) / lay->columns;
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x,
+           lay->y, lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, lay->columns, n, opt,
+           DVP_LEGEND_TEXT_OFFSET, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
            lstyle, lwidth, scol, sscale, snum, sym);
 }
 
@@ -298,7 +331,7 @@ static int window_of(const dvp_figure *f, double r[4]) {
 static void draw_figure(const void *arg) {
   const dvp_figure *f = arg;
   const int logy = f->kind == DVP_ERROR;
-  double r[4], line;
+  double r[4];
   const int any = window_of(f, r);
   const double t_last = last_time(f); /* the path plot's x is no time: unused there */
   dvp_mark_legend marks;
@@ -307,19 +340,14 @@ static void draw_figure(const void *arg) {
   const int nlines = legend_texts(f, &marks, text);
   pladv(0);
   plsyax(8, 0);
-  dvp_viewport_beside_legend(text, nlines, 1, &line);
+  const double disp = dvp_ylabel_disp(logy, dvp_ylabels_width(r[2], r[3], logy));
+  dvp_layout lay;
+  dvp_viewport(text, nlines, 1, disp, &lay);
   if (f->kind == DVP_PATH) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
-  plcol0(DVP_COL_GRID);
-  plwidth(1.0);
-  plbox("g", 0, 0, logy ? "gl" : "g", 0, 0);
-  plcol0(DVP_COL_FG);
-  /* a log axis labels every decade (PLplot's "l"), or every few with labels of our own */
-  const double ystep = logy ? ceil((r[3] - r[2]) / 8.0) : 0.0;
-  if (ystep > 1) plslabelfunc(dvp_decade_label, NULL);
-  plbox("bcnst", 0, 0, dvp_yaxis_opts(logy, ystep > 1), ystep, 0);
-  pllab(kinds[f->kind].xlabel, "", f->title);
-  plmtex("l", dvp_ylabel_disp(logy), 0.5, 0.5, kinds[f->kind].ylabel);
+  dvp_axes ax;
+  dvp_draw_axes(r, 0, logy, &ax);
+  dvp_axis_titles(&ax, kinds[f->kind].xlabel, kinds[f->kind].ylabel, disp, f->title);
   for (int judged = 0; judged <= 1; judged++) /* the references underneath the engines */
     for (size_t k = 0; k < f->ncurves; k++) {
       if (f->c[k].judged != judged) continue;
@@ -328,7 +356,7 @@ static void draw_figure(const void *arg) {
     }
   dvp_draw_marks(f, r, t_last);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
-  draw_legend(f, &marks, line);
+  draw_legend(f, &marks, &lay);
 }
 
 int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *err) {

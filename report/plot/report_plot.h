@@ -22,8 +22,14 @@
  * engine's own theta limit (dashed, its colour, labelled; one black line,
  * "limit", when all agree), on theta.svg the turning points compared (up
  * and down triangles at maxima and minima, in each run's colour, to its
- * window's end). Legends are outside the frame, right of it, and list those
- * marks' line styles.
+ * window's end; on a reference, those an engine's theta_turning_err was
+ * judged against). A reference that judged no engine (the thin disk in a
+ * thick scene, where each engine is judged against its cylinder's matched
+ * reference) is drawn faintly throughout, "not compared", and sets no axis
+ * range. Legends are outside the frame, right of it (below it when they
+ * would leave the frame too narrow), and list those marks' line styles.
+ * Linear axes are labelled with the digits their ticks need, scaled (the
+ * factor, and an offset, in the axis title) where that would be many.
  *
  * and, separately, dv_report_plot_xy: one generic x-y plot (see below).
  */
@@ -48,6 +54,8 @@ typedef struct dv_plot_series {
                                pointwise_end); marked when before window_end (INFINITY: none) */
   double theta_limit;       /* rad: its own limit of theta_max_err, on the error plot
                                (NAN: none) */
+  int turns_unjudged;       /* its theta_turning_err was not judged: no turning points
+                               marked on it (0: they are) */
 } dv_plot_series;
 
 typedef struct dv_plot_input {
@@ -91,7 +99,7 @@ int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *
  * Curves: black ones (colour 0) are drawn first, wider, underneath the
  * coloured ones. A point with a non-finite coordinate (or one that is <= 0 on
  * a log axis, or of magnitude >= 1e150) is skipped: it breaks a line. A lone
- * point of a line gets a dot.
+ * point of a line, or a line whose points are all one (a steady motion), gets a dot.
  *   DV_CURVE_LINE         a line through the points
  *   DV_CURVE_POINTS       a dot per point, not connected
  *   DV_CURVE_LINE_POINTS  a line through the points and a dot on each

@@ -21,6 +21,7 @@ typedef struct dvp_curve {
   PLINT colour;      /* cmap0 index */
   char label[128];   /* legend text, PLplot-escaped */
   int judged;        /* an engine's curve (not a reference's): its marks are drawn */
+  int ranged;        /* its points set the axis ranges (a reference that judged nothing does not) */
   double window_end; /* s: its compared window's end (-INFINITY: nothing compared) */
   double horizon;    /* s: where its pointwise metrics stop (NAN: not marked) */
   double limit;      /* error plot: log10 of its theta limit (NAN: none) */

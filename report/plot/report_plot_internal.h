@@ -30,20 +30,15 @@ enum {
 #define DVP_PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
 #define DVP_FAINT_ALPHA 0.3  /* opacity of what the verdict did not use */
 
-#define DVP_VIEWPORT_LEFT 0.09      /* of the page: the y tick labels run along the axis */
 #define DVP_LEGEND_LINE_MM 10.0     /* length of a legend's line sample */
 #define DVP_LEGEND_SCALE 0.8        /* legend text, of the default character height */
 #define DVP_LEGEND_SPACING 2.0      /* between legend lines, in character heights */
 #define DVP_DIAMOND "\xe2\x97\x86"  /* U+25C6 black diamond: the window's end on a path */
 #define DVP_WINDOW_END "window end" /* the label of where the comparison stopped */
 
-/* plbox's options for the y axis: a linear axis's labels run along it (however
- * many digits they have, its title never covers them), a log axis's decades
- * (10^k, own: every few, labelled by dvp_decade_label) across it */
-const char *dvp_yaxis_opts(int log, int own_decades);
-
-/* the y axis's title from the frame, in character heights, for those labels */
-double dvp_ylabel_disp(int log);
+/* the y axis's title from the frame, in character heights, for labels labels
+ * character heights wide (a linear axis's) */
+double dvp_ylabel_disp(int log, double labels);
 
 /* the translucent version of cmap0 colour c (foreground or series), c itself otherwise */
 PLINT dvp_faint(PLINT c);
@@ -54,14 +49,26 @@ typedef struct dvp_points {
   size_t n;
 } dvp_points;
 
-/* set the viewport (after pladv) to leave room on the right for a legend of
- * the nlines texts (PLplot text) in ncolumns columns (none: nlines 0); the
- * line sample's length, as pllegend's plot_width, into *line */
-void dvp_viewport_beside_legend(const char *const *text, int nlines, int ncolumns, double *line);
+/* where dvp_viewport put the legend: pllegend's position, offsets, columns
+ * and line sample's length (plot_width) */
+typedef struct dvp_layout {
+  PLINT position;
+  double x, y;
+  int columns;
+  double line;
+} dvp_layout;
 
-/* pllegend's position and offsets for that legend: outside the frame, right of it, centred */
+/* set the viewport (after pladv): left_chars character heights left of the
+ * frame for the y axis's labels and title, room right of it for a legend of
+ * the nlines texts (PLplot text) in ncolumns columns, or below it when the
+ * frame would be too narrow beside it (none: nlines 0) */
+void dvp_viewport(const char *const *text, int nlines, int ncolumns, double left_chars,
+                  dvp_layout *out);
+
+/* pllegend's position and offsets for a legend beside the frame: outside, right of it, centred */
 #define DVP_LEGEND_POSITION (PL_POSITION_OUTSIDE | PL_POSITION_RIGHT | PL_POSITION_VIEWPORT)
 #define DVP_LEGEND_X 0.015 /* gap between the frame and the legend, of the viewport */
+#define DVP_LEGEND_TEXT_OFFSET 0.8 /* pllegend's text_offset */
 
 /* copy text into out with PLplot's escape character doubled, then suffix */
 void dvp_escape(char *out, size_t size, const char *text, const char *suffix);

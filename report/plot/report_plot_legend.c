@@ -1,24 +1,61 @@
-/* dvp_viewport_beside_legend: the frame, room right of it for the legend,
- * and left of it for the y axis's labels.
+/* dvp_viewport: the frame, room left of it for the y axis's labels and
+ * title, and right of it (or below it) for the legend.
  *
  * A legend inside the frame hides data wherever it goes (a steel Euler
  * disk's energy curves fill every corner), so it sits outside, right of the
- * frame; the frame is as wide as that leaves. The legend's width is estimated
- * from PLplot's character height at the legend's scale and the layout
- * pllegend is given (DVP_LEGEND_*): each column a line sample plus its
- * longest text.
+ * frame; the frame is as wide as that leaves. Where that would leave the
+ * frame narrower than FRAME_MIN (long labels), the legend goes below it, in
+ * as many columns as fit the page. The legend's size is what pllegend
+ * itself gives the texts, measured on a stream of the same page written to
+ * /dev/null: PLplot's own estimate of its text, which is wider than a
+ * browser draws it, so the box holds the text and the page holds the box.
  */
 #include <math.h>
 #include <string.h>
 
 #include "report_plot_internal.h"
 
-#define CHAR_WIDTH 0.6  /* per character of the longest text, in character heights */
-#define TEXT_LEAD 6.5   /* the text's offset and the box's padding, in character heights (fit
-                           to the widths pllegend returned for 12- and 21-character texts) */
-#define MARGIN 1.05     /* what the estimate missed, and a little air */
 #define PAGE_RIGHT 0.99 /* of the page: the legend's right edge at most */
-#define FRAME_MIN 0.45  /* of the page: the frame's width at least (long labels are cut) */
+#define FRAME_MIN 0.45  /* of the page: the frame's width at least, beside a legend */
+#define FRAME_TOP 0.88  /* of the page: room for the title above */
+#define XLABEL_ROOM 4.5 /* below the frame: the x tick labels and title, character heights */
+#define MAX_BELOW_COLUMNS 4
+
+/* the size (mm) pllegend gives the nlines texts in ncolumns columns with
+ * line_mm long line samples; 0 when it cannot be measured */
+static int legend_size(const char *const *text, int nlines, int ncolumns, double line_mm,
+                       double *w, double *h) {
+  enum { M = 64 };
+  PLINT opt[M], tcol[M], cur = 0, strm = -1, code = 0;
+  char msg[1024] = "";
+  if (nlines > M) return 0;
+  for (int k = 0; k < nlines; k++) opt[k] = PL_LEGEND_NONE, tcol[k] = 1;
+  plgstrm(&cur);
+  plmkstrm(&strm);
+  if (strm < 0) return 0;
+  plsError(&code, msg);
+  plsdev("svg");
+  plsfnam("/dev/null");
+  plspage(0, 0, DVP_PAGE_W, DVP_PAGE_H, 0, 0);
+  plinit();
+  PLFLT lw = 0, lh = 0, sx0 = 0, sx1 = 1, sy0 = 0, sy1 = 1;
+  if (!code) {
+    pladv(0);
+    plvpor(0, 1, 0, 1);
+    plwind(0, 1, 0, 1);
+    plgspa(&sx0, &sx1, &sy0, &sy1);
+    const PLINT rows = (nlines + ncolumns - 1) / ncolumns;
+    pllegend(&lw, &lh, 0, PL_POSITION_INSIDE | PL_POSITION_LEFT | PL_POSITION_TOP |
+             PL_POSITION_VIEWPORT, 0, 0, line_mm / (sx1 - sx0), 0, 0, 1, rows, ncolumns, nlines,
+             opt, DVP_LEGEND_TEXT_OFFSET, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text,
+             NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+  }
+  plend1();
+  plsstrm(cur);
+  *w = lw * (sx1 - sx0);
+  *h = lh * (sy1 - sy0);
+  return !code && *w > 0;
+}
 
 PLINT dvp_faint(PLINT c) {
   if (c == DVP_COL_FG) return DVP_COL_FAINT_FG;
@@ -27,27 +64,43 @@ PLINT dvp_faint(PLINT c) {
   return c;
 }
 
-void dvp_viewport_beside_legend(const char *const *text, int nlines, int ncolumns, double *line) {
+void dvp_viewport(const char *const *text, int nlines, int ncolumns, double left_chars,
+                  dvp_layout *out) {
   PLFLT def, ht, sx0, sx1, sy0, sy1;
   plgspa(&sx0, &sx1, &sy0, &sy1); /* subpage, mm */
-  plschr(0, DVP_LEGEND_SCALE);
-  plgchr(&def, &ht); /* mm */
-  size_t longest = 0;
-  for (int k = 0; k < nlines; k++) longest = strlen(text[k]) > longest ? strlen(text[k]) : longest;
-  plschr(0, 1.0);
-  const double page_w = sx1 - sx0;
-  const double col_mm = DVP_LEGEND_LINE_MM + (TEXT_LEAD + CHAR_WIDTH * (double)longest) * ht;
-  double legend = nlines > 0 ? MARGIN * ncolumns * col_mm / page_w : 0.0;
-  double right = PAGE_RIGHT - legend - (nlines > 0 ? 0.02 : 0.0);
-  if (right < DVP_VIEWPORT_LEFT + FRAME_MIN) right = DVP_VIEWPORT_LEFT + FRAME_MIN;
-  plvpor(DVP_VIEWPORT_LEFT, right, 0.12, 0.88);
-  *line = DVP_LEGEND_LINE_MM / ((right - DVP_VIEWPORT_LEFT) * page_w);
+  plgchr(&def, &ht);              /* mm */
+  const double page_w = sx1 - sx0, page_h = sy1 - sy0;
+  const double left = (left_chars + 1.5) * ht / page_w;
+  double w = 0, h = 0, right = PAGE_RIGHT - 0.02, bottom = 0.12;
+  out->columns = ncolumns;
+  out->position = DVP_LEGEND_POSITION;
+  out->x = DVP_LEGEND_X;
+  out->y = 0.0;
+  if (nlines > 0 && legend_size(text, nlines, ncolumns, DVP_LEGEND_LINE_MM, &w, &h)) {
+    /* beside: the legend's left edge is DVP_LEGEND_X of the frame right of it */
+    right = (PAGE_RIGHT - w / page_w + DVP_LEGEND_X * left) / (1.0 + DVP_LEGEND_X);
+    if (right - left < FRAME_MIN) { /* below, in the most columns that fit */
+      right = PAGE_RIGHT - 0.02;
+      for (int c = MAX_BELOW_COLUMNS; c >= 1; c--) {
+        double wc, hc;
+        if (!legend_size(text, nlines, c, DVP_LEGEND_LINE_MM, &wc, &hc)) continue;
+        out->columns = c, w = wc, h = hc;
+        if (wc <= PAGE_RIGHT * page_w) break;
+      }
+      bottom = fmin((XLABEL_ROOM + 0.5) * ht / page_h + h / page_h, FRAME_TOP - 0.3);
+      out->position = PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM | PL_POSITION_VIEWPORT;
+      /* centred under the frame, moved over as far as the page needs */
+      const double half = 0.5 * w / page_w, mid = 0.5 * (left + right);
+      const double at = fmax(fmin(mid, PAGE_RIGHT - half), 1.0 - PAGE_RIGHT + half);
+      out->x = (at - mid) / (right - left);
+      out->y = XLABEL_ROOM * ht / ((FRAME_TOP - bottom) * page_h);
+    }
+  }
+  plvpor(left, right, bottom, FRAME_TOP);
+  out->line = DVP_LEGEND_LINE_MM / ((right - left) * page_w);
 }
 
-const char *dvp_yaxis_opts(int log, int own_decades) {
-  return !log ? "bcnst" : own_decades ? "bcnotv" : "bcnstlv";
-}
-
-double dvp_ylabel_disp(int log) {
-  return log ? 5.5 : 4.0; /* "10^-16" across the axis is about 4.5 characters wide */
+double dvp_ylabel_disp(int log, double labels) {
+  /* "10^-16" across the axis is about 4.5 characters wide */
+  return log ? 5.5 : labels + 2.0;
 }

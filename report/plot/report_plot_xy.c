@@ -13,12 +13,14 @@
 
 #include "report_plot.h"
 #include "report_plot_internal.h"
+#include "report_plot_ticks.h"
 
 #define DOT "\xe2\x97\x8f"          /* U+25CF black circle: a point */
 #define STAR "\xe2\x98\x85"         /* U+2605 black star: a marked point */
 #define STAR_OUTLINE "\xe2\x98\x86" /* U+2606 white star: its outline */
 #define MARK_TEXT "Pareto-optimal"  /* the legend entry of marked points */
 #define DOT_SCALE 0.5               /* of the default character height */
+#define LONE_SCALE 1.2              /* a line that is one point */
 #define STAR_SCALE 1.4
 #define CHUNK 65536 /* points per plstring call */
 
@@ -102,7 +104,17 @@ static void glyphs(const xy_curve *c, size_t a, size_t b, const char *glyph) {
   }
 }
 
-/* the runs of drawn points of c: lines (a lone point: a dot) and/or dots */
+/* whether the points [a, b) of c, all drawn, are one point to 1e-9 of its
+ * coordinates (a steady motion's U(theta), theta still to 1e-14 rad) */
+static int one_point(const xy_curve *c, size_t a, size_t b) {
+  const double ex = 1e-9 * fabs(c->x[a]), ey = 1e-9 * fabs(c->y[a]);
+  for (size_t i = a + 1; i < b; i++)
+    if (fabs(c->x[i] - c->x[a]) > ex || fabs(c->y[i] - c->y[a]) > ey) return 0;
+  return 1;
+}
+
+/* the runs of drawn points of c: lines (a lone point, or a run that stays at one: a
+ * large dot) and/or dots */
 static void draw_curve(const xy_curve *c) {
   const int line = c->style != DV_CURVE_POINTS, dots = c->style != DV_CURVE_LINE;
   size_t i = 0;
@@ -110,8 +122,14 @@ static void draw_curve(const xy_curve *c) {
     while (i < c->n && !point_ok(c, i)) i++;
     size_t j = i;
     while (j < c->n && point_ok(c, j)) j++;
-    if (line) dvp_line(&c->x[i], &c->y[i], j - i);
-    if (dots || j - i == 1) {
+    if (line && j > i && one_point(c, i, j)) {
+      plschr(0, LONE_SCALE);
+      glyphs(c, i, i + 1, DOT);
+      plschr(0, 1.0);
+    } else if (line) {
+      dvp_line(&c->x[i], &c->y[i], j - i);
+    }
+    if (dots) {
       plschr(0, DOT_SCALE);
       glyphs(c, i, j, DOT);
       plschr(0, 1.0);
@@ -148,7 +166,7 @@ static int legend_columns(int nlines) {
 }
 
 /* a legend right of the frame: every labelled curve with data, then the marks if any */
-static void draw_legend(const xy_figure *f, double line) {
+static void draw_legend(const xy_figure *f, const dvp_layout *lay) {
   enum { M = DV_PLOT_MAX_CURVES + 1 };
   PLINT opt[M], tcol[M], lcol[M], lstyle[M], scol[M], snum[M];
   PLFLT lwidth[M], sscale[M];
@@ -180,22 +198,12 @@ static void draw_legend(const xy_figure *f, double line) {
     text[n++] = MARK_TEXT;
   }
   if (n == 0) return;
-  const PLINT columns = legend_columns(n), rows = (n + columns - 1) / columns;
+  const PLINT columns = lay->columns, rows = (n + columns - 1) / columns;
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, DVP_LEGEND_POSITION,
-           DVP_LEGEND_X, 0.0, line, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
-           0.8, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x,
+           lay->y, lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
+           DVP_LEGEND_TEXT_OFFSET, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
            lstyle, lwidth, scol, sscale, snum, sym);
-}
-
-/* the options of one axis's box, its tick step in decades */
-static const char *box_opts(int log, int y, double span, double *step) {
-  *step = log ? ceil(span / 8.0) : 0.0;
-  if (y) return dvp_yaxis_opts(log, *step > 1);
-  if (!log) return "bcnst";
-  if (*step > 1) return "bcnot"; /* every few decades, labels of our own */
-  *step = 0.0;
-  return "bcnstl";
 }
 
 /* draw figure f (an xy_figure *) on the current, initialised stream */
@@ -210,25 +218,16 @@ static void draw_figure(const void *arg) {
   }
   pladv(0);
   plsyax(8, 0);
-  int nlines;
-  double line;
   const char *text[DV_PLOT_MAX_CURVES + 1];
-  nlines = legend_texts(f, text);
-  dvp_viewport_beside_legend(text, nlines, legend_columns(nlines), &line);
+  const int nlines = legend_texts(f, text);
+  const double disp = dvp_ylabel_disp(logy, dvp_ylabels_width(r[2], r[3], logy));
+  dvp_layout lay;
+  dvp_viewport(text, nlines, legend_columns(nlines), disp, &lay);
   if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
-  plcol0(DVP_COL_GRID);
-  plwidth(1.0);
-  plbox(logx ? "gl" : "g", 0, 0, logy ? "gl" : "g", 0, 0);
-  plcol0(DVP_COL_FG);
-  double xstep, ystep;
-  const char *xopt = box_opts(logx, 0, r[1] - r[0], &xstep);
-  const char *yopt = box_opts(logy, 1, r[3] - r[2], &ystep);
-  if (logy && ystep <= 1) ystep = 0.0;
-  if (xstep > 1 || ystep > 1) plslabelfunc(dvp_decade_label, NULL);
-  plbox(xopt, xstep, 0, yopt, ystep, 0);
-  pllab(f->xlabel ? f->xlabel : "", "", f->title);
-  plmtex("l", dvp_ylabel_disp(logy), 0.5, 0.5, f->ylabel ? f->ylabel : "");
+  dvp_axes ax;
+  dvp_draw_axes(r, logx, logy, &ax);
+  dvp_axis_titles(&ax, f->xlabel, f->ylabel, disp, f->title);
   for (int black = 1; black >= 0; black--) /* black references wide, underneath */
     for (size_t k = 0; k < f->n; k++) {
       const xy_curve *c = &f->c[k];
@@ -241,7 +240,7 @@ static void draw_figure(const void *arg) {
   for (size_t k = 0; k < f->n; k++) draw_marks(&f->c[k]);
   plcol0(DVP_COL_FG);
   if (!any) plptex(0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]), 1, 0, 0.5, "no data");
-  draw_legend(f, line);
+  draw_legend(f, &lay);
 }
 
 /* f's title: title, then "(zero at every point: ...)" and "(no data: ...)"
