@@ -34,10 +34,13 @@ check '[ -z "$(ls -A "$ro")" ]' "read-only: files appeared"
 "$diskval" suite "$scenarios/upright_stable.ini" --out "$full/report" 2>"$work/err"; code=$?
 check '[ $code -eq 2 ]' "full disk: exit $code, want 2"
 check 'grep -q "No space" "$work/err"' "full disk: no clear message: $(cat "$work/err")"
-# the scenario's directory, if any, is its error report (report_suite_dir.h), not a part of a report
+# the scenario's directory, if any, is its error report (report_suite_dir.h), not a part of a report:
+# report.json, report.md and its page whole, if the page fitted
 check '[ ! -e "$full/report/upright_stable" ] ||
   { grep -q "No space" "$full/report/upright_stable/report.json" &&
-    [ "$(ls "$full/report/upright_stable")" = "$(printf "report.json\nreport.md")" ]; }' \
+    [ "$(ls "$full/report/upright_stable" | grep -vx index.html)" = "$(printf "report.json\nreport.md")" ] &&
+    { [ ! -e "$full/report/upright_stable/index.html" ] ||
+      tail -n 1 "$full/report/upright_stable/index.html" | grep -qx "</html>"; }; }' \
   "full disk: a half-written report remains: $(ls "$full/report/upright_stable" 2>&1)"
 check '[ -z "$(find "$full" -name ".diskval-tmp.*")" ]' "full disk: temporary files remain"
 "$diskval" simulate "$scenarios/upright_stable.ini" --engine reduced --out "$full/x.csv" 2>/dev/null
