@@ -87,12 +87,15 @@ static void put_summary(FILE *fp, const dvs_entry *es, size_t n, size_t ncols) {
         add(&metrics, worst->string);
     }
   }
+  /* a class's colour only where it has cells: "0 fail" in red reads as a failure */
   fprintf(fp,
-          "<p>%zu scenarios, %zu engines: <b class=\"pass\">%d pass</b>, "
-          "<b class=\"fail\">%d fail</b>, <b class=\"nj\">%d not judged</b>, "
-          "<b class=\"err\">%d harness error%s</b>.</p>\n<ul>\n",
-          n, ncols, count[DVS_PASS], count[DVS_FAIL], count[DVS_NOT_JUDGED], count[DVS_ERROR],
-          count[DVS_ERROR] == 1 ? "" : "s");
+          "<p>%zu scenarios, %zu engines: <b class=\"%s\">%d pass</b>, "
+          "<b class=\"%s\">%d fail</b>, <b class=\"%s\">%d not judged</b>, "
+          "<b class=\"%s\">%d harness error%s</b>.</p>\n<ul>\n",
+          n, ncols, count[DVS_PASS] ? "pass" : "none", count[DVS_PASS],
+          count[DVS_FAIL] ? "fail" : "none", count[DVS_FAIL],
+          count[DVS_NOT_JUDGED] ? "nj" : "none", count[DVS_NOT_JUDGED],
+          count[DVS_ERROR] ? "err" : "none", count[DVS_ERROR], count[DVS_ERROR] == 1 ? "" : "s");
   if (count[DVS_FAIL]) {
     fputs("<li>fail", fp);
     put_tally(fp, &fails, ": ");
