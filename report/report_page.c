@@ -234,17 +234,26 @@ static void put_judged_by(FILE *fp, const cJSON *engines, double h) {
   if (!n) fputs("; it judged no engine", fp);
 }
 
-/* each reference and the engines it judged: the thin disk's, then each matched cylinder's */
-static void put_references(FILE *fp, const cJSON *ref, const cJSON *engines) {
-  dv_report_escape_put(fp, "<p>Reference of the thin disk: ", text(ref, "engine"), 0, " (");
+/* reference run ref of half-thickness h, how it ended and the engines it judged, as a paragraph */
+static void put_reference(FILE *fp, const cJSON *ref, double h, const cJSON *engines) {
+  if (h > 0)
+    fprintf(fp, "<p>Reference of the cylinder of half-thickness %.3g mm: ", 1e3 * h);
+  else
+    fputs("<p>Reference of the thin disk: ", fp);
+  dv_report_escape_put(fp, "", text(ref, "engine"), 0, " (");
   put_para(fp, "", text(ref, "integrator"), "");
   if (cJSON_IsNumber(item(ref, "rtol"))) dvs_put_num(fp, " rtol ", item(ref, "rtol"), "");
   fputs("), ", fp);
   dv_report_escape_put(fp, "", text(ref, "outcome"), 0, "");
   dvs_put_num(fp, " at t = ", item(ref, "t_end"), " s");
   put_para(fp, ": ", text(ref, "detail"), "");
-  put_judged_by(fp, engines, 0.0);
+  put_judged_by(fp, engines, h);
   fputs(".</p>\n", fp);
+}
+
+/* each reference and the engines it judged: the thin disk's, then each matched cylinder's */
+static void put_references(FILE *fp, const cJSON *ref, const cJSON *engines) {
+  put_reference(fp, ref, 0.0, engines);
   double seen[16];
   size_t nseen = 0;
   const cJSON *eng;
@@ -255,15 +264,7 @@ static void put_references(FILE *fp, const cJSON *ref, const cJSON *engines) {
     while (k < nseen && seen[k] != hj->valuedouble) k++;
     if (k < nseen || nseen == sizeof seen / sizeof *seen) continue;
     seen[nseen++] = hj->valuedouble;
-    fprintf(fp, "<p>Reference of the cylinder of half-thickness %.3g mm: ", 1e3 * hj->valuedouble);
-    dv_report_escape_put(fp, "", text(m, "engine"), 0, " (");
-    put_para(fp, "", text(m, "integrator"), "");
-    if (cJSON_IsNumber(item(m, "rtol"))) dvs_put_num(fp, " rtol ", item(m, "rtol"), "");
-    fputs("), ", fp);
-    dv_report_escape_put(fp, "", text(m, "outcome"), 0, "");
-    dvs_put_num(fp, " at t = ", item(m, "t_end"), " s");
-    put_judged_by(fp, engines, hj->valuedouble);
-    fputs(".</p>\n", fp);
+    put_reference(fp, m, hj->valuedouble, engines);
   }
   put_para(fp, "<p>How the scene amplifies a nudge of its start: ",
            text(item(ref, "amplification"), "words"), ".</p>\n");

@@ -1,7 +1,9 @@
 #!/bin/sh
 # check_pages_written: compare and judge each write their report directory's
 # page, index.html, naming it on stdout; the page shows the report's plots and
-# a row per engine. Planted: report_scenario.c without its page call fails it.
+# a row per engine; a thick body's page names the reference that judged each
+# engine. Planted: report_scenario.c without its page call fails it; every
+# engine said judged by the thin disk fails it.
 #
 # usage: check_pages_written.sh DISKVAL SCENARIO   (tests/data/short_circle.ini:
 #        1 s, ode alone: compare about 1 s, judge under 1 s)
@@ -37,5 +39,13 @@ page "$tmp/c/short_circle" compare ode
 grep -qx "page: $tmp/j/short_circle/index.html" "$tmp/j.out" ||
   { echo "FAIL: judge does not name its page"; fail=1; }
 page "$tmp/j/short_circle" judge recorded
+# a thick body's page names the reference that judged it, the thin disk's judging nothing
+sed -e 's/^mass = 1.0$/mass = 1.0\nthickness = 0.004/' "$sc" >"$tmp/thick.ini"
+"$dv" compare "$tmp/thick.ini" --engines ode --cause none --out "$tmp/t" >"$tmp/t.out" 2>&1 ||
+  { echo "FAIL: thick compare exited $?"; cat "$tmp/t.out"; fail=1; }
+grep -q '<p>Reference of the thin disk: [^<]*; it judged no engine\.</p>' "$tmp/t/short_circle/index.html" ||
+  { echo "FAIL: the thick page says the thin disk judged an engine"; fail=1; }
+grep -q '<p>Reference of the cylinder of half-thickness 2 mm: [^<]*; it judged ode\.</p>' \
+  "$tmp/t/short_circle/index.html" || { echo "FAIL: the thick page does not name ode's reference"; fail=1; }
 [ "$fail" -eq 0 ] && echo "PASS: compare and judge write their pages"
 exit "$fail"
