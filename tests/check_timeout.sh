@@ -2,13 +2,15 @@
 # check_timeout.sh DISKVAL SCENARIO_DIR: long work is known before it starts.
 #   - compare and simulate of a scene whose one output interval lasts the
 #     whole run (steady_circle to t = 20000 s, output_dt 20000 s: minutes)
-#     say how long they will take within 5 s (the probe once waited for a
-#     first sample that came at the end);
+#     say how long they will take before the run's end (the probe once waited
+#     for a first sample that came at the end): within 60 s, 0.2 s measured;
 #   - with --timeout 1 that scene is refused at once: one line, exit 2,
 #     nothing written;
 #   - a run let start (its estimate under twice the limit) is killed at the
 #     limit: exit 2, "timed out after S s", no CSV, no temporaries, compare's
 #     error report saying so.
+# No wall time is asserted: how soon a limit ends a child is tests/exec/test_exec.c's
+# check (a child that sleeps 10 s under a 0.5 s limit); here the messages prove it.
 set -u
 . "$(dirname "$0")/check_lib.sh"
 diskval=$1
@@ -22,12 +24,12 @@ long=(--set scenario.duration=20000 --set scenario.output_dt=20000)
 : >"$work/announce"
 : >"$work/err"
 
-# announced CMD...: CMD's stderr has "will take about" within 5 s (then it is killed)
+# announced CMD...: CMD's stderr has "will take about" within 60 s (then it is killed)
 announced() {
   "$diskval" "$@" >/dev/null 2>"$work/announce" &
   local pid=$! i
   pids+=("$pid")
-  for i in $(seq 50); do
+  for i in $(seq 600); do
     grep -q "will take about" "$work/announce" && break
     sleep 0.1
   done
@@ -35,15 +37,15 @@ announced() {
   wait "$pid" 2>/dev/null
   grep -q "will take about" "$work/announce"
 }
-check 'announced compare "$sc" "${long[@]}" --out "$work/a"' "compare: no estimate within 5 s: $(cat "$work/announce")"
+check 'announced compare "$sc" "${long[@]}" --out "$work/a"' "compare: no estimate within 60 s: $(cat "$work/announce")"
 check 'announced simulate "$sc" --engine mujoco "${long[@]}" --out "$work/a.csv"' \
-  "simulate: no estimate within 5 s: $(cat "$work/announce")"
+  "simulate: no estimate within 60 s: $(cat "$work/announce")"
 
 # refused up front
-start=$SECONDS
+# (the message proves it was not run: the run itself takes minutes)
 "$diskval" compare "$sc" "${long[@]}" --out "$work/r" --timeout 1 >/dev/null 2>"$work/err"
 code=$?
-check '[ $code -eq 2 ] && [ $((SECONDS - start)) -lt 10 ]' "compare --timeout 1: exit $code after $((SECONDS - start)) s"
+check '[ $code -eq 2 ]' "compare --timeout 1: exit $code"
 check '[ "$(wc -l <"$work/err")" -eq 1 ] && grep -Eq "^diskval compare: [^ ]*steady_circle[^ ]*: would take about [0-9.e+]+ s .*more than 2 times the time limit of 1 s: not started$" "$work/err"' \
   "compare --timeout 1: $(cat "$work/err")"
 check '[ ! -e "$work/r/steady_circle" ]' "compare --timeout 1 wrote a report"
@@ -78,8 +80,7 @@ killed() {
       rm -rf "$out" "$out.json"
       continue
     fi
-    [ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err" &&
-      [ $((SECONDS - start)) -le $(awk -v l="$limit" 'BEGIN { print int(l) + 3 }') ]
+    [ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err"
     return
   done
   return 1
