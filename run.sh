@@ -84,6 +84,7 @@ case "${1:-run}" in
     bash bench/bench_mpi.sh "$BUILD_DIR/cli/diskval" .
     bash bench/bench_output.sh baseline "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/plain_gsl_disk"
     bash bench/bench_forecast.sh "$BUILD_DIR/cli/diskval" .
+    bash bench/bench_time_limits.sh "$BUILD_DIR/cli/diskval" .
     bash bench/bench_harness.sh "$BUILD_DIR/cli/diskval" "$BUILD_DIR/bench/bare_mujoco" \
       "$BUILD_DIR/bench/bare_ode" .
     bash bench/bench_startup.sh "$BUILD_DIR/cli/diskval"

@@ -2,7 +2,11 @@
 # bench_forecast.sh DISKVAL ROOT: how near the announced forecasts come to the
 # time taken, as ratios (forecast / taken) measured in this one run: best's
 # rest of the search on three scenes, and compare's attribution on the hoop
-# (a failure made by a turning limit of 1e-4 rad). Prints, asserts nothing.
+# (a failure made by a turning limit of 1e-4 rad). Target: every forecast
+# within 2x of the time taken (0.5 to 2), each line PASS or FAIL; a busy
+# machine moves them (the probes timed under a load that then went), which is
+# why this is a benchmark and not a CTest test (it was best_forecast's and
+# cli/hoop's check until issue 40).
 set -u
 diskval=$1 root=$2
 work=$(mktemp -d)
@@ -12,7 +16,7 @@ for case in "$root/tests/data/two_euro.ini ode" "$root/tests/data/saucer.ini muj
   set -- $case
   "$diskval" best "$1" --engine "$2" --theta-tol 1e-3 >/dev/null 2>"$work/err"
   sed -n 's/.*took \([0-9.e+-]*\) s (forecast \([0-9.e+-]*\) s).*/\1 \2/p' "$work/err" |
-    awk -v s="$(basename "$1") $2" '{ printf "best %-22s forecast / taken %.2f (%s s / %s s)\n", s, $2 / $1, $2, $1 }'
+    awk -v s="$(basename "$1") $2" '{ r = $2 / $1; printf "best %-22s forecast / taken %.2f (%s s / %s s), target 0.5-2: %s\n", s, r, $2, $1, (r >= 0.5 && r <= 2) ? "PASS" : "FAIL" }'
 done
 began=$(date +%s.%N)
 "$diskval" compare "$root/tests/data/wheel_wobble.ini" --engines mujoco --out "$work/hoop" \
@@ -23,4 +27,4 @@ said=$(sed -n 's/.*will take about \([0-9hms]*\) .*/\1/p' "$work/err" |
          if (c ~ /[0-9]/) n = n c; else { s += n * (c == "h" ? 3600 : c == "m" ? 60 : 1); n = "" } }
          print s }')
 awk -v f="${said:-nan}" -v t="$took" \
-  'BEGIN { printf "compare hoop attribution  forecast / whole command %.2f (%s s / %.1f s)\n", f / t, f, t }'
+  'BEGIN { r = f / t; printf "compare hoop attribution  forecast / whole command %.2f (%s s / %.1f s), target 0.5-2: %s\n", r, f, t, (r >= 0.5 && r <= 2) ? "PASS" : "FAIL" }'
