@@ -4,7 +4,9 @@
 #   - /dev/zero (never ends, no newline) and a 3 MiB file are refused at once
 #     as larger than 1 MiB, with one line naming the file;
 #   - a 1 MiB line is refused as too long, at its line;
-#   - all of it under `ulimit -v` (1 GiB) and `timeout`, peak RSS below 64 MiB:
+#   - all of it under `ulimit -v` (1 GiB) and `timeout` (60 s: a hang, not a busy
+#     machine; analyze of steady_circle.ini passed 10 s at load 12 on 2 cores),
+#     peak RSS below 64 MiB:
 #     a reader that grows a buffer to the line's length fails here;
 #   - a FIFO with no writer (a scenario of analyze, simulate or a suite's
 #     directory, a trajectory of judge) is one line and exit 2 at once, never
@@ -19,7 +21,7 @@ trap 'rm -rf "$work"' EXIT
 
 # run diskval analyze FILE bounded; sets code, err (stderr) and rss (KiB)
 bounded() {
-  (ulimit -v 1048576; exec timeout -k 2 10 /usr/bin/time -f '%M' -o "$work/rss" \
+  (ulimit -v 1048576; exec timeout -k 2 60 /usr/bin/time -f '%M' -o "$work/rss" \
     "$diskval" analyze "$1") >/dev/null 2>"$work/err"
   code=$?
   err=$(cat "$work/err")
@@ -58,7 +60,7 @@ nowriter="$work/fifos/a.ini: a pipe with nothing to read (no writer has it open)
 fifo() {
   local what=$1 want=$2
   shift 2
-  (cd "$work" && exec timeout -k 2 10 "$diskval" "$@") >/dev/null 2>"$work/err"
+  (cd "$work" && exec timeout -k 2 60 "$diskval" "$@") >/dev/null 2>"$work/err"
   code=$?
   err=$(cat "$work/err")
   check '[ $code -eq 2 ]' "$what: exit $code, want 2: $err"
@@ -72,7 +74,7 @@ fifo "suite of a directory holding a FIFO" "$nowriter" suite "$work/fifos" --eng
 fifo "judge of a FIFO" "diskval judge: $work/t.csv:1: an empty file: no header" \
   judge "$scenarios/steady_circle.ini" "$work/t.csv" --out out
 # a pipe with a writer is read
-(exec timeout -k 2 10 "$diskval" analyze <(sleep 0.5; cat "$scenarios/steady_circle.ini")) \
+(exec timeout -k 2 60 "$diskval" analyze <(sleep 0.5; cat "$scenarios/steady_circle.ini")) \
   >/dev/null 2>"$work/err"
 code=$?
 check '[ $code -eq 0 ]' "analyze <(cat steady_circle.ini): exit $code, want 0: $(cat "$work/err")"
