@@ -7,8 +7,11 @@
 # git archive into a temporary directory, so no working tree is touched, and
 # built there once (Release); the suite must pass on it unmutated. Then each
 # mutant of the list (default SOURCE_DIR/tests/mutants.txt, format there) is
-# planted alone, rebuilt, and tested with ctest --stop-on-failure: "killed"
-# (with the first test that failed) or "survived"; one that does not build
+# planted alone, rebuilt, and tested with ctest --stop-on-failure, the quick
+# tier first (ctest -L quick) and, only when it survives there, the slow tier
+# (-L slow): "killed" (with the first test that failed and its tier) or
+# "survived"; the slow tier's unmutated run waits for the first mutant that
+# needs it. One that does not build
 # "did not compile", one whose ORIGINAL is not in its file exactly once "bad
 # mutant" (both skipped, not counted). The file is restored before the next.
 #
@@ -22,9 +25,9 @@
 #   --keep         keep the temporary directory (sources, build, logs)
 #   --check        only check that every mutant's ORIGINAL occurs once; no build
 #
-# Exit status: 0 when killed / (killed + survived) >= 90 %, 1 below (or when
-# nothing was measured), 2 on a usage or set-up error (the unmutated build or
-# suite failing among them).
+# Exit status: 0 when killed / (killed + survived) >= 90 % and the quick tier
+# alone killed >= 90 % too, 1 below (or when nothing was measured), 2 on a
+# usage or set-up error (the unmutated build or suite failing among them).
 set -u
 
 # Left out of every run, being slow or dependent on what the machine has; what
@@ -191,10 +194,26 @@ fast_first() {
   cp "$tmp/fast-first.txt" "$costs"
 }
 
-ctest_run() { # LOG: the suite as every run takes it
-  [ ! -f "$tmp/baseline.log" ] || fast_first
+ctest_run() { # TIER LOG: one tier of the suite as every run takes it
+  [ ! -f "$tmp/baseline-quick.log" ] || fast_first
+  # a tier with no test left (--tests, EXCLUDE) passes: nothing there can kill
   step ctest --test-dir build --stop-on-failure -j "$jobs" --timeout "$TEST_TIMEOUT" \
-    --no-tests=error --output-on-failure -E "$EXCLUDE" ${tests:+-R "$tests"} >"$1" 2>&1
+    --no-tests=ignore --output-on-failure -L "^$1\$" -E "$EXCLUDE" ${tests:+-R "$tests"} >"$2" 2>&1
+}
+
+# the slow tier unmutated, once, when a mutant first survives the quick one
+slow_baseline() {
+  [ ! -f "$tmp/baseline-slow.ok" ] || return 0
+  say "running the slow tier unmutated (a mutant survived the quick one)"
+  cp "$tmp/pristine" "$f" && step cmake --build build -j "$jobs" >"$tmp/build-pristine.log" 2>&1 ||
+    die "cannot rebuild unmutated for the slow tier's baseline"
+  if ! ctest_run slow "$tmp/baseline-slow.log"; then
+    tail -n 30 "$tmp/baseline-slow.log" >&2
+    die "the unmutated slow tier fails ($(first_failure "$tmp/baseline-slow.log")): no mutant can be judged there"
+  fi
+  touch "$tmp/baseline-slow.ok"
+  plant "$f" "${origs[$i]}" "${repls[$i]}" >/dev/null && step cmake --build build -j "$jobs" >>"$tmp/build-$log.log" 2>&1 ||
+    die "cannot plant ${ids[$i]} again after the slow tier's baseline"
 }
 
 # the first test that failed in a ctest log (in the order they ended)
@@ -216,17 +235,17 @@ step cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 |
 say "building with -j $jobs"
 step cmake --build build -j "$jobs" >"$tmp/build.log" 2>&1 ||
   { tail -n 20 "$tmp/build.log" >&2; die "the unmutated build failed (log above)"; }
-say "running the suite unmutated${tests:+ (tests matching $tests)}"
-if ! ctest_run "$tmp/baseline.log"; then
-  tail -n 30 "$tmp/baseline.log" >&2
-  die "the unmutated suite fails ($(first_failure "$tmp/baseline.log")): no mutant can be judged"
+say "running the quick tier unmutated${tests:+ (tests matching $tests)}"
+if ! ctest_run quick "$tmp/baseline-quick.log"; then
+  tail -n 30 "$tmp/baseline-quick.log" >&2
+  die "the unmutated quick tier fails ($(first_failure "$tmp/baseline-quick.log")): no mutant can be judged"
 fi
-say "the unmutated suite passes ($(($(date +%s) - started)) s so far)"
+say "the unmutated quick tier passes ($(($(date +%s) - started)) s so far)"
 
-rows=() killed=0 survived=0 broken=0 bad=0 n=0
+rows=() killed=0 by_quick=0 survived=0 broken=0 bad=0 n=0
 for i in "${picked[@]}"; do
   n=$((n + 1))
-  id=${ids[$i]} file=${files[$i]} what=${whats[$i]} by="" where="?"
+  id=${ids[$i]} file=${files[$i]} what=${whats[$i]} by="" tier="" where="?"
   log=${id//[^A-Za-z0-9_.-]/_}
   t0=$(date +%s)
   f=$(target "$file")
@@ -238,26 +257,33 @@ for i in "${picked[@]}"; do
       result="bad mutant (ORIGINAL found ${where:-?} times)" && bad=$((bad + 1)) && where="?"
     elif ! step cmake --build build -j "$jobs" >"$tmp/build-$log.log" 2>&1; then
       result="did not compile" && broken=$((broken + 1))
-    elif ctest_run "$tmp/ctest-$log.log"; then
+    elif ! ctest_run quick "$tmp/ctest-$log.log"; then
+      result="killed" && killed=$((killed + 1)) && by_quick=$((by_quick + 1)) && tier=quick
+    elif slow_baseline && ctest_run slow "$tmp/ctest-$log.log"; then
       result="survived" && survived=$((survived + 1))
     else
-      result="killed" && killed=$((killed + 1))
+      result="killed" && killed=$((killed + 1)) && tier=slow
+    fi
+    if [ -n "$tier" ]; then
       by=$(first_failure "$tmp/ctest-$log.log")
       [ -n "$by" ] || by="(ctest failed, no test named)"
     fi
     cp "$tmp/pristine" "$f" # a fresh mtime: the next build recompiles it
   fi
-  say "[$n/${#picked[@]}] $id $file:$where: $result${by:+ by $by} ($(($(date +%s) - t0)) s)"
-  rows+=("| $id | $file:$where | ${what//|/\\|} | $result | ${by:--} |")
+  say "[$n/${#picked[@]}] $id $file:$where: $result${by:+ by $by ($tier tier)} ($(($(date +%s) - t0)) s)"
+  rows+=("| $id | $file:$where | ${what//|/\\|} | $result | ${by:--} | ${tier:--} |")
 done
 
 measured=$((killed + survived))
-if [ $measured -gt 0 ]; then
-  rate="$((killed * 100 / measured)).$((killed * 1000 / measured % 10)) %"
-else
-  rate="n/a (nothing killed or survived)"
-fi
-how="ctest --stop-on-failure -E '$EXCLUDE'"
+percent() { # PART: PART / measured as a percentage, one decimal
+  if [ $measured -gt 0 ]; then
+    echo "$(($1 * 100 / measured)).$(($1 * 1000 / measured % 10)) %"
+  else
+    echo "n/a (nothing killed or survived)"
+  fi
+}
+rate=$(percent $killed) quick_rate=$(percent $by_quick)
+how="ctest --stop-on-failure -L quick, then -L slow for a survivor; -E '$EXCLUDE'"
 [ -z "$tests" ] || how="$how -R '$tests'"
 {
   echo "# Mutation run"
@@ -265,13 +291,15 @@ how="ctest --stop-on-failure -E '$EXCLUDE'"
   echo "Source $commit; ${#picked[@]} mutants from ${list#"$src"/}; tests: $how;" \
     "$(($(date +%s) - started)) s."
   echo
-  echo "| id | file:line | what | result | killed by |"
-  echo "|---|---|---|---|---|"
+  echo "| id | file:line | what | result | killed by | tier |"
+  echo "|---|---|---|---|---|---|"
   printf '%s\n' "${rows[@]}"
   echo
-  echo "Killed $killed, survived $survived, did not compile $broken, bad mutants $bad;" \
-    "kill rate (killed / (killed + survived)) $rate."
+  echo "Killed $killed ($by_quick by the quick tier), survived $survived, did not compile" \
+    "$broken, bad mutants $bad; kill rate (killed / (killed + survived)) $rate, by the" \
+    "quick tier alone $quick_rate."
 } >"$tmp/result.md"
 cp "$tmp/result.md" "$out" || die "cannot write $out"
 cat "$tmp/result.md"
-[ $measured -gt 0 ] && [ $((killed * 100)) -ge $((MIN_RATE * measured)) ]
+[ $measured -gt 0 ] && [ $((killed * 100)) -ge $((MIN_RATE * measured)) ] &&
+  [ $((by_quick * 100)) -ge $((MIN_RATE * measured)) ]
