@@ -15,7 +15,7 @@ export LC_ALL=C
 dv=${1:?usage: check_signals_lock.sh DISKVAL SCENARIO_DIR}
 sc=${2:?usage: check_signals_lock.sh DISKVAL SCENARIO_DIR}
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+trap '[ "$(ps -o comm= -p "${worker:-0}" 2>/dev/null)" = diskval ] && kill -KILL "$worker"; rm -rf "$work"' EXIT
 cd "$work" || exit 2
 set -m # background runs get SIGINT like a foreground one (no job control: ignored)
 
@@ -48,14 +48,28 @@ done
 
 # a suite killed outright: its worker goes with it, and so does the lock
 sed -e "s/^name = .*/name = fast/" -e "s/^duration = .*/duration = 0.5/" "$long" >fast.ini
-"$dv" suite "$long" --engines mujoco --out s --jobs 1 >/dev/null 2>&1 &
+# 600 s long (200 s of MuJoCo): a worker the kill missed would outlast the 60 s
+# wait below (at 60 s, one did end by itself within it on a busy machine)
+sed -e "s/^duration = .*/duration = 600/" "$long" >longer.ini
+"$dv" suite longer.ini --engines mujoco --out s --jobs 1 >/dev/null 2>&1 &
 pid=$!
-wait_for "s/.*tmp.*" || echo "FAIL: the suite's worker made no temporary report directory"
-worker=$(compgen -G "s/.*tmp.*" | head -1 | sed 's/.*tmp\.\([0-9]*\)\..*/\1/')
+# the worker's temporary, not the suite's own (made first: the glob "s/.*tmp.*"
+# used before matched it, so the test waited on the dead suite, not the
+# worker, and on a busy machine the next suite ran while the killed worker was
+# not yet reaped: its temporary, rightly, not yet stale)
+worker=
+for _ in $(seq 1200); do # 60 s at most
+  worker=$(compgen -G "s/.diskval-tmp.*" | sed -n 's/.*tmp\.\([0-9]*\)\..*/\1/p' | grep -vx "$pid" | head -1)
+  [ -n "$worker" ] && break
+  sleep 0.05
+done
+check '[ -n "$worker" ]' "the suite's worker made no temporary report directory: $(ls -A s)"
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
-for _ in $(seq 100); do kill -0 "$worker" 2>/dev/null || break; sleep 0.05; done
-check '! kill -0 "$worker" 2>/dev/null' "SIGKILL: the suite's worker $worker outlived it"
+# gone and reaped, 60 s at most (its parent's death sends it SIGKILL at once;
+# a busy machine delays only its end)
+for _ in $(seq 1200); do kill -0 "${worker:-$pid}" 2>/dev/null || break; sleep 0.05; done
+check '! kill -0 "${worker:-$pid}" 2>/dev/null' "SIGKILL: the suite's worker $worker outlived it by 60 s"
 "$dv" suite fast.ini --engines mujoco --out s >stdout 2>stderr
 code=$?
 check '[ $code -eq 0 ]' "after SIGKILL: the next suite exits $code: $(cat stderr)"
