@@ -10,7 +10,6 @@ mpi_scratch
 mpi() { mpi_run 3 "$diskval" "$@"; }
 fail=0
 # the scenes cut to 0.3 s: 5 points and 3 scenes over 3 ranks are what the split shows
-# (the whole scenes took 3x as long for the same files)
 short=(--set scenario.duration=0.3)
 sweep=(sweep "$src/tests/data/short_circle.ini" --engine ode --vary timestep=8e-5..1e-5:5 "${short[@]}")
 mpi "${sweep[@]}" --out "$work/mpi" >/dev/null || { echo "FAIL: mpirun sweep"; fail=1; }
@@ -27,7 +26,10 @@ if ! cmp -s <(untimed "$work/mpi/sweep.csv") <(untimed "$work/serial/sweep.csv")
 fi
 suite=(suite "$src/scenarios/falling.ini" "$src/scenarios/upright_stable.ini" "$src/scenarios/small_c.ini"
   "${short[@]}")
-mpi "${suite[@]}" --out "$work/mpi_suite" >/dev/null || { echo "FAIL: mpirun suite"; fail=1; }
+# exit 1 is a tolerance failed (ODE over falling's first 0.3 s): the reports still compare
+mpi "${suite[@]}" --out "$work/mpi_suite" >/dev/null
+code=$?
+[ $code -le 1 ] || { echo "FAIL: mpirun suite: exit $code"; fail=1; }
 "$diskval" "${suite[@]}" --out "$work/serial_suite" --jobs 1 >/dev/null
 for f in "$work"/serial_suite/*/report.json; do
   rel=${f#"$work/serial_suite/"}

@@ -123,7 +123,7 @@ has_line cmp.log 'engine run  short_circle ode  t [0-9.]+/3 s' "compare"
 has_line cmp.log 'settings probe [0-9]+/[0-9]+ [(]ode' "compare, ode's settings probes"
 well_formed cmp.log "compare"
 on_tty cmpj.log "'$dv' compare '$sc' ${two[*]} --jobs 2 --out ttyj > /dev/null"
-has_line cmpj.log 'comparison run 4/4  [0-9]+s left  [(]' "compare --jobs 2"
+has_line cmpj.log 'comparison run 3/3  [0-9]+s left  [(]' "compare --jobs 2"
 well_formed cmpj.log "compare --jobs 2"
 "$dv" compare "$sc" "${two[@]}" "${long[@]}" --out file >file.out 2>cmp.err
 no_line cmp.err "compare, stderr in a file"
