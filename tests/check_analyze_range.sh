@@ -1,15 +1,12 @@
 #!/usr/bin/env bash
 # check_analyze_range.sh DISKVAL SCENARIO_DIR: analyze's range of theta (the
 # turning points of the effective potential, found by root finding) against
-# an independent measure of it: the reference integrated for 4 s, sampled
-# every 1e-4 s (past both turns of the slowest, upright_unstable: theta 2.429 at
-# 1.19 s, 0.7125 at 3.56 s, measured with simulate --set scenario.duration=10; the
-# falls lie down by 0.4 s and c_zero turns every 0.53 s; 10 s took 2.5x as long),
-# at every theta_limit from 1e-6 to 0.3. Exit status 0 from analyze; where the
-# disk falls the range is [limit, top] and the run lies down at the limit;
-# elsewhere both ends agree to 1e-6 rad (measured: at most 2.2e-9 on c_zero,
-# 5.9e-9 on upright_unstable, 0 on a steady start; the sampling misses a
-# turning point by theta'' dt^2 / 8, about 1e-8 here).
+# an independent measure of it: the reference integrated for 10 s, sampled
+# every 1e-4 s, at every theta_limit from 1e-6 to 0.3. Exit status 0 from
+# analyze; where the disk falls the range is [limit, top] and the run lies
+# down at the limit; elsewhere both ends agree to 1e-6 rad (measured: at most
+# 2.2e-9 on c_zero, 5.9e-9 on upright_unstable, 0 on a steady start; the
+# sampling misses a turning point by theta'' dt^2 / 8, about 1e-8 here).
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
@@ -24,7 +21,7 @@ for scene in falling steady_steep c_zero upright_unstable; do
     check '[ $code -eq 0 ]' "$scene, limit $limit: analyze exits $code"
     read -r lo hi falls < <(jq -r '"\(.theta_range[0]) \(.theta_range[1]) \(.falls)"' <<<"$json")
     read -r slo shi < <("$dv" simulate "$sc/$scene.ini" --engine reduced "${set_limit[@]}" \
-      --set scenario.output_dt=1e-4 --set scenario.duration=4 2>/dev/null |
+      --set scenario.output_dt=1e-4 --set scenario.duration=10 2>/dev/null |
       awk -F, 'NR == 2 { lo = $2; hi = $2 } NR > 1 { if ($2 < lo) lo = $2; if ($2 > hi) hi = $2 }
         END { printf "%.17g %.17g\n", lo, hi }')
     echo "$scene, limit $limit: analyze [$lo, $hi] falls $falls; integrated [$slo, $shi]"
