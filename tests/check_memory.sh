@@ -48,9 +48,9 @@ refused "200001 samples over 0.25 GiB" compare "$scenario" --out "$work/out" \
 
 # just inside a budget of 0.125 GiB: 62001 samples (95% of the 65536 it allows), the
 # default engines, 1.55 s of the scene at about the sampling 186001 samples had over
-# its 5 s in 0.25 GiB (the same bytes a sample, a third of the runs' time). The slope
-# is what it checks: twice the bytes a sample measured (2 x 766 B x 62001 + 39 MiB)
-# is past the budget, as it was at 0.25 GiB
+# its 5 s in 0.25 GiB (measured peak 104 MiB of the 128; the test's CPU 0.34x the
+# 186001-sample one's, one farm-bench pair). Twice the bytes a sample measured
+# (766 B more for each of 62001 samples: 45 MiB) is past the budget, as at 0.25 GiB
 budget_kib=$((128 * 1024))
 /usr/bin/time -f "%M" -o "$work/rss" "$diskval" compare "$scenario" --out "$work/inside" \
   --set scenario.memory_budget=0.125 --set scenario.duration=1.55 --set scenario.output_dt=2.5e-5 >/dev/null
