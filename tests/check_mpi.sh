@@ -9,7 +9,9 @@ diskval=$1 src=$2
 mpi_scratch
 mpi() { mpi_run 3 "$diskval" "$@"; }
 fail=0
-sweep=(sweep "$src/tests/data/short_circle.ini" --engine ode --vary timestep=8e-5..1e-5:5)
+# the scenes cut to 0.3 s: 5 points and 3 scenes over 3 ranks are what the split shows
+short=(--set scenario.duration=0.3)
+sweep=(sweep "$src/tests/data/short_circle.ini" --engine ode --vary timestep=8e-5..1e-5:5 "${short[@]}")
 mpi "${sweep[@]}" --out "$work/mpi" >/dev/null || { echo "FAIL: mpirun sweep"; fail=1; }
 "$diskval" "${sweep[@]}" --out "$work/serial" --jobs 1 >/dev/null
 # drop the columns wall_per_sim_s and pareto, found by name
@@ -22,8 +24,12 @@ if ! cmp -s <(untimed "$work/mpi/sweep.csv") <(untimed "$work/serial/sweep.csv")
   diff <(untimed "$work/mpi/sweep.csv") <(untimed "$work/serial/sweep.csv") | head
   fail=1
 fi
-suite=(suite "$src/scenarios/falling.ini" "$src/scenarios/upright_stable.ini" "$src/scenarios/small_c.ini")
-mpi "${suite[@]}" --out "$work/mpi_suite" >/dev/null || { echo "FAIL: mpirun suite"; fail=1; }
+suite=(suite "$src/scenarios/falling.ini" "$src/scenarios/upright_stable.ini" "$src/scenarios/small_c.ini"
+  "${short[@]}")
+# exit 1 is a tolerance failed (ODE over falling's first 0.3 s): the reports still compare
+mpi "${suite[@]}" --out "$work/mpi_suite" >/dev/null
+code=$?
+[ $code -le 1 ] || { echo "FAIL: mpirun suite: exit $code"; fail=1; }
 "$diskval" "${suite[@]}" --out "$work/serial_suite" --jobs 1 >/dev/null
 for f in "$work"/serial_suite/*/report.json; do
   rel=${f#"$work/serial_suite/"}

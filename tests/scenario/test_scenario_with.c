@@ -1,7 +1,10 @@
 /* test_scenario_with: a loaded scenario with overrides (dv_scenario_with) is,
  * byte for byte, the scenario a load of its file with those overrides gives:
  * over every shipped scenario and overrides that change what the checks
- * derive (the moments, a steady start's rates, an engine's step and shape). */
+ * derive (the moments, a steady start's rates, an engine's step and shape).
+ * Every file without overrides, and two of the overrides in turn (file k: cases
+ * 1 + k mod 10 and 1 + (k + 5) mod 10), so each case meets about 9 files of every
+ * kind: all cases on all files took 235 s of a loaded machine's suite for the same code. */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,7 +31,7 @@ static const char *const OVERRIDES[][MAX_OVER] = {
 };
 #define NCASES (sizeof OVERRIDES / sizeof OVERRIDES[0])
 
-static void check_file(const char *path) {
+static void check_file(const char *path, size_t k) {
   static dv_scenario base, loaded, with;
   dv_error err = {{0}};
   if (dv_engine_load_scenario(path, NULL, 0, &base, &err)) {
@@ -36,6 +39,7 @@ static void check_file(const char *path) {
     return;
   }
   for (size_t c = 0; c < NCASES; c++) {
+    if (c && c != 1 + k % (NCASES - 1) && c != 1 + (k + (NCASES - 1) / 2) % (NCASES - 1)) continue;
     size_t n = 0;
     while (n < MAX_OVER && OVERRIDES[c][n]) n++;
     dv_error e1 = {{0}}, e2 = {{0}};
@@ -51,6 +55,7 @@ static void check_file(const char *path) {
 }
 
 static void check_dir(const char *dir) {
+  static size_t files; /* over every directory: the cases turn across them */
   DIR *d = opendir(dir);
   CHECK(d, "cannot read %s", dir);
   for (struct dirent *e; d && (e = readdir(d));) {
@@ -58,7 +63,7 @@ static void check_dir(const char *dir) {
     if (len < 5 || strcmp(e->d_name + len - 4, ".ini")) continue;
     char path[2048];
     snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-    check_file(path);
+    check_file(path, files++);
   }
   if (d) closedir(d);
 }
