@@ -3,7 +3,7 @@
 # tier a change is checked with first (docs/tests.md); `./run.sh test` runs both.
 set(DV_SLOW_TESTS
     # end-to-end runs of whole scenes, repeated or under a tool (minutes)
-    valgrind scenario_with memory_budget read_once determinism suite_cli suite_render scene long_run
+    valgrind scenario_with memory_budget determinism suite_cli suite_render scene long_run
     cli/analyze_range cli/verify_converges cli/progress_line
     # end-to-end repeats of code the quick tier runs in shorter tests (as the sanitizer
     # build's list says, tests/CMakeLists.txt): the hoop's horizon and quick cause
@@ -12,8 +12,8 @@ set(DV_SLOW_TESTS
     cli/hoop cli/suite_verify cli/settings_choice_reported cli/settings_choice_cause
     # what the machine has: Node, MPI, an install, a fuzzer built on its own
     adapters_node mpi package fuzz_scenario
-    # time limits and forecasts
-    timeout best_forecast)
+    # time limits: waits that must outlast a limit (20-50 s)
+    timeout)
 
 function(dv_label_test_tiers)
   get_property(tests DIRECTORY PROPERTY TESTS)
