@@ -32,6 +32,8 @@ awk '/^\[disk\]/{print; print "thickness = 0.002"; next} {print}' "$scenario" >"
   { echo "FAIL: the matched reference did not run"; exit 1; }
 "$to_pose" 0.1 0.001 <"$work/ref.csv" >"$work/pose.csv"
 export DISKVAL_ADAPTERS=$adapters DV_REPLAY_POSE=$work/pose.csv
+# the hangs sleep 67.PID s: this run's children, told apart from another checkout's tests
+export DV_REPLAY_SLEEP=67.$$
 
 run() { # run NAME [FAULT]: compare with the replay; sets code, out
   DV_REPLAY_FAULT=${2:-} timeout -k 2 20 "$diskval" compare "$work/thick.ini" --engines "$1" \
@@ -68,8 +70,8 @@ noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 bgchild|stopped answering: exited with status 0
 FAULTS
-for _ in 1 2 3 4 5 6 7 8 9 10; do pgrep -f "sleep 67" >/dev/null || break; sleep 0.2; done # SIGKILL lands
-check '! pgrep -f "sleep 67" >/dev/null' "an adapter's own children outlived it: $(pgrep -af 'sleep 67')"
+for _ in 1 2 3 4 5 6 7 8 9 10; do pgrep -f "sleep $DV_REPLAY_SLEEP" >/dev/null || break; sleep 0.2; done # SIGKILL lands
+check '! pgrep -f "sleep $DV_REPLAY_SLEEP" >/dev/null' "an adapter's own children outlived it: $(pgrep -af "sleep $DV_REPLAY_SLEEP")"
 
 # a run that exceeds its limits: its cause searched over the adapter's knobs, or not (--cause none)
 run replay offset

@@ -13,15 +13,17 @@ while read -r key value rest; do
   [ "$key" = set ] && [ "$value" = timestep ] && dt=$rest
   [ "$key" = start ] && break
 done
+# a hang sleeps DV_REPLAY_SLEEP s (its own value: the test finds its children by it)
+nap=${DV_REPLAY_SLEEP:-67}
 case $DV_REPLAY_FAULT in
   noready) echo "hello"; exit 0 ;;
-  hangstart) sleep 67 ;;
-  bgchild) sleep 67 & exit 0 ;; # exits, its child holding the output open
+  hangstart) sleep "$nap" ;;
+  bgchild) sleep "$nap" & exit 0 ;; # exits, its child holding the output open
 esac
 echo ready
 # mawk reads its input in blocks unless interactive: a row must answer each line
 case $(awk -W version 2>&1 | head -1) in mawk*) interactive="-W interactive" ;; esac
-exec awk $interactive -v file="$DV_REPLAY_POSE" -v fault="$DV_REPLAY_FAULT" -v at="${DV_REPLAY_AT:-0.1}" \
+exec awk $interactive -v file="$DV_REPLAY_POSE" -v fault="$DV_REPLAY_FAULT" -v at="${DV_REPLAY_AT:-0.1}" -v nap="$nap" \
   -v dt="$dt" '
 BEGIN {
   FS = ","
@@ -39,7 +41,7 @@ $1 == "advance" {
   out = out " 1 " int($2 / dt + 0.5)
   if ($2 + 1e-12 >= at) {
     if (fault == "crash") exit 3
-    if (fault == "hang") system("sleep 67")
+    if (fault == "hang") system("sleep " nap)
     if (fault == "garbage") out = "the solver says hello"
     if (fault == "columns") sub(/ [^ ]+$/, "", out)
     if (fault == "extra") out = out " 0"
