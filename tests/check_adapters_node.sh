@@ -23,7 +23,12 @@ fall=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$diskval" engines >"$work/engines"
-grep -q "^mujoco3 .*MuJoCo 3\." "$work/engines" || { echo "SKIP: no Node or adapters"; exit 77; }
+# skipped where Node or the adapters' packages are missing (a checkout without npm ci)
+if ! grep -q "^mujoco3 .*MuJoCo 3\." "$work/engines" ||
+  grep -q "^mujoco3 .*\[not available" "$work/engines"; then
+  echo "SKIP: no Node or adapters' packages: $(grep "^mujoco3" "$work/engines")"
+  exit 77
+fi
 for e in mujoco3 jolt havok rapier cannon; do
   check 'grep -q "^$e " "$work/engines" && ! grep -q "^$e .*not available" "$work/engines"' \
     "$e is listed and available: $(grep "^$e " "$work/engines")"
