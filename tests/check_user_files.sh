@@ -69,6 +69,12 @@ refused "map --out (user's files)" "mine: holds files diskval did not make" \
   "$dv" map --c 0.2..0.4:2 --spin 5..6:2 --duration 0.1 --out mine
 sums mine >mine.after
 check 'diff mine.before mine.after >/dev/null' "--out of the user's: changed: $(diff mine.before mine.after)"
+# a directory holding only a hidden file of the user's is not empty (only
+# diskval's lock and its .diskval-tmp. temporaries are ignored)
+mkdir -p dots && echo mine >dots/.notes
+refused "suite --out (a hidden file of the user's)" "dots: holds files diskval did not make" \
+  "$dv" suite fast.ini --out dots --engines ode
+check '[ "$(ls -A dots)" = .notes ] && [ "$(cat dots/.notes)" = mine ]' "--out holding a hidden file: changed: $(ls -A dots)"
 
 # inside a directory diskval made: a user's directory under a scenario's name,
 # and an input inside the report a run would replace
