@@ -103,6 +103,11 @@ sed 's/^name = replay/name = outside/; /^\[setting.timestep\]/,/^unit/ s/^defaul
   "$adapters/replay/manifest.ini" >"$work/more/outside/manifest.ini"
 sed 's/^name = replay/name = absent/; s/^command = .*/command = no-such-program-here x/' \
   "$adapters/replay/manifest.ini" >"$work/more/absent/manifest.ini"
+# a name of DV_ADAPTER_NAME - 1 = 31 characters fits; of 32 it is refused, never cut
+n31=$(printf 'n%.0s' $(seq 31)) n32=$(printf 'n%.0s' $(seq 32))
+mkdir -p "$work/more/long31" "$work/more/long32"
+sed "s/^name = replay/name = $n31/" "$adapters/replay/manifest.ini" >"$work/more/long31/manifest.ini"
+sed "s/^name = replay/name = $n32/" "$adapters/replay/manifest.ini" >"$work/more/long32/manifest.ini"
 export DISKVAL_ADAPTERS=$adapters:$work/more
 "$diskval" engines >"$work/engines" 2>&1
 code=$?
@@ -112,6 +117,8 @@ check 'grep -q "nochoices/manifest.ini: mode: a choice with no choices = line" "
   grep -q "intstep/manifest.ini: timestep: a role.s setting must be of type real" "$work/engines" &&
   grep -q "outside/manifest.ini: timestep: the default is outside its range" "$work/engines"' \
   "bad settings in manifests named: $(grep manifest.ini "$work/engines")"
+check 'grep -q "^$n31 " "$work/engines" && grep -q "long32/manifest.ini:4: name: too long: $n32\$" "$work/engines" &&
+  ! grep -q "^$n32" "$work/engines"' "names of 31 and 32 characters: $(grep -e long3 -e nnnn "$work/engines")"
 "$diskval" analyze "$work/thick.ini" >/dev/null 2>&1
 check '[ $? -eq 0 ]' "analyze with bad manifests around: exit not 0"
 check 'grep -q "^absent .*not available: no-such-program-here is not on PATH" "$work/engines"' \
