@@ -6,6 +6,8 @@
  *    (same half-thickness): upright above the critical spin, a steady circle
  *    and the early fall; limits from measurement (see LIMITS).
  * 3. C = 1e-6 m r^2: no crash, an outcome.
+ * 4. A fixed-step engine's sample at t is its state after t / timestep steps:
+ *    0.1 s at 1 ms takes 100 steps, not one more or less.
  * Simbody holds the rolling constraint exactly: it cannot lose contact and
  * ends where the matched reference does, at the validity window (the
  * friction it needs passes [engines.matched] friction).
@@ -225,6 +227,18 @@ static void check_small_c(const dv_engine_type *e) {
         "(limit %.3g)", e->name, th, lim_th, path, lim_p);
 }
 
+static void check_step_count(const dv_engine_type *e) {
+  static traj a;
+  dv_scenario sc = base("steps", 0.1);
+  const double y[RED_NSTATE] = {1.0, 0, 3.038043841609511, -15.190219208047555, 0, 0, 0, 0};
+  memcpy(sc.initial, y, sizeof y);
+  dv_scenario_set_number(&sc, e->name, "timestep", 1e-3, NULL);
+  dv_test_run(e, &sc, &a);
+  CHECK(a.status == DV_OK && a.n == 11 && a.stats.steps == 100,
+        "%s: 0.1 s at 1 ms: status %d, %ld samples, %ld steps (want 11, 100)", e->name, a.status,
+        a.n, a.stats.steps);
+}
+
 int main(void) {
   gsl_set_error_handler_off();
   const dv_engine_type *contact[] = {&dv_engine_mujoco, &dv_engine_ode, &dv_engine_bullet,
@@ -233,6 +247,7 @@ int main(void) {
     check_round_trip(contact[i]);
     check_accuracy(contact[i]);
     check_small_c(contact[i]);
+    if (contact[i] != &dv_engine_simbody) check_step_count(contact[i]); /* its steps vary */
   }
   return TEST_RESULT();
 }
