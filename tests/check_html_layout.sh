@@ -19,10 +19,7 @@ if [ $# -ne 1 ]; then
   echo "usage: $0 MAKE_WIDE_SUITE" >&2
   exit 2
 fi
-if ! command -v chromium >/dev/null 2>&1; then
-  echo "SKIP: chromium not installed"
-  exit 77
-fi
+. "$(dirname "$0")/check_chromium.sh"
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 mkdir "$tmp/suite" && "$1" "$tmp/suite" || { echo "FAIL: $1 wrote no suite"; exit 1; }
@@ -42,15 +39,13 @@ status=0
 check() {
   copy="${1%index.html}measure.html"
   sed "s#</body>#$(printf '%s' "$measure" | tr '\n' ' ')</body>#" "$1" >"$copy"
-  HOME="$tmp" timeout -k 5 60 chromium --headless --no-sandbox --disable-gpu --disable-quic \
-    --no-first-run --disable-background-networking --disable-component-update --disable-sync \
-    --user-data-dir="$tmp/profile" --window-size=1366,768 --hide-scrollbars \
-    --virtual-time-budget=5000 --dump-dom "file://$copy" >"$tmp/dom.html" 2>>"$tmp/chromium.log"
+  chromium_headless 1366,768 --hide-scrollbars --virtual-time-budget=5000 --dump-dom \
+    "file://$copy" >"$tmp/dom.html"
   line=$(grep -Eo 'MEASURED scrollWidth=[0-9]+ innerWidth=[0-9]+ tallest_tr=[0-9]+ rows=[0-9]+' \
     "$tmp/dom.html")
   if [ -z "$line" ]; then
     echo "FAIL: $2: Chromium measured nothing"
-    grep -v dbus "$tmp/chromium.log" | tail -n 5
+    chromium_log
     status=1
     return
   fi

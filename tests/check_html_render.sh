@@ -15,10 +15,7 @@ if [ $# -ne 1 ]; then
   echo "usage: $0 OUT_DIR" >&2
   exit 2
 fi
-if ! command -v chromium >/dev/null 2>&1; then
-  echo "SKIP: chromium not installed"
-  exit 77
-fi
+. "$(dirname "$0")/check_chromium.sh"
 out=$(cd "$1" 2>/dev/null && pwd) || { echo "FAIL: no directory $1"; exit 1; }
 if [ ! -f "$out/index.html" ]; then
   echo "FAIL: no $out/index.html"
@@ -32,13 +29,7 @@ file_url() {
   printf 'file://%s' "$(printf '%s' "$1" | sed -e 's/%/%25/g' -e 's/ /%20/g' -e 's/#/%23/g' -e 's/?/%3F/g')"
 }
 
-# run headless Chromium, root-safe and offline, with a fresh profile: chrome ARGS...
-chrome() {
-  profile=$(mktemp -d "$tmp/profile.XXXXXX")
-  HOME="$tmp" timeout -k 5 60 chromium --headless --no-sandbox --disable-gpu --disable-quic \
-    --no-first-run --disable-background-networking --disable-component-update --disable-sync \
-    --user-data-dir="$profile" --window-size=1200,900 "$@" 2>>"$tmp/chromium.log"
-}
+chrome() { chromium_headless 1200,900 "$@"; }
 
 # width and height of a PNG, from its IHDR chunk
 png_size() {
@@ -56,7 +47,7 @@ printf '<!DOCTYPE html><html><head><title>blank</title></head><body></body></htm
 chrome --dump-dom "$url" >"$tmp/dom.html"
 if ! grep -q '<h1>diskval suite' "$tmp/dom.html"; then
   echo "FAIL: Chromium did not load the suite page from $url"
-  grep -v dbus "$tmp/chromium.log" | tail -n 5
+  chromium_log
   exit 1
 fi
 chrome --screenshot="$tmp/shot.png" "$url" >/dev/null
@@ -64,7 +55,7 @@ chrome --screenshot="$tmp/blank.png" "$(file_url "$tmp/blank.html")" >/dev/null
 for png in shot blank; do
   if ! dims=$(png_size "$tmp/$png.png"); then
     echo "FAIL: no $png screenshot (or not a PNG)"
-    grep -v dbus "$tmp/chromium.log" | tail -n 5
+    chromium_log
     exit 1
   fi
   # shellcheck disable=SC2086 # split "W H" on purpose
