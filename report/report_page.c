@@ -49,14 +49,8 @@ int dvs_file_exists(const char *out_dir, const char *dir, const char *name) {
 }
 
 const cJSON *dvs_deciding_limit(const cJSON *eng) {
-  const cJSON *l, *worst = NULL;
-  cJSON_ArrayForEach(l, item(eng, "limits")) {
-    const cJSON *m = item(l, "margin");
-    if (cJSON_IsNumber(m) && isfinite(m->valuedouble) &&
-        (!worst || m->valuedouble > item(worst, "margin")->valuedouble))
-      worst = l;
-  }
-  return worst;
+  const cJSON *name = item(eng, "decided_metric");
+  return cJSON_IsString(name) ? item(item(eng, "limits"), name->valuestring) : NULL;
 }
 
 dvs_class dvs_class_of(const cJSON *eng) {

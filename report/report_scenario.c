@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "dv_reference.h"
+#include "run_decided.h"
 #include "run_judge.h"
 #include "run_meta.h"
 #include "io_file.h"
@@ -187,6 +188,10 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
   cJSON_AddNumberToObject(o, "pointwise_end", r->pointwise_end);
   cJSON_AddStringToObject(o, "decided", r->decided);
+  const int deciding = dv_run_deciding_metric(r);
+  cJSON_AddItemToObject(o, "decided_metric", deciding < 0
+                                                 ? cJSON_CreateNull()
+                                                 : cJSON_CreateString(dv_metric_names[deciding]));
   cJSON_AddStringToObject(o, "decided_why", r->decided_why);
   cJSON_AddItemToObject(o, "horizon", horizon_json(r));
   cJSON_AddStringToObject(o, "cause", r->cause);

@@ -9,6 +9,7 @@
 #     furthest over (value / limit, a value not measured the furthest); on a
 #     pass the nearest its limit; every pass and every "exceeds tolerance"
 #     whose metric is over names one;
+#   - decided_metric, the metric the pages show, is the one named (or null);
 #   - a reference other than the thin disk is named;
 #   - stdout's line under the engine's is decided, word for word;
 #   - decided_why says why the window ends: a hoop with mu 0.02 is not
@@ -103,8 +104,12 @@ for name in names:
             named = (e["pass"] or (e["outcome"] == "exceeds tolerance" and
                                    any(q > 1 for q in over.values())))
             if named: fail(f"{who}: names no metric, value and limit")
+            if e["decided_metric"] is not None:
+                fail(f"{who}: names no metric, decided_metric says {e['decided_metric']}")
             continue
         metric, value, op, limit = m.group(2), number(m.group(3)), m.group(4), number(m.group(5))
+        if e["decided_metric"] != metric:
+            fail(f"{who}: decided_metric (what the pages show) is {e['decided_metric']}")
         if metric not in lims: fail(f"{who}: {metric} is no metric"); continue
         l = lims[metric]
         if not near(value, l["value"]) or not near(limit, l["limit"]):

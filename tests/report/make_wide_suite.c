@@ -74,6 +74,7 @@ static cJSON *engine(int s, int e) {
   cJSON_AddNumberToObject(o, "window_fraction", 0.61);
   cJSON_AddNumberToObject(o, "pointwise_end", 0.266);
   cJSON_AddStringToObject(o, "decided", decided);
+  cJSON_AddStringToObject(o, "decided_metric", "theta_turning_err"); /* the largest margin */
   if (e % 2) cJSON_AddStringToObject(o, "decided_why", decided);
   cJSON *h = cJSON_AddObjectToObject(o, "horizon");
   cJSON_AddStringToObject(h, "why", decided);
