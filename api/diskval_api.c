@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "run_decided.h"
 #include "run_judge.h"
 #include "run_scenario.h"
 #include "run_trajectory.h"
@@ -333,6 +334,10 @@ static void comparison_out(const dv_engine_result *r, diskval_comparison *out) {
   for (size_t i = 0; i < DISKVAL_MAX_METRICS; i++)
     out->limit[i] = i < DV_NMETRICS ? r->tolerance[i] : NAN;
   out->wall_s = r->wall_s;
+  const int deciding = dv_run_deciding_metric(r);
+  out->decided_metric = deciding < 0 ? NULL : dv_metric_names[deciding];
+  snprintf(out->decided_why, sizeof out->decided_why, "%.*s", (int)sizeof out->decided_why - 1,
+           r->decided_why);
 }
 
 int diskval_trajectory_new(const diskval_scenario *sc, const char *name, diskval_trajectory **out,

@@ -89,6 +89,11 @@ typedef struct diskval_comparison {
   diskval_metrics metrics;           /* against its own reference */
   double limit[DISKVAL_MAX_METRICS]; /* each metric's limit, same order */
   double wall_s;                     /* wall-clock time of the engine's run, s */
+  const char *decided_metric;        /* the metric whose limit decided, a name of metrics
+                                      * (static), or NULL when none did (a run that failed,
+                                      * one not judged, an event) */
+  char decided_why[1600];            /* why, in sentences: the reference, where the compared
+                                      * window ends and why, the horizon, the limit's source */
 } diskval_comparison;
 
 /* the library's version, "MAJOR.MINOR.PATCH" (static) */

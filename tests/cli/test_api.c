@@ -122,6 +122,22 @@ static void check_file(const char *dir) {
     CHECK(strncmp(c.decided, "passes: ", 8) == 0 && !strchr(c.decided, '\n'),
           "decided is no one line naming the pass: '%s'", c.decided);
     CHECK(c.metrics.n >= 9 && strcmp(c.metrics.name[0], "theta_max_err") == 0, "metric names");
+    /* the deciding metric is the one decided names, and its share of its limit the largest */
+    char named[64] = "";
+    sscanf(c.decided, "passes: %63s", named);
+    CHECK(c.decided_metric && !strcmp(c.decided_metric, named), "decided_metric %s, decided '%s'",
+          c.decided_metric ? c.decided_metric : "NULL", c.decided);
+    for (size_t m = 0; c.decided_metric && m < c.metrics.n; m++)
+      if (!strcmp(c.metrics.name[m], c.decided_metric))
+        for (size_t k = 0; k < c.metrics.n; k++)
+          CHECK(!(c.metrics.value[k] / c.limit[k] > c.metrics.value[m] / c.limit[m]),
+                "%s is nearer its limit than %s", c.metrics.name[k], c.decided_metric);
+    char limit_of[96];
+    snprintf(limit_of, sizeof limit_of, "The limit of %s", c.decided_metric ? c.decided_metric : "?");
+    CHECK(!strncmp(c.decided_why, "Judged vs thin disk. The compared window runs to", 48) &&
+              strstr(c.decided_why, limit_of),
+          "decided_why does not say the reference, the window and the deciding limit: '%s'",
+          c.decided_why);
     CHECK(c.metrics.value[0] <= c.limit[0], "theta_max_err %g > %g", c.metrics.value[0],
           c.limit[0]);
   }
