@@ -182,7 +182,8 @@ int dv_scenario_check_engine(dv_scenario *sc, size_t i, dv_setting_issue *issue)
  * the reason being in dv_scenario_derived; "" when none */
 const char *dv_scenario_replaced(const dv_scenario *sc, const char *engine);
 
-/* for a section's check: record why, naming the keys derived (NULL-terminated) */
+/* for a section's check: record why, naming the keys derived (NULL-terminated); a why
+ * longer than DV_DERIVED_BYTES - 1 is cut and ends with an ellipsis */
 void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *const *keys,
                              const char *why);
 

@@ -90,7 +90,13 @@ void dv_scenario_set_derived(dv_scenario *sc, const char *engine, const char *co
   if (i < 0) return;
   sc->derived_keys[i] = 0;
   for (size_t k = 0; keys && keys[k]; k++) sc->derived_keys[i] |= key_bit(sc, i, keys[k]);
-  snprintf(sc->derived[i], sizeof sc->derived[i], "%s", why ? why : "");
+  char *text = sc->derived[i];
+  const size_t size = sizeof sc->derived[i];
+  if (snprintf(text, size, "%s", why ? why : "") < (int)size) return;
+  /* too long: cut before a whole character and end with an ellipsis, so a reader sees the cut */
+  size_t end = size - 4;
+  while (end > 0 && ((unsigned char)text[end] & 0xC0) == 0x80) end--;
+  memcpy(text + end, "\xe2\x80\xa6", 4);
 }
 
 /* value v of sp as a scenario file writes it */

@@ -70,6 +70,19 @@ int main(int argc, char **argv) {
     CHECK(dv_engine_half_thickness(dv_engine_find(e), &coin) == H, "%s: compared at h", e);
     check_same_run(dv_engine_find(e), &coin, &keys);
   }
+  /* a reason too long for its buffer is cut before a whole character, with an ellipsis */
+  static char why[3 * DV_DERIVED_BYTES];
+  why[0] = 'x'; /* then thetas, two bytes each: the buffer's last byte falls inside one */
+  for (size_t k = 1; k + 2 < sizeof why; k += 2) memcpy(why + k, "\xce\xb8", 2);
+  const char *const none[] = {NULL};
+  dv_scenario_set_derived(&keys, "ode", none, why);
+  const char *cut = dv_scenario_derived(&keys, "ode");
+  const size_t len = strlen(cut);
+  CHECK(len < DV_DERIVED_BYTES && len + 6 >= DV_DERIVED_BYTES && !strncmp(cut, why, len - 3) &&
+            !strcmp(cut + len - 3, "\xe2\x80\xa6") && (len - 3) % 2 == 1,
+        "a long reason kept %zu bytes, not cut at a character with an ellipsis", len);
+  dv_scenario_set_derived(&keys, "ode", none, "short");
+  CHECK(!strcmp(dv_scenario_derived(&keys, "ode"), "short"), "a short reason changed");
   CHECK(dv_scenario_get(&coin, "matched", "half_thickness") == H, "matched: %g",
         dv_scenario_get(&coin, "matched", "half_thickness"));
   check_same_run(&dv_engine_matched, &coin, &keys);
