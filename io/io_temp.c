@@ -126,6 +126,11 @@ void dv_io_temp_forget(const char *path) {
     if (tracked[i].owner && !strcmp(tracked[i].path, path)) tracked[i].owner = 0;
 }
 
+void dv_io_temp_remove(const char *path) {
+  unlink(path);
+  dv_io_temp_forget(path);
+}
+
 /* rm of a directory of plain files, with async-signal-safe calls only */
 static void remove_flat_dir(const char *path) {
   static char buf[8192];

@@ -43,6 +43,9 @@ int dv_io_remove_tree(const char *path);
  * temporary exists only once it is tracked. -1 with errno on failure */
 int dv_io_temp_make(char *templ, int dir);
 
+/* remove a temporary file dv_io_temp_make made, and forget it */
+void dv_io_temp_remove(const char *path);
+
 /* hold SIGINT, SIGTERM and SIGHUP back (old: the mask to restore), and let
  * them through again: around making a file and tracking it */
 void dv_io_temp_hold_signals(sigset_t *old);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "dv_engine.h"
+#include "io_temp.h"
 #include "props.h"
 
 /* c: within how much of a limit a metric's share of its limit may move under
@@ -62,19 +63,22 @@ static int names(const dv_engine_result *r, dv_metric_id m) {
 
 /* the generator: the scene's text loads to the scene it was checked as */
 static void prop_gen(scene *s) {
-  char text[2048], path[] = "/tmp/diskval-props-XXXXXX";
+  char text[2048], path[4096];
   dv_engine_generate_ini(&s->g, text, sizeof text);
-  const int fd = mkstemp(path);
-  if (fd < 0) return;
+  const char *tmp = getenv("TMPDIR");
+  s->t->checks[PROP_GEN]++;
+  const int fd = dv_io_temp_template(path, sizeof path, tmp && *tmp ? tmp : "/tmp", NULL)
+                     ? -1
+                     : dv_io_temp_make(path, 0);
+  if (fd < 0) return fail(s, PROP_GEN, "cannot make a temporary file for its .ini");
   const ssize_t w = write(fd, text, strlen(text));
   close(fd);
   static dv_scenario back;
   dv_error err = {0};
-  s->t->checks[PROP_GEN]++;
   const int status = w == (ssize_t)strlen(text)
                          ? dv_engine_load_scenario(path, NULL, 0, &back, &err)
                          : dv_fail(&err, DV_ESYSTEM, "cannot write %s", path);
-  unlink(path);
+  dv_io_temp_remove(path);
   if (status) return fail(s, PROP_GEN, "its .ini is refused: %s", err.msg);
   for (int k = 0; k < RED_NSTATE; k++)
     if (back.initial[k] != s->sc.initial[k])
