@@ -18,6 +18,7 @@
 #define DOWN "\xe2\x96\xbc" /* U+25BC: a minimum */
 #define TURN_SCALE 0.7      /* of the default character height */
 #define LABEL_SCALE 0.7
+#define LABEL_BESIDE 0.012 /* a label along a vertical line: its middle this far off, of the range */
 #define STYLE_LIMIT 2   /* pllsty: dashed */
 #define STYLE_HORIZON 3 /* dotted */
 #define STYLE_WINDOW 4  /* dash-dotted */
@@ -118,7 +119,10 @@ static void draw_window_end(const dvp_figure *f, const double r[4], double t_las
   }
   if (!in_time(f->window_end, r, t_last)) return;
   vline(f->window_end, r, STYLE_WINDOW, DVP_COL_FG);
-  plptex(f->window_end, r[2] + 0.05 * (r[3] - r[2]), 0, 1, -0.05, DVP_WINDOW_END);
+  /* beside the line, not on it: on the side with more room */
+  const double side = f->window_end > 0.5 * (r[0] + r[1]) ? -1.0 : 1.0;
+  plptex(f->window_end + side * LABEL_BESIDE * (r[1] - r[0]), r[2] + 0.05 * (r[3] - r[2]), 0, 1,
+         -0.05, DVP_WINDOW_END);
 }
 
 void dvp_draw_marks(const dvp_figure *f, const double r[4], double t_last) {
@@ -132,7 +136,8 @@ void dvp_draw_marks(const dvp_figure *f, const double r[4], double t_last) {
       snprintf(text, sizeof text, "%s horizon %.3g s", c->label, c->horizon);
       vline(c->horizon, r, STYLE_HORIZON, c->colour);
       plschr(0, LABEL_SCALE);
-      plptex(c->horizon, r[3] - 0.03 * (r[3] - r[2]), 0, -1, 0, text); /* down along the line */
+      plptex(c->horizon + LABEL_BESIDE * (r[1] - r[0]), r[3] - 0.03 * (r[3] - r[2]), 0, -1, 0,
+             text); /* down beside the line */
       plschr(0, 1.0);
     }
     if (f->kind == DVP_THETA) draw_turns(c);
