@@ -26,12 +26,17 @@ declare -A allowed=(
   [cli]="cli search report run io exec engines scenario reduced common"
 )
 
-# the layer that holds header h (in the layer's folder or one below it)
-layer_of() {
-  for l in "${!allowed[@]}"; do
-    compgen -G "$l/$1" >/dev/null || compgen -G "$l/*/$1" >/dev/null && { echo "$l"; return; }
+# the layer that holds each file name (in the layer's folder or one below it; the first
+# layer found, as the loops below meet them), and the engine folder of an engine's own files
+declare -A owner_of home_of
+for l in "${!allowed[@]}"; do
+  for p in "$l"/* "$l"/*/*; do
+    [ -f "$p" ] && [ -z "${owner_of[${p##*/}]:-}" ] && owner_of[${p##*/}]=$l
   done
-}
+done
+for p in engines/*/*; do
+  [ -f "$p" ] && [ -z "${home_of[${p##*/}]:-}" ] && home_of[${p##*/}]=$p
+done
 
 # a layer's own files, its subfolders' included
 layer_files() { find "$1" \( -name '*.c' -o -name '*.h' -o -name '*.cc' \) | sort; }
@@ -40,15 +45,15 @@ bad=0
 for layer in "${!allowed[@]}"; do
   for f in $(layer_files "$layer"); do
     while IFS=: read -r line header; do
-      owner=$(layer_of "$header")
+      owner=${owner_of[$header]:-}
       [ -n "$owner" ] || continue # a library's header
       case " ${allowed[$layer]} " in
         *" $owner "*) ;;
         *) echo "$f:$line: includes $owner/$header: $layer may not depend on $owner"; bad=1 ;;
       esac
       # an engine's own headers serve its folder only
-      home=$(compgen -G "engines/*/$header" | head -1)
-      if [ -n "$home" ] && [ "$(dirname "$home")" != "$(dirname "$f")" ]; then
+      home=${home_of[$header]:-}
+      if [ -n "$home" ] && [ "${home%/*}" != "${f%/*}" ]; then
         echo "$f:$line: includes $home: an engine's header outside its folder"; bad=1
       fi
     done < <(grep -n '^#include "' "$f" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
@@ -63,21 +68,25 @@ for e in $engines; do
     { echo "engines/$e/: no table dv_engine_$e (dv_engines.def names it)"; bad=1; }
 done
 # no file outside engines/NAME/ (but the registry, tests and benchmarks) names engine NAME,
-# by its table or by its name in quotes; comments may name engines
+# by its table or by its name in quotes; comments may name engines. One grep a file for
+# every engine at once; each hit then says which engine it named.
+alt=$(echo $engines | tr ' ' '|')
 for layer in "${!allowed[@]}"; do
   for f in $(layer_files "$layer"); do
     case "$(basename "$f")" in test_*) continue ;; esac
-    code=$(sed 's|/\*.*\*/||; s|//.*||; s|^ *\*.*||; s|^ */\*.*||' "$f")
-    for e in $engines; do
+    while IFS=: read -r line hit; do
+      [[ $hit =~ ($alt) ]] && e=${BASH_REMATCH[1]} # the engine named
       case "$f" in engines/"$e"/*) continue ;; esac
-      grep -n "\bdv_engine_$e\b" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine dv_engine_$e)|" |
-        grep . && bad=1
-      # a quoted name: anywhere but in an engine's folder, where "ode" may be a
-      # value of its own (DART's collision detector), not the engine
-      case "$f" in engines/*/*) continue ;; esac
-      grep -n "\"$e[\",]\|[ ,]$e\"" <<<"$code" | sed "s|^|$f:|; s|\$|  (names the engine '$e')|" |
-        grep . && bad=1
-    done
+      case "$hit" in
+        dv_engine_*) echo "$f:$line: $hit  (names the engine dv_engine_$e)"; bad=1 ;;
+        *)
+          # a quoted name: anywhere but in an engine's folder, where "ode" may be a
+          # value of its own (DART's collision detector), not the engine
+          case "$f" in engines/*/*) continue ;; esac
+          echo "$f:$line: $hit  (names the engine '$e')"; bad=1 ;;
+      esac
+    done < <(sed 's|/\*.*\*/||; s|//.*||; s|^ *\*.*||; s|^ */\*.*||' "$f" |
+      grep -noE "\bdv_engine_($alt)\b|\"($alt)[\",]|[ ,]($alt)\"")
   done
 done
 # C++ only inside an engine's own folder (engines/NAME/) and common/dv_format.cc: no other
