@@ -8,7 +8,8 @@
 # built there once (Release); the suite must pass on it unmutated. Then each
 # mutant of the list (default SOURCE_DIR/tests/mutants.txt, format there) is
 # planted alone, rebuilt, and tested with ctest --stop-on-failure, the quick
-# tier first (ctest -L quick) and, only when it survives there, the slow tier
+# tier first (ctest -L quick; in it first the tests that killed earlier mutants)
+# and, only when it survives there, the slow tier
 # (-L slow): "killed" (with the first test that failed and its tier) or
 # "survived"; the slow tier's unmutated run waits for the first mutant that
 # needs it. One that does not build
@@ -194,11 +195,33 @@ fast_first() {
   cp "$tmp/fast-first.txt" "$costs"
 }
 
-ctest_run() { # TIER LOG: one tier of the suite as every run takes it
+ctest_run() { # TIER LOG [ONLY]: one tier of the suite as every run takes it, or of it the
+  # tests matching the regex ONLY, or (ONLY "!REGEX") the others
   [ ! -f "$tmp/baseline-quick.log" ] || fast_first
+  local only=() exclude=$EXCLUDE
+  case ${3:-} in
+    '') ;;
+    '!'*) exclude="$EXCLUDE|${3#!}" ;;
+    *) only=(-R "$3") ;;
+  esac
   # a tier with no test left (--tests, EXCLUDE) passes: nothing there can kill
   step ctest --test-dir build --stop-on-failure -j "$jobs" --timeout "$TEST_TIMEOUT" \
-    --no-tests=ignore --output-on-failure -L "^$1\$" -E "$EXCLUDE" ${tests:+-R "$tests"} >"$2" 2>&1
+    --no-tests=ignore --output-on-failure -L "^$1\$" -E "$exclude" ${tests:+-R "$tests"} \
+    "${only[@]}" >"$2" 2>&1
+}
+
+# the quick tier, the tests that killed earlier mutants first: most mutants of a file
+# fall to the test that killed its neighbour, and so need not wait for the rest
+killers=""
+quick_killed() { # LOG: 0 when the quick tier kills the planted mutant
+  local first="^(${killers#|})\$"
+  if [ -n "$killers" ]; then
+    ctest_run quick "$1" "$first" || return 0
+    mv "$1" "$1.first"
+    ! ctest_run quick "$1" "!$first"
+  else
+    ! ctest_run quick "$1"
+  fi
 }
 
 # the slow tier unmutated, once, when a mutant first survives the quick one
@@ -257,7 +280,7 @@ for i in "${picked[@]}"; do
       result="bad mutant (ORIGINAL found ${where:-?} times)" && bad=$((bad + 1)) && where="?"
     elif ! step cmake --build build -j "$jobs" >"$tmp/build-$log.log" 2>&1; then
       result="did not compile" && broken=$((broken + 1))
-    elif ! ctest_run quick "$tmp/ctest-$log.log"; then
+    elif quick_killed "$tmp/ctest-$log.log"; then
       result="killed" && killed=$((killed + 1)) && by_quick=$((by_quick + 1)) && tier=quick
     elif slow_baseline && ctest_run slow "$tmp/ctest-$log.log"; then
       result="survived" && survived=$((survived + 1))
@@ -267,6 +290,7 @@ for i in "${picked[@]}"; do
     if [ -n "$tier" ]; then
       by=$(first_failure "$tmp/ctest-$log.log")
       [ -n "$by" ] || by="(ctest failed, no test named)"
+      case "|$killers|" in *"|$by|"*) ;; *) [ "${by:0:1}" = "(" ] || killers="$killers|$by" ;; esac
     fi
     cp "$tmp/pristine" "$f" # a fresh mtime: the next build recompiles it
   fi
