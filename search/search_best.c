@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "dv_clock.h"
+#include "dv_phase.h"
 #include "run_limits.h"
 #include "run_progress.h"
 #include "scenario.h"
@@ -225,6 +226,14 @@ static int step_lane(ctx *c, lane *l, dv_error *err) {
   return ok;
 }
 
+/* lane i of n begins its next probe: the progress line counts the lanes of phase name */
+static void phase_lane(const ctx *c, const char *name, size_t i, size_t n, const lane *l) {
+  char subject[64];
+  snprintf(subject, sizeof subject, "%s %s %.4g s", c->sp.engine, l->choice ? l->choice : "step",
+           l->b.h);
+  dv_phase_item(name, i + 1, n, subject);
+}
+
 /* the wall seconds lanes[from..n) have left, forecast */
 static double left(const ctx *c, const lane *lanes, size_t n, size_t from) {
   double total = 0.0;
@@ -376,9 +385,11 @@ static int search(const dv_scenario *sc, const char *engine, double tol, int eve
       lanes[n++] = (lane){choice, bracket_start(start), -1, -1, -1, NAN, NAN, -1, 0};
   out->margin = every_choice ? DV_SEARCH_MARGIN : 1.0;
   for (size_t i = 0; i < n; i++) {
+    phase_lane(&c, "first probe of each choice", i, n, &lanes[i]);
     step_lane(&c, &lanes[i], err);
     tell(&c, left(&c, lanes, n, 0));
   }
+  dv_phase_end("first probe of each choice");
   skip_ties(&c, lanes, n);
   if (out->skipped[0]) dv_run_progress_say("%s", out->skipped);
   char what[96];
@@ -388,8 +399,10 @@ static int search(const dv_scenario *sc, const char *engine, double tol, int eve
   dv_run_progress_say("the rest of the search forecast at %.3g s", forecast_s);
   for (size_t i = 0; i < n; i++)
     while (!lanes[i].skipped && !isnan(lanes[i].b.h)) {
+      phase_lane(&c, "search of choice", i, n, &lanes[i]);
       if (step_lane(&c, &lanes[i], err) != -2) tell(&c, left(&c, lanes, n, i));
     }
+  dv_phase_end("search of choice");
   dv_run_progress_say("the rest of the search took %.3g s (forecast %.3g s)",
                       dv_clock_now() - began, forecast_s);
   if (!every_choice) {

@@ -8,7 +8,7 @@
 #  - what the commands write (CSV, JSON, reports, stdout) is byte-identical
 #    with and without the terminal, apart from the timing fields;
 #  - a run that will take longer than a minute says so once, terminal or not,
-#    and --quiet hides that too; verify's levels too;
+#    and --quiet hides that too; verify's levels too; best's choices;
 #  - every line says what runs and the time left: a phase with its count
 #    ("settings probe 3/8 (mujoco ...)", "verification level 2/4", "attribution
 #    9/12", a pool's "comparison run 2/6") and/or the run's role ("reference",
@@ -37,7 +37,7 @@ two=(--engines mujoco,ode)
 # n constant within a phase (its name and the engine its subject starts with,
 # while k rises),
 # or a role; and says the time left
-phases='settings probe|verification level|attribution|comparison run|scenario|reference point|point|cell|pair'
+phases='settings probe|verification level|attribution|comparison run|scenario|reference point|point|cell|pair|first probe of each choice|search of choice'
 roles='reference|nudged references|engine run'
 well_formed() {
   local bad
@@ -146,6 +146,12 @@ same tty.ver file.ver "verify stdout"
 on_tty att.log "'$dv' attribute '$sc' --engine mujoco > /dev/null"
 has_line att.log 'attribution [0-9]+/[0-9]+ [(]mujoco [a-z]' "attribute"
 well_formed att.log "attribute"
+
+# best: its choices counted, their first probes then each one's search (ODE's two
+# steppers at 1 s: about 3 s)
+on_tty best.log "'$dv' best '$sc' --engine ode --theta-tol 1e-3 > /dev/null"
+has_line best.log 'first probe of each choice [0-9]+/2 [(]ode [a-z]+ [0-9.e-]+ s[)]: engine run  ' "best"
+well_formed best.log "best"
 
 # suite: counted by the parent; the tasks' own processes draw nothing
 mkdir s
