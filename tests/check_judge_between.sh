@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# check_judge_between.sh DISKVAL BETWEEN_ROWS SCENARIO: judge's allowance for rows between the
+# sample times. The reference's own run of SCENARIO every 1 ms, judged at its output_dt:
+#   - honest, it agrees;
+#   - its rows between the samples moved off the Akima interpolant to 0.999 T + 1.5 |a - b|
+#     (T: half the theta limit, run_judge.h; a, b: Akima and Steffen, by between_rows with
+#     GSL): inside the allowance of 2 |a - b| beyond T, it still agrees;
+#   - moved to T + 2.5 |a - b|: outside it, refused, "disagrees with the rows at them".
+# The scene is cut to 2 s and sampled every 0.02 s.
+set -u
+. "$(dirname "$0")/check_lib.sh"
+export LC_ALL=C
+dv=${1:?usage: check_judge_between.sh DISKVAL BETWEEN_ROWS SCENARIO}
+between=${2:?usage}
+sc=${3:?usage}
+command -v jq >/dev/null || { echo "SKIP: jq not installed"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 2
+name=$(sed -n 's/^name *= *//p' "$sc" | head -1)
+dt=0.02
+# the energy and invariants, from rates derived through the moved rows, are lifted: the
+# allowance alone decides here (judge_hostile judges a file's energy)
+short=(--set scenario.duration=2 --set scenario.output_dt=$dt --set tolerance.energy_drift=100
+  --set tolerance.invariant_drift=100)
+"$dv" simulate "$sc" --set scenario.duration=2 --set scenario.output_dt=0.001 --engine reduced \
+  --out dense.csv --quiet 2>/dev/null
+cut -d, -f1-6 dense.csv >honest.csv
+"$dv" judge "$sc" "${short[@]}" honest.csv --out out_honest --quiet >honest.out 2>honest.err
+code=$?
+check '[ $code -eq 0 ]' "honest: exit $code: $(cat honest.err)"
+limit=$(jq -r ".engines.honest.limits.theta_max_err.limit" "out_honest/$name/report.json")
+T=$(awk -v l="$limit" 'BEGIN { printf "%.17g", 0.5 * l }') # DV_JUDGE_BETWEEN_SHARE
+"$between" $dt "$(awk -v t="$T" 'BEGIN { printf "%.17g", 0.999 * t }')" 1.5 <dense.csv >inside.csv
+"$between" $dt "$T" 2.5 <dense.csv >outside.csv
+"$dv" judge "$sc" "${short[@]}" inside.csv --out out_inside --quiet >inside.out 2>inside.err
+code=$?
+check '[ $code -eq 0 ]' "rows inside the allowance: exit $code: $(cat inside.err)"
+"$dv" judge "$sc" "${short[@]}" outside.csv --out out_outside --quiet >outside.out 2>outside.err
+code=$?
+check '[ $code -eq 2 ] && grep -q "disagrees with the rows at them" outside.err' \
+  "rows outside the allowance: exit $code: $(cat outside.err)"
+[ $fail -eq 0 ] && echo "rows between samples: inside the allowance agree, outside refused (T $T rad)"
+exit $fail
