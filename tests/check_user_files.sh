@@ -69,6 +69,12 @@ refused "map --out (user's files)" "mine: holds files diskval did not make" \
   "$dv" map --c 0.2..0.4:2 --spin 5..6:2 --duration 0.1 --out mine
 sums mine >mine.after
 check 'diff mine.before mine.after >/dev/null' "--out of the user's: changed: $(diff mine.before mine.after)"
+# a mark that only starts like diskval's ("diskval output ...") is the user's file, not ours
+mkdir -p marked && echo 'diskval output of my own' >marked/.diskval-report && echo mine >marked/notes.txt
+refused "suite --out (a mark of the user's)" "marked: holds files diskval did not make" \
+  "$dv" suite fast.ini --out marked --engines ode
+check '[ "$(cat marked/notes.txt)" = mine ] && [ "$(ls -A marked | wc -l)" -eq 2 ]' \
+  "--out with a mark of the user's: changed: $(ls -A marked)"
 # a directory holding only a hidden file of the user's is not empty (only
 # diskval's lock and its .diskval-tmp. temporaries are ignored)
 mkdir -p dots && echo mine >dots/.notes
