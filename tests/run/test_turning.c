@@ -5,7 +5,8 @@
  * amplitude shows as the turning points; a run that stops nutating has
  * lost its periods; steady runs and contact-sized noise have no turns. The
  * lag of a longer period ends pointwise judging at the turn before it
- * reaches a given time (dv_run_turning_lag). */
+ * reaches a given time (dv_run_turning_lag). Of two maxima a reversal too small to
+ * count lies between, the higher is kept. */
 #include <math.h>
 #include <string.h>
 
@@ -166,8 +167,33 @@ int main(void) {
     CHECK_NEAR(v[0], 0.02, 1e-4, "a drift that settles: its maximum, at any window's end");
   }
 
+  /* two maxima 5e-4 rad apart with a dip of 5e-4 rad between them (under
+   * DV_TURNING_MIN_SWING: no turn): theta = 1 - c (t-1)^2 (t-2)^2 + d t. One
+   * maximum is kept, the more extreme (the second), located by a scan of 1e6 points */
+  dv_traj twin = {0};
+  const double c = 0.008, d = 0.0005;
+  for (double t = 0.0; t <= 3.0 + 1e-9; t += DT) {
+    dv_sample s;
+    memset(&s, 0, sizeof s);
+    s.t = t;
+    s.y[RED_TH] = 1.0 - c * (t - 1) * (t - 1) * (t - 2) * (t - 2) + d * t;
+    s.y[RED_VTH] = -2 * c * (t - 1) * (t - 2) * (2 * t - 3) + d;
+    dv_run_traj_push(&twin, &s);
+  }
+  double highest = -INFINITY;
+  for (int i = 0; i <= 1000000; i++) {
+    const double t = 3.0 * i / 1e6;
+    highest = fmax(highest, 1.0 - c * (t - 1) * (t - 1) * (t - 2) * (t - 2) + d * t);
+  }
+  static double tt[1000], th[1000]; /* room for a turn a sample (601) */
+  static int kinds[1000];
+  const size_t nturns = dv_run_turning_points(&twin, INFINITY, tt, th, kinds);
+  CHECK(nturns == 1 && kinds[0] == 1, "twin maxima: %zu turns, the first of kind %d", nturns,
+        nturns ? kinds[0] : 0);
+  if (nturns) CHECK_NEAR(th[0], highest, 1e-7, "twin maxima: the more extreme kept");
+
   dv_traj *all[] = {&ref,    &slow,        &decaying, &steady, &noisy,
-                    &rising, &rising_fast, &early,    &later,  &settles};
-  for (size_t i = 0; i < 10; i++) dv_run_traj_free(all[i]);
+                    &rising, &rising_fast, &early,    &later,  &settles, &twin};
+  for (size_t i = 0; i < 11; i++) dv_run_traj_free(all[i]);
   return TEST_RESULT();
 }
