@@ -14,6 +14,8 @@
 #   - stdout's line under the engine's is decided, word for word;
 #   - decided_why says why the window ends: a hoop with mu 0.02 is not
 #     judged, "rolling needs more friction than mu = 0.02" in both;
+#   - a turning point early or late is said so as the samples show it (the
+#     engine's and the reference's sampled extreme of that ordinal, within 10 ms);
 #   - a wobbling hoop with a coarse ODE step fails on a turning point, named
 #     with its ordinal and kind (measured: "its 7th maximum, which the
 #     reference does not make", theta_turning_err 0.58 > 0.01; 8 s of it,
@@ -61,12 +63,14 @@ compare wrong "$sc/steady_circle.ini" --engines mujoco,ode --set scenario.durati
 compare cylinder "$sc/steady_circle_cylinder.ini" --engines mujoco --set scenario.duration=1
 compare hoop hoop.ini --engines mujoco
 compare wobble wobble.ini --engines ode --set engines.ode.timestep=0.004
+sed -e 's/^name = wobble/name = lagging/' -e 's/^duration = 8/duration = 3/' wobble.ini >lagging.ini
+compare lagging lagging.ini --engines ode --set engines.ode.timestep=0.001
 
-python3 - out circle wrong cylinder hoop wobble <<'PY'
+python3 - out circle wrong cylinder hoop wobble lagging <<'PY'
 import json, math, re, sys
 out, names = sys.argv[1], sys.argv[2:]
 scenes = {"circle": "steady_circle", "wrong": "wrong", "cylinder": "steady_circle_cylinder",
-          "hoop": "hoop", "wobble": "wobble"}
+          "hoop": "hoop", "wobble": "wobble", "lagging": "lagging"}
 bad = []
 def fail(what):
     bad.append(what)
@@ -133,4 +137,21 @@ check 'jq -r .engines.mujoco.decided_why out/hoop/report.json | grep -q "rolling
 check 'grep -Eq "^    fails: theta_turning_err [0-9.]+ > 0.01 \(.*[0-9](st|nd|rd|th) (maximum|minimum)" wobble.out' \
   "wobble, coarse ODE step: the turning point is not named: $(cat wobble.out)"
 check 'grep -q "^    passes: .*, vs cylinder h 2 mm$" cylinder.out' "cylinder: $(cat cylinder.out)"
+# a turning point early or late: the engine's and the reference's own samples say which
+# (measured: ODE at 1 ms, its 1st maximum at 1.6 s, the reference's at 1.74 s: 140 ms early)
+extreme() { # CSV KIND ORDINAL: the time of the ORDINAL-th sampled maximum (KIND 1) or minimum (-1)
+  awk -F, -v k="$2" -v o="$3" 'NR > 1 { t[n] = $1; th[n++] = k * $2 }
+    END { for (i = 1; i < n - 1; i++) if (th[i] > th[i-1] && th[i] >= th[i+1] && ++m == o) { print t[i]; exit } }' "$1"
+}
+said=$(sed -nE 's/.*\(([0-9]+)(st|nd|rd|th) (maximum|minimum) ([0-9.e+]+) ms (early|late)\)$/\1 \3 \4 \5/p' lagging.out)
+if [ -z "$said" ]; then
+  check false "lagging: no early or late turning point decided: $(cat lagging.out)"
+else
+  read -r ordinal kind ms word <<<"$said"
+  k=1 && [ "$kind" = minimum ] && k=-1
+  te=$(extreme out/lagging/ode.csv $k "$ordinal") tr=$(extreme out/lagging/reduced.csv $k "$ordinal")
+  check 'awk -v te="$te" -v tr="$tr" -v ms="$ms" -v w="$word" "BEGIN {
+      lag = 1e3 * (te - tr); exit !((w == \"early\") == (lag < 0) && (lag < 0 ? -lag : lag) - ms <= 10) }"' \
+    "lagging: decided says $ordinal $kind $ms ms $word; the samples: the engine's at $te s, the reference's at $tr s"
+fi
 exit $fail
