@@ -3,13 +3,15 @@
  * NaN value is over (what could not be measured never passes); a NaN limit is
  * no rule (not judged). A verdict that says the run failed is exactly one of
  * diverged, lost contact, error, invalid, missing. The validity window ends
- * where the contact force's tangential magnitude leaves the friction cone. */
+ * where the contact force's tangential magnitude leaves the friction cone. The
+ * rate scale (the slip limit's speed) is the fastest of the rates that set it. */
 #include <math.h>
 #include <string.h>
 
 #include "dv_engine.h"
 #include "dv_reference.h"
 #include "dv_test.h"
+#include "run_limits.h"
 #include "run_verdict.h"
 
 /* the validity window ends where the contact force's tangential magnitude
@@ -33,7 +35,21 @@ static void check_friction_cone(void) {
   CHECK(isinf(dv_reference_valid_until(&sc, s, 3)), "inside the cone throughout");
 }
 
+/* the rate scale is the fastest of the spin, the heading rate and sqrt(g / r) */
+static void check_rate_scale(void) {
+  dv_scenario sc;
+  dv_engine_init_scenario(&sc);
+  sc.disk.r = 0.1, sc.disk.g = 9.81; /* sqrt(g / r) = 9.9 rad/s */
+  const double rates[][2] = {{50, 1}, {-1, 50}, {1, -50}, {2, 3}}; /* phi_dot, psi_dot */
+  const double want[] = {50, 50, 50, sqrt(98.1)};
+  for (int i = 0; i < 4; i++) {
+    sc.initial[RED_VPH] = rates[i][0], sc.initial[RED_VPS] = rates[i][1];
+    CHECK_NEAR(dv_run_rate_scale(&sc), want[i], 1e-12, "the rate scale");
+  }
+}
+
 int main(void) {
+  check_rate_scale();
   static const struct {
     double value, limit;
     dv_limit_check want;
