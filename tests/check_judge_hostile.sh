@@ -5,7 +5,8 @@
 #   - the pose 1 m above the ground: lost contact (run_trajcheck.h: the
 #     linked engines' limits, engine_watch.h); so is the pose lifted by twice
 #     the limit (0.01 radii: 2 mm on this 0.1 m disk, under 0.01 m), and
-#     lifted by half the limit it agrees;
+#     lifted by half the limit it agrees, and so does a blip of 1.5 times the
+#     limit for three rows (0.02 s, under the 0.05 s allowed);
 #   - the pose 0.5 m into the ground: diverged, "sank";
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
@@ -49,6 +50,7 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 += 1 } 1' pose.csv >hover.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.02 -v r="$r" 'NR > 1 { $4 += d * r } 1' pose.csv >lifted.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.005 -v r="$r" 'NR > 1 { $4 += d * r } 1' pose.csv >raised.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.015 -v r="$r" 'NR >= 12 && NR <= 14 { $4 += d * r } 1' pose.csv >blip.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
@@ -114,6 +116,7 @@ judge pose 0 agrees ""
 judge hover 1 "lost contact" "above the ground for"
 judge lifted 1 "lost contact" "above the ground for"
 judge raised 0 agrees ""
+judge blip 0 agrees ""
 judge sunk 1 diverged "sank 0.5 m into the ground"
 judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
