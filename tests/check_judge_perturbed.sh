@@ -12,7 +12,8 @@
 #   - theta + 0.05 rad after t = 1 s: theta_max_err = 0.05001 > 0.01 (the shift and MuJoCo's own 1e-5);
 #   - the path drifting by 5% of the distance rolled (x and contact_x +
 #     0.05 * 1.519 m/s * t): path_max_err over its limit (1% of the rolled);
-#   - stopped at half the duration: not judged, "the file ends at t = 1.5 s";
+#   - stopped at half the duration: not judged, "the file ends at t = 1.5 s"; so is
+#     one two rows short of the end, "the file ends at t = 2.98 s";
 #   - lying down early (theta falling 2 rad/s from t = 2 s to the limit
 #     0.01 rad): ended by event, "lies down where the reference does not".
 # Re-measure: the test prints every measured number (ctest -V -R NAME).
@@ -38,6 +39,7 @@ cut -d, -f1,2,7-12 run.csv >no_pose.csv
 awk -F, -v OFS=, 'NR > 1 && $1 > 1 { $2 += 0.05 } 1' no_pose.csv >theta_shift.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { d = 0.05 * 1.519 * $1; $5 += d; $7 += d } 1' run.csv >path_drift.csv
 awk -F, 'NR == 1 || $1 <= 1.5' run.csv >half.csv
+head -n -2 run.csv >two_short.csv # its last two rows (0.02 s) left out
 awk -F, -v OFS=, 'NR == 1 { print; next }
   $1 > 2 { $2 = 1 - 2 * ($1 - 2); if ($2 <= 0.01) { $2 = 0.01; print; exit } } { print }' \
   no_pose.csv >lies_down.csv
@@ -65,5 +67,6 @@ done
 judge theta_shift 1 "exceeds tolerance" "theta_max_err = 0.050"
 judge path_drift 1 "exceeds tolerance" "path_max_err = "
 judge half 1 "not judged" "the file ends at t = 1.5 s"
+judge two_short 1 "not judged" "the file ends at t = 2.98 s"
 judge lies_down 1 "ended by event" "lies down where the reference does not"
 exit $fail
