@@ -122,6 +122,15 @@ int main(int argc, char **argv) {
         dv_scenario_derived(&probed, "mujoco"));
   CHECK(strcmp(dv_scenario_derived(&probed, "mujoco"), dv_scenario_derived(&given, "mujoco")),
         "the thin disk given took the coin's choice: '%s'", dv_scenario_derived(&given, "mujoco"));
+  /* nor is a choice remembered for another start: the same theta on a tighter circle (the
+   * rates differ) is probed for itself, its distance rolled in its words */
+  static dv_scenario tighter;
+  const char *tighter_sets[] = {"scenario.duration=0.2", "disk.thickness=0.004",
+                                "initial.steady_circle_radius=0.3"};
+  if (load(path, tighter_sets, 3, &tighter)) return TEST_RESULT();
+  CHECK(tighter.initial[RED_TH] == probed.initial[RED_TH] &&
+            strcmp(dv_scenario_derived(&probed, "mujoco"), dv_scenario_derived(&tighter, "mujoco")),
+        "another start took the coin's choice: '%s'", dv_scenario_derived(&tighter, "mujoco"));
 
   /* a scenario built in code takes the disk's thickness at run time too */
   dv_scenario code = thin;
