@@ -6,7 +6,8 @@
 #     linked engines' limits, engine_watch.h); so is the pose lifted by twice
 #     the limit (0.01 radii: 2 mm on this 0.1 m disk, under 0.01 m), and
 #     lifted by half the limit it agrees, and so does a blip of 1.5 times the
-#     limit for three rows (0.02 s, under the 0.05 s allowed);
+#     limit for three rows (0.02 s, under the 0.05 s allowed); quaternions 9e-7
+#     longer than unit (the reader takes 1e-6) judge as the unit pose, to 1e-12;
 #   - the pose 0.5 m into the ground: diverged, "sank";
 #   - x, y 100 m from the contact point, or phi garbage: refused, "the
 #     contact point ... the columns disagree" (exit 2);
@@ -51,6 +52,8 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 -= 0.5 } 1' pose.csv >sunk.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.02 -v r="$r" 'NR > 1 { $4 += d * r } 1' pose.csv >lifted.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.005 -v r="$r" 'NR > 1 { $4 += d * r } 1' pose.csv >raised.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g -v d=0.015 -v r="$r" 'NR >= 12 && NR <= 14 { $4 += d * r } 1' pose.csv >blip.csv
+# every quaternion 9e-7 longer than unit (inside the 1e-6 the reader takes) judges as the pose
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { for (k = 5; k <= 8; k++) $k *= 1 + 9e-7 } 1' pose.csv >scaled.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $5 += 100; $6 += 100 } 1' run.csv >far.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $3 = 7 * $1 + 1 } 1' run.csv >phi_garbage.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 2 { $4 = 0 } 1' run.csv >psi_still.csv
@@ -117,6 +120,12 @@ judge hover 1 "lost contact" "above the ground for"
 judge lifted 1 "lost contact" "above the ground for"
 judge raised 0 agrees ""
 judge blip 0 agrees ""
+judge scaled 0 agrees ""
+for m in theta_max_err path_max_err; do
+  a=$(jq -r ".engines.pose.$m" "out_pose/$name/report.json") b=$(jq -r ".engines.scaled.$m" "out_scaled/$name/report.json")
+  check 'awk -v a="$a" -v b="$b" "BEGIN { exit !(a - b <= 1e-12 && b - a <= 1e-12) }"' \
+    "quaternions 9e-7 long: $m $b, the unit pose's $a"
+done
 judge sunk 1 diverged "sank 0.5 m into the ground"
 judge far 2 "" "the columns disagree"
 judge phi_garbage 2 "" "the columns disagree"
