@@ -13,7 +13,8 @@
 #   - the path drifting by 5% of the distance rolled (x and contact_x +
 #     0.05 * 1.519 m/s * t): path_max_err over its limit (1% of the rolled);
 #   - stopped at half the duration: not judged, "the file ends at t = 1.5 s"; so is
-#     one two rows short of the end, "the file ends at t = 2.98 s";
+#     one two rows short of the end, "the file ends at t = 2.98 s"; one that ends
+#     past the thin reference's validity window (small_c, 0.3 s of 0.5 s) agrees;
 #   - lying down early (theta falling 2 rad/s from t = 2 s to the limit
 #     0.01 rad): ended by event, "lies down where the reference does not".
 # Re-measure: the test prints every measured number (ctest -V -R NAME).
@@ -68,5 +69,15 @@ judge theta_shift 1 "exceeds tolerance" "theta_max_err = 0.050"
 judge path_drift 1 "exceeds tolerance" "path_max_err = "
 judge half 1 "not judged" "the file ends at t = 1.5 s"
 judge two_short 1 "not judged" "the file ends at t = 2.98 s"
+# a file that stops after the thin reference's validity window ends (small_c: rolling needs
+# more friction than 2 from t = 0.25 s), before the scene does (0.5 s), covers all that is
+# judged: it agrees, not "the file ends at"
+small=$(dirname "$sc")/small_c.ini
+"$dv" simulate "$small" --engine ode --out small_ode.csv --quiet 2>/dev/null
+awk -F, 'NR == 1 || $1 <= 0.3 + 1e-9' small_ode.csv >small_cut.csv
+"$dv" judge "$small" small_cut.csv --out out_small --quiet >small.out 2>&1
+code=$?
+check '[ $code -eq 0 ] && [ "$(jq -r .engines.small_cut.outcome out_small/small_c/report.json)" = agrees ]' \
+  "a file past the validity window, short of the scene: exit $code: $(cat small.out)"
 judge lies_down 1 "ended by event" "lies down where the reference does not"
 exit $fail
