@@ -97,6 +97,8 @@ static const reach TABLE[] = {
     {"bullet", "body", "rigidbody", NULL, DIFFERS, NULL},
     {"bullet", "solver_iterations", "1", "engines.bullet.solver=si", DIFFERS, NULL},
     {"bullet", "friction", "0.05", NULL, MORE_SLIP, NULL},
+    /* the rigid body takes it by its own path (the base runs the multibody) */
+    {"bullet", "friction", "0.05", "engines.bullet.body=rigidbody", MORE_SLIP, NULL},
     {"bullet", "cfm", "1e-3", NULL, DIFFERS, NULL},
     {"bullet", "gyroscopic", "off", NULL, DIFFERS, NULL},
     {"bullet", "geom", "cylinder", NULL, DIFFERS, NULL},
