@@ -68,6 +68,10 @@ int main(void) {
   CHECK_NEAR(v[0], 0.0, 1e-9, "a longer period moves no turning point");
   CHECK_NEAR(v[1], 0.02, 1e-8, "the period is 0.02 s longer");
   CHECK_NEAR(v[2], 0.7 * 0.02, 1e-8, "the heading advances 0.7 rad/s x 0.02 s more");
+  /* the other way round: an engine 0.02 s faster errs as much */
+  dv_run_turning_compare(&ref, &slow, INFINITY, v);
+  CHECK_NEAR(v[1], 0.02, 1e-8, "the period is 0.02 s shorter");
+  CHECK_NEAR(v[2], 0.7 * 0.02, 1e-8, "the heading advances 0.7 rad/s x 0.02 s less");
 
   /* turning points are paired by count: the k-th minimum at (k - 1/2) T
    * has amplitude a - 0.001 t; the largest difference is the last one inside 8 s */
