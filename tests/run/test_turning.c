@@ -120,6 +120,10 @@ int main(void) {
   double lag;
   CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.025, &lag), T0, 1e-7, "to the 2nd turn");
   CHECK_NEAR(lag, 0.03, 1e-8, "the third turn lags 0.03 s");
+  /* an engine early by as much ends it as soon (the reference's turns every (T0 + 0.02) / 2) */
+  CHECK_NEAR(dv_run_turning_lag(&ref, &slow, INFINITY, 0.025, &lag), T0 + 0.02, 1e-7,
+             "early: to the 2nd turn");
+  CHECK_NEAR(lag, -0.03, 1e-8, "the third turn comes 0.03 s early");
   CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.005, &lag), T0 / 2, 1e-7, "the first");
   CHECK(isinf(dv_run_turning_lag(&slow, &ref, INFINITY, 1.0, &lag)) && lag == 0.0, "no lag of 1 s");
   CHECK(isinf(dv_run_turning_lag(&steady, &ref, INFINITY, 0.005, &lag)), "an engine without turns");
