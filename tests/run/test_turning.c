@@ -68,6 +68,17 @@ int main(void) {
   CHECK_NEAR(v[0], 0.0, 1e-9, "a longer period moves no turning point");
   CHECK_NEAR(v[1], 0.02, 1e-8, "the period is 0.02 s longer");
   CHECK_NEAR(v[2], 0.7 * 0.02, 1e-8, "the heading advances 0.7 rad/s x 0.02 s more");
+  /* phi wrapped to (-pi, pi], as a file may give it (0.7 rad/s passes pi at 4.5 s): the same */
+  dv_traj wrapped = {0};
+  for (size_t i = 0; i < slow.n; i++) {
+    dv_sample s = slow.s[i];
+    s.y[RED_PH] = remainder(s.y[RED_PH], 2 * M_PI);
+    dv_run_traj_push(&wrapped, &s);
+  }
+  dv_run_turning_compare(&wrapped, &ref, INFINITY, v);
+  CHECK_NEAR(v[2], 0.7 * 0.02, 1e-8, "a wrapped heading advances as the unwrapped");
+  dv_run_traj_free(&wrapped);
+
   /* the other way round: an engine 0.02 s faster errs as much */
   dv_run_turning_compare(&ref, &slow, INFINITY, v);
   CHECK_NEAR(v[1], 0.02, 1e-8, "the period is 0.02 s shorter");
