@@ -79,6 +79,24 @@ int main(void) {
   CHECK_NEAR(v[2], 0.7 * 0.02, 1e-8, "a wrapped heading advances as the unwrapped");
   dv_run_traj_free(&wrapped);
 
+  /* one turn of each kind, then held at the maximum: the nutation is lost (no period) */
+  dv_traj once = {0};
+  const double kk = 2 * M_PI / T0;
+  for (double t = 0.0; t <= DURATION + 1e-9; t += DT) {
+    dv_sample s;
+    memset(&s, 0, sizeof s);
+    s.t = t;
+    s.y[RED_TH] = t < T0 ? 0.9 + 0.5 * cos(kk * t) : 1.4;
+    s.y[RED_VTH] = t < T0 ? -0.5 * kk * sin(kk * t) : 0.0;
+    s.y[RED_PH] = 0.7 * t;
+    s.y[RED_VPH] = 0.7;
+    dv_run_traj_push(&once, &s);
+  }
+  dv_run_turning_compare(&once, &ref, INFINITY, v);
+  CHECK(isinf(v[1]) && isinf(v[2]), "one turn of each kind: period %g, heading %g, not lost", v[1],
+        v[2]);
+  dv_run_traj_free(&once);
+
   /* the other way round: an engine 0.02 s faster errs as much */
   dv_run_turning_compare(&ref, &slow, INFINITY, v);
   CHECK_NEAR(v[1], 0.02, 1e-8, "the period is 0.02 s shorter");
