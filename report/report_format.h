@@ -28,10 +28,11 @@
  *         "theta_max_err", "theta_rms_err", "path_max_err", "path_rms_err",
  *         "path_hausdorff", "energy_drift", "slip_max", "theta_extrema_err",
  *         "invariant_drift", "theta_turning_err", "nutation_period_err",
- *         "heading_period_err", "phase_err" (dv_metric_names):  numbers (null: not
- *                                  measurable, or infinite), against the
- *                                  geometry-matched reference (the thin disk
- *                                  for a thin or ellipsoid stand-in),
+ *         "heading_period_err", "phase_err", "turning_lag" (dv_metric_names):
+ *                                  numbers (null: not measurable, or
+ *                                  infinite) over the whole compared window,
+ *                                  against the reference of the scene's body
+ *                                  (an engine of another body: not judged),
  *         "wall_per_sim_s": s per simulated s; null for a run shorter than
  *                           one output_dt,
  *         "wall_s": s, the run's wall-clock time (the timing fields: wall_*),
@@ -40,16 +41,21 @@
  *                    |"ended by event"|"error"|"not judged"|"outside validity",
  *         "detail": TEXT,
  *         "pass": bool,
- *         "failures": [TEXT, ...]   "SCENARIO: ENGINE: METRIC = V > LIMIT",
+ *         "failures": [TEXT, ...]   "SCENARIO: ENGINE: METRIC = V UNIT > LIMIT UNIT",
  *         "tolerances": {METRIC: limit, ...},   every metric has one
  *         "limits": {METRIC: {"value", "limit", "margin": value / limit,
- *                             "from": "[tolerance.ENGINE]" | "default: ..."}},
+ *                             "from": "[tolerance.ENGINE]" | "default: ...",
+ *                             "spread": what the shadow of the engine's early
+ *                               error excused of value (limit is the scene's
+ *                               limit plus it: run_shadow.h),
+ *                             "unit": "rad" | "m" | "s" | ...}},
  *         "window_end": s,          end of the compared window
  *         "window_fraction": x,     of the reference's run it covers
  *         "pointwise_end": s,       the pointwise metrics (theta_max_err,
- *                                   theta_rms_err, path_max_err, path_rms_err)
- *                                   cover the window to here: the engine's
- *                                   horizon (run_horizon.h)
+ *                                   theta_rms_err, path_max_err, path_rms_err,
+ *                                   phase_err) are judged to here: where the
+ *                                   shadow of its early error reaches the
+ *                                   motion's size, else the window's end
  *         "decided": TEXT,          what decided the verdict, one line of at
  *                                   most DV_DECIDED_MAX characters starting
  *                                   "passes", "fails" or "not judged"

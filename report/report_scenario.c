@@ -183,6 +183,8 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
     cJSON_AddItemToObject(l, "limit", dv_io_json_number(r->tolerance[m]));
     cJSON_AddItemToObject(l, "margin", dv_io_json_number(r->vs_ref.value[m] / r->tolerance[m]));
     cJSON_AddStringToObject(l, "from", r->limit_why[m]);
+    cJSON_AddNumberToObject(l, "spread", r->excused[m]);
+    cJSON_AddStringToObject(l, "unit", dv_metric_units[m]);
   }
   cJSON_AddNumberToObject(o, "window_end", r->vs_ref.t_window);
   cJSON_AddNumberToObject(o, "window_fraction", r->window_fraction);
@@ -373,12 +375,23 @@ static int same_run(const dv_comparison *c, size_t k, size_t j) {
          c->r[k - 1].engine == dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
 }
 
+/* s appended to the plots' series of in; an error when they are full */
+static int add_series(dv_plot_input *in, dv_plot_series s, const char *scenario, dv_error *err) {
+  if (in->nseries >= DV_PLOT_MAX_SERIES)
+    return dv_fail(err, DV_EINPUT, "%s: %s: more than %d series to plot", scenario, s.label,
+                   DV_PLOT_MAX_SERIES);
+  in->series[in->nseries++] = s;
+  return DV_OK;
+}
+
 /* the end of r's compared window, -INFINITY when it compared nothing past the start */
 static double compared_until(const dv_engine_result *r) {
   return r->vs_ref.n_window >= 2 ? r->vs_ref.t_window : -INFINITY;
 }
 
 int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *err) {
+  _Static_assert(DV_MAX_ENGINES + 1 <= DV_PLOT_MAX_SERIES,
+                 "the plots hold every engine and the matched reference");
   char name[96];
   for (size_t k = 0; k <= 2 * c->n; k++) /* one file is never two of the report's outputs */
     for (size_t j = 0; j < k; j++) {
@@ -406,22 +419,30 @@ int dv_report_scenario_write(const char *dir, const dv_comparison *c, dv_error *
                r->engine->name);
       status = write_csv(dir, name, &r->matched, err);
     }
-    plot.series[plot.nseries++] = (dv_plot_series){
-        r->engine->name,       &r->traj,         r->half_thickness > 0.0 ? &r->matched : &c->thin,
-        compared_until(r),     r->pointwise_end, r->tolerance[DV_THETA_MAX_ERR],
-        isnan(r->tolerance[DV_THETA_TURNING_ERR]) || r->not_judged[0] != '\0'};
+    if (!status)
+      status = add_series(
+          &plot,
+          (dv_plot_series){r->engine->name, &r->traj,
+                           r->half_thickness > 0.0 ? &r->matched : &c->thin, compared_until(r),
+                           r->pointwise_end, r->tolerance[DV_THETA_MAX_ERR],
+                           isnan(r->tolerance[DV_THETA_TURNING_ERR]) || r->not_judged[0] != '\0'},
+          c->sc->name, err);
   }
   /* the reference a thick engine's verdict uses, drawn beside the thin one */
   char matched_label[96] = "";
-  for (size_t i = 0; i < c->n && !matched_label[0]; i++)
-    if (c->r[i].half_thickness > 0.0 && plot.nseries < DV_PLOT_MAX_SERIES) {
+  for (size_t i = 0; !status && i < c->n && !matched_label[0]; i++)
+    if (c->r[i].half_thickness > 0.0) {
       snprintf(matched_label, sizeof matched_label, "reference (matched, thickness %.3g mm)",
                2e3 * c->r[i].half_thickness);
-      plot.series[plot.nseries++] =
-          (dv_plot_series){matched_label, &c->r[i].matched, NULL, plot.window_end, INFINITY, NAN, 0};
+      status = add_series(&plot,
+                          (dv_plot_series){matched_label, &c->r[i].matched, NULL, plot.window_end,
+                                           INFINITY, NAN, 0},
+                          c->sc->name, err);
     }
+  int colour[DV_PLOT_MAX_SERIES] = {0}; /* the engines', then the matched reference's */
+  dv_report_plot_series_colours(&plot, colour);
   if (!status) status = dv_report_plot_scenario(dir, &plot, err);
-  if (!status) status = dv_report_portraits(dir, c, err);
+  if (!status) status = dv_report_portraits(dir, c, colour, err);
   if (!status) status = write_markdown(dir, c, err);
   if (!status) status = write_json(dir, c, 1, err);
   if (!status) status = dv_report_page_write(dir, err); /* read back from report.json */

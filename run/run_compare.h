@@ -22,6 +22,10 @@
  *   theta_turning_err,             theta's turning points and the nutation period
  *   nutation_period_err,           and heading advance, cycle by cycle
  *   heading_period_err             (run_turning.h; NAN: nothing to compare)
+ *   turning_lag                    the largest |time of the engine's k-th turn -
+ *                                  time of the reference's k-th| (s), maxima with
+ *                                  maxima, minima with minima: cumulative, a drift
+ *                                  each period adds up (run_turning.h; NAN: no turn)
  *   phase_err                      how far along the reference's contact path
  *                                  the engine's contact point is, as an arc
  *                                  length at equal times (run_phase.h, m)

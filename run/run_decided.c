@@ -23,10 +23,10 @@ static void put(char *out, size_t size, size_t *len, const char *fmt, ...) {
 }
 
 /* value and limit in as few digits as tell them apart (2 at least) */
-static void two_numbers(double v, double l, char *vs, char *ls, size_t size) {
+static void two_numbers(double v, double l, const char *unit, char *vs, char *ls, size_t size) {
   for (int p = 2; p <= 6; p++) {
-    snprintf(vs, size, "%.*g", p, v);
-    snprintf(ls, size, "%.*g", p, l);
+    snprintf(vs, size, "%.*g %s", p, v, unit);
+    snprintf(ls, size, "%.*g %s", p, l, unit);
     if (strcmp(vs, ls) || v == l) return;
   }
 }
@@ -180,13 +180,17 @@ static void one_line(const dv_comparison *c, const dv_traj *ref, const char *bri
     snprintf(line, sizeof line, "passes: no metric has a limit here%s", body);
   } else {
     const double v = r->vs_ref.value[m], l = r->tolerance[m];
-    char vs[32], ls[32];
-    two_numbers(v, l, vs, ls, sizeof vs);
+    char vs[48], ls[48];
+    two_numbers(v, l, dv_metric_units[m], vs, ls, sizeof vs);
     if (m == DV_THETA_TURNING_ERR)
       turning_words(&r->traj, ref, r->vs_ref.t_window, detail, sizeof detail);
     else if (dv_run_metric_pointwise((dv_metric_id)m) &&
              r->pointwise_end < r->vs_ref.t_window - 0.5 * c->sc->output_dt)
-      snprintf(detail, sizeof detail, "to its horizon t = %.3g s", r->pointwise_end);
+      snprintf(detail, sizeof detail, "judged to t = %.3g s, where the spread reaches the motion",
+               r->pointwise_end);
+    else if (r->excused[m] > 0.0)
+      snprintf(detail, sizeof detail, "the limit plus the spread %.2g %s", r->excused[m],
+               dv_metric_units[m]);
     else if (isinf(v) && m == DV_NUTATION_PERIOD_ERR)
       snprintf(detail, sizeof detail, "it completes no nutation period");
     if (r->pass)
@@ -209,7 +213,17 @@ static void one_line(const dv_comparison *c, const dv_traj *ref, const char *bri
   snprintf(r->decided, sizeof r->decided, "%s", line);
 }
 
-/* the sentences: the window, the horizon, the deciding limit, the lying down */
+/* what the shadow added to m's limit, in words ("" where nothing) */
+static const char *excused_words(const dv_engine_result *r, int m) {
+  static _Thread_local char words[120];
+  words[0] = '\0';
+  if (r->excused[m] > 0.0)
+    snprintf(words, sizeof words, ", plus %.3g %s the spread of its early error excuses",
+             r->excused[m], dv_metric_units[m]);
+  return words;
+}
+
+/* the sentences: the window, the shadow, the deciding limit, the lying down */
 static void sentences(const dv_comparison *c, const dv_traj *ref, const char *full,
                       dv_engine_result *r) {
   char *w = r->decided_why;
@@ -227,18 +241,20 @@ static void sentences(const dv_comparison *c, const dv_traj *ref, const char *fu
       r->vs_ref.t_window, 100 * r->window_fraction, t_run - t0, full);
   if (r->vs_ref.n_window >= 2 && r->pointwise_end >= r->vs_ref.t_window - 0.5 * c->sc->output_dt)
     put(w, size, &len,
-        "The pointwise metrics (theta, contact point and phase at equal times) cover it all: %s. ",
+        "The pointwise metrics (theta, contact point and phase at equal times) and the turning "
+        "lag judge it all: %s. ",
         r->horizon_why);
   else if (r->vs_ref.n_window >= 2)
     put(w, size, &len,
-        "The pointwise metrics (theta, contact point and phase at equal times) cover it to t = "
-        "%g s, its horizon, and the timing-insensitive ones (turning points, periods, path "
-        "shape, drifts) the rest: %s. ",
+        "The pointwise metrics (theta, contact point and phase at equal times) judge it to t = "
+        "%g s, where the spread of its early error reaches the motion's size, and the turning "
+        "lag and timing-insensitive ones (turning points, periods, path shape, drifts) all of "
+        "it: %s. ",
         r->pointwise_end, r->horizon_why);
   const int m = dv_run_deciding_metric(r);
   if (m >= 0)
-    put(w, size, &len, "The limit of %s (%.3g): %s. ", dv_metric_names[m], r->tolerance[m],
-        r->limit_why[m]);
+    put(w, size, &len, "The limit of %s (%.3g %s): %s%s. ", dv_metric_names[m], r->tolerance[m],
+        dv_metric_units[m], r->limit_why[m], excused_words(r, m));
   else if (r->nfailures)
     put(w, size, &len, "%s. ", r->failures[0]);
   if (r->event.judged)

@@ -122,6 +122,18 @@ void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref
                  DV_LIMIT_THETA, rate);
         break;
       }
+      case DV_TURNING_LAG: { /* the time in which the fastest theta rate moves theta by its limit */
+        const double rate = dv_run_theta_rate_max(ref, t_end);
+        dv_limit theta;
+        const int own = given(sc, engine, DV_THETA_MAX_ERR, &theta);
+        if (!own) theta.value = DV_LIMIT_THETA;
+        l->value = rate > 0.0 ? theta.value / rate : INFINITY;
+        snprintf(l->why, sizeof l->why,
+                 "default: the theta limit %g rad over the reference's fastest theta rate, %.3g "
+                 "rad/s",
+                 theta.value, rate);
+        break;
+      }
       case DV_HEADING_PERIOD_ERR:
         l->value = DV_LIMIT_HEADING;
         snprintf(l->why, sizeof l->why,

@@ -8,6 +8,10 @@
  *   nutation_period_err             DV_LIMIT_THETA over the reference's largest
  *                                   |theta_dot|: a period off by that moves
  *                                   theta by at most the theta limit
+ *   turning_lag                     the theta limit (the scene's, else
+ *                                   DV_LIMIT_THETA) over the reference's
+ *                                   largest |theta_dot|: the time in which
+ *                                   theta moves by that limit
  *   heading_period_err              DV_LIMIT_HEADING rad: a heading off by it
  *                                   moves a point rolled L away by 1% of L,
  *                                   the path limit

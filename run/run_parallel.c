@@ -24,7 +24,8 @@ typedef struct slot {
 } slot;
 
 #define HEAD ((sizeof(slot) + 63) / 64 * 64)
-#define AMP_ARRAYS (2 + DV_NUDGE_DIRS) /* t, gain, gain_of[] */
+/* t, gain, gain_of[], shadow_of[].env[] */
+#define AMP_ARRAYS (2 + DV_NUDGE_DIRS + DV_NUDGE_DIRS * DV_SHADOW_N)
 
 /* the comparison's tasks: 0 the thin reference, then a matched reference per
  * half-thickness, then each engine */
@@ -85,6 +86,9 @@ static void thin_task(const plan *p, void *bytes) {
   double *to = amp_of(bytes, p->cap);
   const double *arrays[AMP_ARRAYS] = {c->amp.t, c->amp.gain};
   for (int j = 0; j < DV_NUDGE_DIRS; j++) arrays[2 + j] = c->amp.gain_of[j];
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    for (int k = 0; k < DV_SHADOW_N; k++)
+      arrays[2 + DV_NUDGE_DIRS + j * DV_SHADOW_N + k] = c->amp.shadow_of[j].env[k];
   for (int j = 0; j < AMP_ARRAYS && !s->status; j++)
     memcpy(to + (size_t)j * p->cap, arrays[j], c->amp.n * sizeof(double));
   dv_run_comparison_free(c);
@@ -143,8 +147,12 @@ static int take_thin(const plan *p, void *bytes, int arrived, dv_comparison *c, 
   c->amp = s->amp;
   c->amp.t = c->amp.gain = NULL;
   for (int j = 0; j < DV_NUDGE_DIRS; j++) c->amp.gain_of[j] = NULL;
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) memset(c->amp.shadow_of[j].env, 0, sizeof c->amp.shadow_of[j].env);
   double **arrays[AMP_ARRAYS] = {&c->amp.t, &c->amp.gain};
   for (int j = 0; j < DV_NUDGE_DIRS; j++) arrays[2 + j] = &c->amp.gain_of[j];
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    for (int k = 0; k < DV_SHADOW_N; k++)
+      arrays[2 + DV_NUDGE_DIRS + j * DV_SHADOW_N + k] = &c->amp.shadow_of[j].env[k];
   const double *from = amp_of(bytes, p->cap);
   for (int j = 0; j < AMP_ARRAYS; j++) {
     *arrays[j] = malloc((c->amp.n ? c->amp.n : 1) * sizeof(double));

@@ -22,7 +22,9 @@ static double place_on(const polyline *l, size_t k, const double p[2], double *d
   return l->s[k] + u * len;
 }
 
-double dv_run_phase_err(const double (*e)[2], const double (*ref)[2], size_t n) {
+double dv_run_phase_series(const double (*e)[2], const double (*ref)[2], size_t n,
+                           double *series) {
+  for (size_t i = 0; series && i < n; i++) series[i] = i ? NAN : 0.0;
   if (n < 2) return 0.0;
   polyline l = {malloc(n * sizeof *l.q), malloc(n * sizeof *l.s), 0};
   double *arc = malloc(n * sizeof *arc); /* the reference's arc length at each sample */
@@ -61,7 +63,12 @@ double dv_run_phase_err(const double (*e)[2], const double (*ref)[2], size_t n) 
       k--, s = sn, d = dn;
     }
     worst = fmax(worst, fabs(s - arc[i]));
+    if (series) series[i] = fabs(s - arc[i]);
   }
   free(l.q), free(l.s), free(arc);
   return worst;
+}
+
+double dv_run_phase_err(const double (*e)[2], const double (*ref)[2], size_t n) {
+  return dv_run_phase_series(e, ref, n, NULL);
 }

@@ -20,4 +20,9 @@
  * 0 for n < 2; NAN when out of memory */
 double dv_run_phase_err(const double (*e)[2], const double (*ref)[2], size_t n);
 
+/* the same, with each sample's phase error into series (n; NAN where a
+ * point was skipped) */
+double dv_run_phase_series(const double (*e)[2], const double (*ref)[2], size_t n,
+                           double *series);
+
 #endif

@@ -36,6 +36,10 @@
 #define DV_MIN_WINDOW_FRACTION 0.1
 /* nor one of fewer samples than this (the first is the shared start) */
 #define DV_MIN_WINDOW_SAMPLES 10
+/* the motion's size that ends pointwise judging where the shadow reaches
+ * it is at least this many of the limit: a steady motion does not swing,
+ * and past ten limits a pointwise comparison says nothing of them */
+#define DV_SHADOW_SIZE_FLOOR 10.0
 /* characters of an engine's one-line "decided" (run_decided.h) */
 #define DV_DECIDED_MAX 120
 
@@ -69,7 +73,13 @@ typedef struct dv_engine_result {
   char reference_note[200];       /* why its reference is not its own geometry's ("": it is) */
   dv_event_verdict event;         /* its lying down against the reference's (run_event.h) */
   char not_judged[240];           /* why the run is not judged, set by a hook ("": it is) */
-  int thinner;                    /* it simulated a body thinner than the scene's (not judged) */
+  int other_body; /* it simulated another body than the scene's (not judged: cannot model) */
+  double excused[DV_NMETRICS]; /* of each value, what the shadow excused (run_shadow.h): its
+                                  tolerance is its limit plus this */
+  double shadow_at_end[2];     /* rad, m: the shadow in theta and the contact point where
+                                  pointwise judging ends */
+  double motion_size[2];       /* rad, m: the motion's size the shadow is held against */
+  int unpredictable_by;        /* which of those the shadow reached (0 theta, 1 path) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
@@ -149,7 +159,13 @@ int dv_run_engine_against(const dv_comparison *refs, const dv_scenario *sc,
 void dv_run_comparison_begin(const dv_scenario *sc, dv_comparison *c);
 int dv_run_thin_reference(const dv_scenario *ref_sc, dv_comparison *c, dv_error *err);
 void dv_run_engine_only(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r);
-/* what r's engine simulates on sc, without running it: its half-thickness, a thinner body */
+/* 1 when engine, as sc sets it up, simulates another body than sc's (a
+ * stand-in: a cylinder for a thin disk, a thinner one for a coin), with
+ * why ("cannot model: ..."); 0 when it simulates the scene's body. The one
+ * rule of compare, suite, judge and league */
+int dv_run_cannot_model(const dv_engine_type *engine, const dv_scenario *sc, char *why,
+                        size_t size);
+/* what r's engine simulates on sc, without running it: its half-thickness, another body */
 void dv_run_engine_body(const dv_engine_type *engine, const dv_scenario *sc, dv_engine_result *r);
 void dv_run_matched_reference(const dv_scenario *ref_sc, double half_thickness, dv_matched_run *m);
 int dv_run_engine_judge(dv_comparison *c, const dv_scenario *ref_sc, const dv_run_hook *hook,
@@ -157,8 +173,11 @@ int dv_run_engine_judge(dv_comparison *c, const dv_scenario *ref_sc, const dv_ru
 
 void dv_run_comparison_free(dv_comparison *c);
 
-/* 1 for a metric that compares samples at equal times (judged up to the horizon) */
+/* 1 for a metric that compares samples at equal times */
 int dv_run_metric_pointwise(dv_metric_id metric);
+/* 1 for a metric judged against its limit plus the shadow of the engine's
+ * early error: the pointwise ones and turning_lag */
+int dv_run_metric_shadowed(dv_metric_id metric);
 
 /* wall-clock seconds per simulated second; NaN when the run simulated
  * less than one output interval: a rate over next to nothing says nothing */

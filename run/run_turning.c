@@ -116,32 +116,33 @@ double dv_run_theta_rate_max(const dv_traj *tr, double t_end) {
   return v;
 }
 
-double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, double max_lag,
-                          double *lag) {
-  double end = INFINITY;
-  *lag = 0.0;
+size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, double *t,
+                           double *lag) {
+  size_t n = 0;
   turn *te = malloc((e->n + 1) * sizeof *te), *tr = malloc((ref->n + 1) * sizeof *tr);
-  if (!te || !tr) goto cleanup;
+  turn *ke = malloc((e->n + 1) * sizeof *ke), *kr = malloc((ref->n + 1) * sizeof *kr);
+  if (!te || !tr || !ke || !kr) goto cleanup;
   const size_t ne = turning_points(e, t_end, te), nr = turning_points(ref, t_end, tr);
-  size_t seen[2] = {0, 0}; /* the reference's turns of each kind so far */
-  /* the first fall is judged pointwise whatever its timing: a lag made there
-   * is the release's, which the amplification of a nudge measures */
-  double before = nr ? tr[0].t : 0.0;
-  for (size_t i = 0; i < nr && isinf(end); i++) {
-    const size_t k = seen[tr[i].kind > 0]++;
-    size_t j = 0, m = 0; /* e's k-th turn of the same kind */
-    while (j < ne && (te[j].kind != tr[i].kind || m++ < k)) j++;
-    if (j == ne) break; /* e makes no more turns of that kind: the period judges it */
-    if (fabs(te[j].t - tr[i].t) >= max_lag) {
-      *lag = te[j].t - tr[i].t;
-      end = before;
+  /* the window's end as the runs reach it: neither run's turn past it is known */
+  double end = fmin(t_end, fmin(e->n ? e->s[e->n - 1].t : 0.0, ref->n ? ref->s[ref->n - 1].t : 0.0));
+  for (int kind = -1; kind <= 1; kind += 2) {
+    const size_t me = of_kind(te, ne, kind, ke), mr = of_kind(tr, nr, kind, kr);
+    for (size_t k = 0; k < (me > mr ? me : mr); k++) {
+      if (k < me && k < mr) {
+        t[n] = kr[k].t, lag[n++] = ke[k].t - kr[k].t;
+      } else if (k < mr) { /* the engine's k-th comes after the window's end, if ever */
+        t[n] = kr[k].t, lag[n++] = fmax(0.0, end - kr[k].t);
+      } else { /* the reference's k-th comes after it: the engine leads by at least that */
+        t[n] = ke[k].t, lag[n++] = -fmax(0.0, end - ke[k].t);
+      }
     }
-    before = tr[i].t;
   }
 cleanup:
   free(te);
   free(tr);
-  return end;
+  free(ke);
+  free(kr);
+  return n;
 }
 
 /* turn_err's new candidate err at the ordinal-th turn of kind: kept in *w when largest */

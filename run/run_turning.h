@@ -41,13 +41,16 @@
  * theta_turning_err, nutation_period_err, heading_period_err */
 void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, double out[3]);
 
-/* where e's turning points first lag or lead ref's by max_lag (s) or more,
- * the k-th of a kind against the k-th: the reference's turn before that one
- * (its first turn when it is the first), past which a pointwise error
- * measures timing; INFINITY when none does to t_end. lag: the first such difference
- * (e's time - ref's), 0 when none */
-double dv_run_turning_lag(const dv_traj *e, const dv_traj *ref, double t_end, double max_lag,
-                          double *lag);
+/* the lag of each of e's turning points behind ref's (s; negative: a lead),
+ * the k-th maximum paired with the k-th maximum and minimum with minimum,
+ * over samples up to t_end: into t (the reference's turn's time) and lag,
+ * room for e->n + ref->n each; their count. A turn one run makes in the
+ * window and the other does not lies past the window's end in that other
+ * run: its lag is at least the time from it to the end (that bound is
+ * given, at the unpaired turn's time). turning_lag, cumulative: a drift of
+ * any size a period adds up turn by turn */
+size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, double *t,
+                           double *lag);
 
 /* the turning points theta_turning_err compares: those of tr up to t_end,
  * in time order, into t, theta and kind (+1 maximum, -1 minimum), tr->n of

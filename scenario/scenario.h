@@ -67,11 +67,15 @@ typedef enum dv_metric_id {
   DV_NUTATION_PERIOD_ERR, /* the k-th nutation period against the reference's, s */
   DV_HEADING_PERIOD_ERR,  /* the heading advance over the k-th period against the reference's */
   DV_PHASE_ERR,           /* how far along the reference's contact path the engine's contact is */
+  DV_TURNING_LAG, /* the k-th turn's time against the reference's k-th, cumulative, s */
   DV_NMETRICS
 } dv_metric_id;
 
 /* names as in scenario files and reports: "theta_max_err", ... */
 extern const char *const dv_metric_names[DV_NMETRICS];
+/* each metric's unit as reports write it after a value: "rad", "m", "s",
+ * "of E(0)", ... */
+extern const char *const dv_metric_units[DV_NMETRICS];
 
 /* one tolerance: metric <= limit, for one engine or all ("") */
 typedef struct dv_tolerance {

@@ -14,7 +14,11 @@
 const char *const dv_metric_names[DV_NMETRICS] = {
     "theta_max_err", "theta_rms_err", "path_max_err",      "path_rms_err",   "path_hausdorff",
     "energy_drift",  "slip_max",      "theta_extrema_err", "invariant_drift", "theta_turning_err",
-    "nutation_period_err", "heading_period_err", "phase_err"};
+    "nutation_period_err", "heading_period_err", "phase_err", "turning_lag"};
+
+const char *const dv_metric_units[DV_NMETRICS] = {
+    "rad", "rad", "m", "m", "m", "of E(0)", "m/s", "rad", "of the momentum scale", "rad",
+    "s",   "rad", "m", "s"};
 
 #define AT(field) offsetof(dv_scenario, field)
 #define STATE(k) (offsetof(dv_scenario, initial) + (k) * sizeof(double))

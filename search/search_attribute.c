@@ -39,8 +39,9 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   dv_sweep_point p;
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, over, n, &p, err))
     return DV_EINPUT;
-  /* the thin disk's run of a thick scene is not judged, yet its error against
-   * the thin disk, all the geometry step reads, is measured */
+  /* a stand-in's run (the thin disk's of a thick scene, a cylinder's of a
+   * thin one) is not judged, yet its error against the thin disk, all the
+   * geometry step reads, is measured */
   const int thin_measured = p.thinner && !pr->own_reference && isfinite(p.theta_thin);
   if (!p.ok && !thin_measured) {
     char with[400] = "";
@@ -61,12 +62,17 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
   why[0] = '\0';
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, NULL, 0, &p, err))
     return DV_EINPUT;
-  *e = !p.ok ? NAN : pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
-  if (p.ok && isnan(*e))
+  /* a stand-in is not judged (another body), yet its error against the thin disk is measured */
+  const int thin_measured = p.thinner && !pr->own_reference && isfinite(p.theta_thin);
+  *e = thin_measured ? p.theta_thin
+       : !p.ok       ? NAN
+       : pr->own_reference ? p.metric[DV_THETA_MAX_ERR]
+                           : p.theta_thin;
+  if (!thin_measured && p.ok && isnan(*e))
     snprintf(why, size, "%s against %s: %.270s", dv_run_verdict_name(p.verdict),
              pr->own_reference ? "its own reference" : "the thin disk",
              p.detail[0] ? p.detail : "its compared window is too short to measure");
-  else if (!p.ok && p.verdict == DV_VERDICT_NOT_JUDGED)
+  else if (!thin_measured && !p.ok && p.verdict == DV_VERDICT_NOT_JUDGED)
     snprintf(why, size, "%.300s", p.detail);
   return DV_OK;
 }

@@ -219,7 +219,7 @@ static void run_overrides(const job *jb, const char *const *over, size_t nover,
   memcpy(pt->metric, r->vs_ref.value, sizeof pt->metric);
   memcpy(pt->limit, r->tolerance, sizeof pt->limit);
   pt->theta_thin = r->vs_thin.value[DV_THETA_MAX_ERR];
-  pt->thinner = r->thinner && r->status >= 0;
+  pt->thinner = r->other_body && r->status >= 0;
   pt->wall_per_sim_s = dv_run_cost_rate(wall, sim, sc->output_dt);
   pt->steps = r->stats.steps;
   /* a point not judged (its run is its reference's) measured nothing: never a pass */

@@ -102,7 +102,7 @@ for name in names:
             fail(f"{who}: the reference ({e['judged']}) is not named")
         if not e["decided_why"]: fail(f"{who}: no decided_why")
         lims = e["limits"]
-        m = re.match(r"^(passes|fails): ([a-z_]+) (\S+) (<=|>) (\S+?)(,| |$)", d)
+        m = re.match(r"^(passes|fails): ([a-z_]+) (\S+) ([^<>=]*?) ?(<=|>) (\S+?)(,| |$)", d)
         over = {k: margin(l) for k, l in lims.items() if margin(l) is not None}
         if not m:
             named = (e["pass"] or (e["outcome"] == "exceeds tolerance" and
@@ -111,11 +111,12 @@ for name in names:
             if e["decided_metric"] is not None:
                 fail(f"{who}: names no metric, decided_metric says {e['decided_metric']}")
             continue
-        metric, value, op, limit = m.group(2), number(m.group(3)), m.group(4), number(m.group(5))
+        metric, value, op, limit = m.group(2), number(m.group(3)), m.group(5), number(m.group(6))
         if e["decided_metric"] != metric:
             fail(f"{who}: decided_metric (what the pages show) is {e['decided_metric']}")
         if metric not in lims: fail(f"{who}: {metric} is no metric"); continue
         l = lims[metric]
+        if m.group(4) != l["unit"]: fail(f"{who}: {metric} printed in '{m.group(4)}', not {l['unit']}")
         if not near(value, l["value"]) or not near(limit, l["limit"]):
             fail(f"{who}: prints {value} and {limit}, report.json has {l['value']} and {l['limit']}")
         q = margin(l)

@@ -214,15 +214,8 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   c->why[0] = c->cause[0] = c->report[0] = c->verdict[0] = '\0';
   c->npoints = 0;
   const dv_engine_type *type = dv_engine_find(pair->engine->name);
-  if (type && !dv_engine_own_body(type, pair->sc)) { /* a stand-in is another object */
-    const double h = dv_engine_half_thickness(type, pair->sc);
+  if (type && dv_run_cannot_model(type, pair->sc, c->why, sizeof c->why)) { /* compare's rule */
     c->outcome = DV_LEAGUE_CANNOT_MODEL;
-    if (pair->sc->thickness > 0.0)
-      snprintf(c->why, sizeof c->why, "cannot model: no cylinder of the object's %.3g mm (as the scene sets it up, it would simulate %s)",
-               1e3 * pair->sc->thickness, h > 0.0 ? "another body" : "a thin disk");
-    else
-      snprintf(c->why, sizeof c->why, "cannot model: no thin disk (as the scene sets it up, it would simulate a cylinder %.3g mm thick)",
-               2e3 * h);
     c->wall_s = dv_clock_now() - began;
     return;
   }

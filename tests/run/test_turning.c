@@ -4,8 +4,7 @@
  * turning point and shows as the period and heading differences; a decaying
  * amplitude shows as the turning points; a run that stops nutating has
  * lost its periods; steady runs and contact-sized noise have no turns. The
- * lag of a longer period ends pointwise judging at the turn before it
- * reaches a given time (dv_run_turning_lag). Of two maxima a reversal too small to
+ * lag of a longer period adds up turn by turn (dv_run_turning_lags). Of two maxima a reversal too small to
  * count lies between, the higher is kept. */
 #include <math.h>
 #include <string.h>
@@ -141,21 +140,39 @@ int main(void) {
   CHECK_NEAR(dv_run_theta_rate_max(&ref, INFINITY), 0.5 * 2 * M_PI / T0, 2e-6,
              "fastest rate"); /* 1.8e-7 */
 
-  /* the timing horizon: the slow run's k-th turn lags by 0.01 k s (turns every
-   * T0 / 2 from a maximum at the start, no turn): a lag of 0.025 s first
-   * shows at the third turn, so judging ends at the reference's second, T0;
-   * one the first turn already shows ends it at the first, never before.
-   * Measured 1.25e-8 s off each turn (the Hermite interpolant) */
-  double lag;
-  CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.025, &lag), T0, 1e-7, "to the 2nd turn");
-  CHECK_NEAR(lag, 0.03, 1e-8, "the third turn lags 0.03 s");
-  /* an engine early by as much ends it as soon (the reference's turns every (T0 + 0.02) / 2) */
-  CHECK_NEAR(dv_run_turning_lag(&ref, &slow, INFINITY, 0.025, &lag), T0 + 0.02, 1e-7,
-             "early: to the 2nd turn");
-  CHECK_NEAR(lag, -0.03, 1e-8, "the third turn comes 0.03 s early");
-  CHECK_NEAR(dv_run_turning_lag(&slow, &ref, INFINITY, 0.005, &lag), T0 / 2, 1e-7, "the first");
-  CHECK(isinf(dv_run_turning_lag(&slow, &ref, INFINITY, 1.0, &lag)) && lag == 0.0, "no lag of 1 s");
-  CHECK(isinf(dv_run_turning_lag(&steady, &ref, INFINITY, 0.005, &lag)), "an engine without turns");
+  /* the turning lag, cumulative: the slow run's k-th turn lags by 0.01 k s
+   * (turns every T0 / 2 from a maximum at the start, no turn), paired kind
+   * with kind; measured 1.25e-8 s off each turn (the Hermite interpolant) */
+  double tk[4096], lag[4096];
+  size_t nl = dv_run_turning_lags(&slow, &ref, INFINITY, tk, lag);
+  CHECK(nl == 9, "9 turns in 8 s: %zu", nl);
+  for (size_t k = 0; k < nl; k++) { /* minima first, then maxima */
+    const double t_ref = tk[k], ord = round(t_ref / (T0 / 2));
+    CHECK(fabs(t_ref - ord * T0 / 2) < 1e-7, "the reference's turn %zu at %g", k, t_ref);
+    CHECK(fabs(lag[k] - 0.01 * ord) < 1e-7, "turn %g lags 0.01 s a turn: %g", ord, lag[k]);
+  }
+  /* an engine early by as much leads by as much */
+  nl = dv_run_turning_lags(&ref, &slow, INFINITY, tk, lag);
+  for (size_t k = 0; k < nl; k++)
+    CHECK(fabs(lag[k] + 0.01 * round(tk[k] / ((T0 + 0.02) / 2))) < 1e-7, "early turn %zu: %g", k,
+          lag[k]);
+  /* a turn the engine makes past the window's end lags by at least the rest
+   * of the window: to 1.75 s its second turn (1.7613 s) is not in it, the
+   * reference's (T0 = 1.7413 s) is: 0.0087 s, a bound under the true 0.02 */
+  nl = dv_run_turning_lags(&slow, &ref, 1.75, tk, lag);
+  CHECK(nl == 2, "two turns to 1.75 s: %zu", nl);
+  for (size_t k = 0; k < nl; k++) /* the first, paired, lags 0.01 s */
+    CHECK(fabs(lag[k] - (fabs(tk[k] - T0) < 1e-7 ? 1.75 - T0 : 0.01)) < 1e-7,
+          "turn at %g s: lag %g (the unpaired one's bound 0.0087)", tk[k], lag[k]);
+  /* an engine without turns lags each of the reference's by the rest of the
+   * run; the reference's turns the engine makes with none leads by as much */
+  nl = dv_run_turning_lags(&steady, &ref, INFINITY, tk, lag);
+  CHECK(nl == 9, "every turn of the reference: %zu", nl);
+  for (size_t k = 0; k < nl; k++)
+    CHECK(fabs(lag[k] - (DURATION - tk[k])) < 1e-6, "lost turn %zu: %g", k, lag[k]);
+  nl = dv_run_turning_lags(&ref, &steady, INFINITY, tk, lag);
+  for (size_t k = 0; k < nl; k++)
+    CHECK(fabs(lag[k] + (DURATION - tk[k])) < 1e-6, "extra turn %zu: %g", k, lag[k]);
 
   /* a turn just inside the window, where the reference's comes just after
    * it: timing, not a turning point off (upright_unstable's MuJoCo: a minimum

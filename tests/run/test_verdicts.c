@@ -73,7 +73,8 @@ static void check_decided(const dv_engine_result *r) {
   double v, l, furthest = -INFINITY;
   for (int m = 0; m < DV_NMETRICS; m++)
     if (!isnan(margin_of(r, m))) furthest = fmax(furthest, margin_of(r, m));
-  if (sscanf(d + strlen(word), "%39[a-z_] %lf %2[<=>] %lf", metric, &v, op, &l) != 4) {
+  char unit[40];
+  if (sscanf(d + strlen(word), "%39[a-z_] %lf %39[^<=>]%2[<=>] %lf", metric, &v, unit, op, &l) != 5) {
     CHECK(!r->pass && !(r->verdict == DV_VERDICT_EXCEEDS && furthest > 1 && !r->event.why[0]),
           "decided names no metric, value and limit: '%s'", d);
     return;
@@ -84,6 +85,8 @@ static void check_decided(const dv_engine_result *r) {
     CHECK(0, "decided names no metric: '%s'", d);
     return;
   }
+  CHECK(!strncmp(unit, dv_metric_units[m], strlen(dv_metric_units[m])),
+        "decided gives %s no unit %s: '%s'", metric, dv_metric_units[m], d);
   CHECK(near(v, r->vs_ref.value[m]) && near(l, r->tolerance[m]),
         "decided prints %g and %g, the metric is %g, its limit %g: '%s'", v, l,
         r->vs_ref.value[m], r->tolerance[m], d);
@@ -181,26 +184,29 @@ int main(void) {
   }
 
   /* the hoop: the reference amplifies a nudge linearly (x99 in 8 s, measured
-   * here), so MuJoCo's early error (1.1e-6 rad) never reaches the limit; its
-   * pointwise error (0.043 rad by 8 s) is timing: its turning points stay
-   * within 9.5e-4 rad of the reference's and lag by 0.0039 s at the turn
-   * after t = 3.48 s, where pointwise judging ends (theta_max_err 0.00425
-   * there); its period, 5.2e-3 s a cycle off, is what that turning error
-   * makes of the reference's (6.74 s/rad): it agrees (issue 35, item 6). A
-   * 1e-3 rad nudge ended pointwise judging at 0.7 s, timing or not */
+   * here). MuJoCo's early error (1.1e-6 rad) spreads the reference by 1.1e-4
+   * rad by 8 s; its own error grows to 0.043 rad, its turns lagging more each
+   * period: a drift of its own, judged over the whole window, which it fails
+   * (issue 48: the turning lag that once ended its pointwise judging at 3.48
+   * s no longer does). Its turning values stay within 2e-3 rad */
   if (!compare(HOOP, "mujoco", NULL, 0, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
     printf(
-        "hoop: %s; amplification %s x%.3g (exponent %.2f); early error %.3g; horizon %g s; "
-        "theta_max_err %.3g, theta_turning_err %.3g, nutation_period_err %.3g < %.3g\n",
+        "hoop: %s; amplification %s x%.3g (exponent %.2f); early error %.3g; spread %.3g rad; "
+        "theta_max_err %.3g, turning_lag %.3g s, theta_turning_err %.3g\n",
         dv_run_verdict_name(r->verdict), c.amp.growth, c.amp.factor, c.amp.exponent, r->early_err,
-        r->horizon, r->vs_ref.value[DV_THETA_MAX_ERR], r->vs_ref.value[DV_THETA_TURNING_ERR],
-        r->vs_ref.value[DV_NUTATION_PERIOD_ERR], r->tolerance[DV_NUTATION_PERIOD_ERR]);
+        r->excused[DV_THETA_MAX_ERR], r->vs_ref.value[DV_THETA_MAX_ERR],
+        r->vs_ref.value[DV_TURNING_LAG], r->vs_ref.value[DV_THETA_TURNING_ERR]);
     CHECK(!strcmp(c.amp.growth, "linear"), "the hoop's amplification: %s", c.amp.growth);
     CHECK(c.amp.factor > 10 && c.amp.factor < 1e3, "x%g in 8 s", c.amp.factor);
-    CHECK(r->horizon > 2.0 && r->horizon < 5.0 && strstr(r->horizon_why, "(timing)"),
-          "horizon %g, pointwise to %g: %s", r->horizon, r->pointwise_end, r->horizon_why);
-    CHECK(r->pass, "MuJoCo at defaults: %s", r->nfailures ? r->failures[0] : "passes");
+    CHECK(isinf(r->horizon) && r->pointwise_end >= r->vs_ref.t_window - 1e-9,
+          "pointwise to %g of %g: %s", r->pointwise_end, r->vs_ref.t_window, r->horizon_why);
+    CHECK(!r->pass && r->verdict == DV_VERDICT_EXCEEDS, "MuJoCo at defaults: %s",
+          r->nfailures ? r->failures[0] : "passes");
+    CHECK(r->vs_ref.value[DV_THETA_MAX_ERR] > 0.03 && r->excused[DV_THETA_MAX_ERR] > 0.0 &&
+              r->excused[DV_THETA_MAX_ERR] < 1e-3,
+          "its whole-window error %g, the spread's excuse %g", r->vs_ref.value[DV_THETA_MAX_ERR],
+          r->excused[DV_THETA_MAX_ERR]);
     CHECK(r->vs_ref.value[DV_THETA_TURNING_ERR] < 2e-3, "its turns: %g rad",
           r->vs_ref.value[DV_THETA_TURNING_ERR]);
     dv_run_comparison_free(&c);
@@ -215,17 +221,21 @@ int main(void) {
           r->nfailures ? r->failures[0] : "");
     dv_run_comparison_free(&c);
   }
-  /* an early error the scene amplifies to the limit ends pointwise judging
-   * inside the window (a coarse ODE step on the fall) */
+  /* a coarse ODE step on the fall: its early error (capped at the limit) is
+   * excused only as the scene spreads it; the rest is its own, judged to the
+   * window's end unless the spread reaches the motion's size first */
   const char *coarse_fall[] = {"engines.ode.timestep=0.005"};
   if (!compare(FALLING, "ode", coarse_fall, 1, &sc, &c)) {
     const dv_engine_result *r = &c.r[0];
-    printf("falling, coarse ODE: early error %.3g, horizon %g s, window %g s\n", r->early_err,
-           r->horizon, r->vs_ref.t_window);
-    CHECK(r->horizon < r->vs_ref.t_window && r->horizon >= r->early_until &&
-              r->pointwise_end <= r->horizon + 1e-9,
-          "horizon %g, window %g, pointwise to %g", r->horizon, r->vs_ref.t_window,
-          r->pointwise_end);
+    printf("falling, coarse ODE: early error %.3g, pointwise to %g s, window %g s, spread %.3g, "
+           "theta_max_err %.3g: %s\n",
+           r->early_err, r->pointwise_end, r->vs_ref.t_window, r->excused[DV_THETA_MAX_ERR],
+           r->vs_ref.value[DV_THETA_MAX_ERR], r->decided);
+    CHECK(r->pointwise_end >= r->early_until &&
+              (isinf(r->horizon) ? r->pointwise_end >= r->vs_ref.t_window - 1e-9
+                                 : r->shadow_at_end[0] >= r->motion_size[0] ||
+                                       r->shadow_at_end[1] >= r->motion_size[1]),
+          "pointwise to %g, window %g: %s", r->pointwise_end, r->vs_ref.t_window, r->horizon_why);
     dv_run_comparison_free(&c);
   }
 

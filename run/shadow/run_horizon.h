@@ -1,41 +1,30 @@
-/* run_horizon: how long the reference is predictable at an engine's accuracy.
+/* run_horizon: how the reference of the scene's body amplifies a nudge of
+ * its start, and the shadow of an engine's early error.
  *
- * The thin-disk reference is run again from its initial state nudged in
- * each reduced direction j (theta, theta_dot, phi_dot, psi_dot) by +- d_j:
- * DV_HORIZON_NUDGE rad for theta, DV_HORIZON_NUDGE times the scene's rate
- * scale (its largest initial spin or roll rate, at least sqrt(g / r)) for
- * the rates. Its amplification A_j(t) is the largest
- * |theta_nudged - theta_ref| up to t over d_j. The directions respond alike
- * (within 0.3-1x of theta's on the hoop, long_horizon, upright_stable,
- * critical_below and the separatrix), but an engine's early error often
- * lies in its rates (MuJoCo on steady_circle: 2.5e-5 of the rate scale
- * against 1.1e-5 rad in theta), which only these nudges put in scale. The
- * growth comes from the measurement, whatever its shape: linear in t in
+ * The reference of the scene's body (the thin disk, or the matched one of
+ * the scene's thickness: dv_run_body) is run again from its initial state
+ * nudged in each reduced direction j (theta, theta_dot, phi_dot, psi_dot)
+ * by +- d_j: DV_HORIZON_NUDGE rad for theta, DV_HORIZON_NUDGE times the
+ * scene's rate scale (its largest initial spin or roll rate, at least
+ * sqrt(g / r)) for the rates. Its amplification A_j(t) is the largest
+ * |theta_nudged - theta_ref| up to t over d_j; G(t), the largest
+ * A_j(t) d_j / DV_HORIZON_NUDGE, is the amplification of a relative nudge.
+ * The growth comes from the measurement, whatever its shape: linear in t in
  * integrable motion (a wobble's period depends on its amplitude),
- * exponential near a separatrix or a fall from upright.
+ * exponential near a separatrix or a fall from upright. G is information
+ * (the reference block, the settings choice); it judges nothing.
  *
- * G(t), the largest A_j(t) d_j / DV_HORIZON_NUDGE, is the amplification of
- * a relative nudge. An engine's pointwise comparison ends at its horizon:
- * where its own early error e (its largest error over the scene's shortest
- * time scale in theta, and in each rate over the rate scale; at least the
- * nudge, at most DV_HORIZON_SPREAD: a larger one is the engine's own
- * failure, not the scene's sensitivity) grows by
- * e (G(t) - 1) >= DV_HORIZON_SPREAD rad, what the dynamics add to it (an
- * engine's own large early error on a scene that amplifies little does not
- * end its pointwise judging), and never before the early window itself. Up to there a pointwise
- * error measures the engine; past it, it measures the scene's sensitivity, and only
- * timing-insensitive measures mean something: turning points, period, the path's Hausdorff
- * distance, the drift of E, f1, f2 along the engine's own states, when the
- * disk lies down (run_event.h).
- * Where both runs nutate, pointwise judging also ends at the turn before
- * the engine's turning points first lag or lead the reference's by the time
- * in which the reference's fastest theta rate moves theta by the limit
- * (run_turning.h, dv_run_turning_lag): past it a pointwise error measures
- * when, not what (errors made at a turn, not at the start, and amplified by
- * a pass near upright); the turning values and the period judge there.
- * Those are judged unless the reference nudged by +- the engine's early
- * error in some direction moves them by half their limit (the well a
- * separatrix start falls into): their spread.
+ * What judges is the shadow (run_shadow.h) of an engine's own early error
+ * (its largest error over the scene's shortest time scale in theta, and in
+ * each rate: dv_run_engine_shadow). The reference is run again from +- that
+ * error in each direction (at least the nudge: an engine below it shares
+ * the amplification's runs; at most the theta limit, or the limit over the
+ * rate scale for a rate: a larger early error is the engine's own failure,
+ * judged pointwise from the start, and buys no larger excuse). Their
+ * spread at each time is what the scene does to an error the engine could
+ * not avoid (its representation of the start); every error it makes along
+ * the way is its own. The same nudged runs bound its lying down
+ * (run_event.h) and move each timing-insensitive metric (spread).
  *
  * A theta nudge that would start at or past the lying-down limit
  * (theta_limit, pi - theta_limit) is not made: the other side alone gives
@@ -47,6 +36,7 @@
 
 #include "run_compare.h"
 #include "run_event.h"
+#include "run_shadow.h"
 #include "scenario.h"
 
 /* rad: near or below the engines' early errors (measured 7.2e-10 to 5.5e-5
@@ -78,9 +68,15 @@ typedef struct dv_amplification {
   double factor;      /* G at the end of the samples fitted (at measured_to when bounded) */
   double factor_t;    /* s: where */
   dv_run_end ends[2]; /* how the theta-nudged runs ended (ends[k].ran 0: not made) */
+  double half_thickness;                 /* m: of the body nudged (0: the thin disk) */
+  dv_shadow shadow_of[DV_NUDGE_DIRS];    /* each direction's runs' spread (run_shadow.h) */
 } dv_amplification;
 
-/* measure a's amplification of sc's thin reference ref; spread (may be
+/* the reference engine of sc's body into body_sc (sc, with the matched
+ * reference's half-thickness set to the scene's on a thick scene) */
+const dv_engine_type *dv_run_body(const dv_scenario *sc, dv_scenario *body_sc);
+
+/* measure a's amplification of the reference ref of sc's body; spread (may be
  * NULL): each metric's largest value between a nudged run and ref. < 0 when
  * a nudged run fails, err naming it */
 int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplification *a,
@@ -88,14 +84,17 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
 
 void dv_run_amplification_free(dv_amplification *a); /* NULL-safe */
 
-/* the reference run again from each direction j nudged by +- early[j] (a
- * theta nudge kept inside the lying-down limits), where early[j] exceeds
- * a's own nudge (a's spread_of[j] elsewhere): spread, the largest value of
- * each metric between a nudged run and ref, and how the theta-nudged runs
- * ended (ends: a's when theta is not nudged again). < 0 when a run fails */
-int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double early[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
-                         dv_run_end ends[2], dv_error *err);
+/* the shadow of an engine whose early errors are early[j] (rad, rad/s):
+ * the reference ref of sc's body run again from each direction j nudged by
+ * +- early[j] (floored at a's nudge, where a's own runs serve, and capped
+ * at the limit), their spread at each of ref's samples into shadow
+ * (allocated here; free it with dv_shadow_free), the largest value of each
+ * metric between a nudged run and ref into spread, and how the
+ * theta-nudged runs ended into ends. a is the amplification of the same
+ * body. < 0 when a run fails */
+int dv_run_engine_shadow(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
+                         const double early[DV_NUDGE_DIRS], dv_shadow *shadow,
+                         double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err);
 
 /* the relative early error e of an engine whose early errors are early[j] */
 double dv_run_relative_error(const dv_amplification *a, const double early[DV_NUDGE_DIRS]);

@@ -23,14 +23,24 @@ static void theta_nudges(const dv_scenario *sc, double size, double nudge[2]) {
     nudge[th < M_PI_2] = 0.5 * (th < M_PI_2 ? M_PI - lim - th : lim - th);
 }
 
-/* sc's reference run from direction dir nudged by +- size; each run's
- * |theta - theta_ref| / |nudge| as a running max into gain (may be NULL;
- * INFINITY past a run's end), spread (each metric's largest value, not
- * reset) and, for theta, ends (may be NULL) */
+const dv_engine_type *dv_run_body(const dv_scenario *sc, dv_scenario *body_sc) {
+  *body_sc = *sc;
+  if (!(sc->thickness > 0.0)) return dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+  const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
+  dv_scenario_set_number(body_sc, matched->name, "half_thickness", 0.5 * sc->thickness, NULL);
+  return matched;
+}
+
+/* the reference of sc's body (thin, or matched to its thickness) run from
+ * direction dir nudged by +- size; each run's |theta - theta_ref| /
+ * |nudge| as a running max into gain (may be NULL; INFINITY past a run's
+ * end), its spreads into shadow (may be NULL), spread (each metric's
+ * largest value, not reset) and, for theta, ends (may be NULL) */
 static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, double size,
-                       double *gain, double spread[DV_NMETRICS], dv_run_end ends[2],
-                       double *nudge_made, dv_error *err) {
-  const dv_engine_type *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
+                       double *gain, dv_shadow *shadow, double spread[DV_NMETRICS],
+                       dv_run_end ends[2], double *nudge_made, dv_error *err) {
+  dv_scenario body_sc;
+  const dv_engine_type *body = dv_run_body(sc, &body_sc);
   double nudge[2] = {-size, size};
   if (dir == RED_TH) theta_nudges(sc, size, nudge);
   *nudge_made = fmax(fabs(nudge[0]), fabs(nudge[1]));
@@ -38,16 +48,16 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
   for (int k = 0; k < 2; k++) {
     if (ends) ends[k] = (dv_run_end){.nudge = nudge[k]};
     if (nudge[k] == 0.0) continue;
-    dv_scenario moved_sc = *sc;
+    dv_scenario moved_sc = body_sc;
     moved_sc.initial[dir] += nudge[k];
     dv_traj tr = {0};
     dv_engine_stats st;
-    const int status = dv_run_collect(thin, &moved_sc, dv_run_traj_keep, &tr, &st, err);
+    const int status = dv_run_collect(body, &moved_sc, dv_run_traj_keep, &tr, &st, err);
     if (status < 0) {
       dv_error cause = *err;
       dv_run_traj_free(&tr);
-      return dv_fail(err, status, "the %s reference with %s nudged by %+g (for the horizon): %s",
-                     thin->name, dv_nudge_dir_names[dir], nudge[k], cause.msg);
+      return dv_fail(err, status, "the %s reference with %s nudged by %+g (for the spread): %s",
+                     body->name, dv_nudge_dir_names[dir], nudge[k], cause.msg);
     }
     if (ends) ends[k] = (dv_run_end){nudge[k], 1, tr.n ? tr.s[tr.n - 1].t : 0.0, st.lay_down};
     double run_max = 0.0;
@@ -57,6 +67,10 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
         run_max = fmax(run_max, fabs(tr.s[i].y[RED_TH] - ref->s[i].y[RED_TH]) / fabs(nudge[k]));
       gain[i] = fmax(gain[i], shared ? run_max : INFINITY); /* past its end: unpredictable */
     }
+    if (shadow && dv_shadow_add_run(shadow, &tr, ref)) {
+      dv_run_traj_free(&tr);
+      return dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
+    }
     dv_metrics moved;
     dv_run_compare(&tr, ref, INFINITY, &moved);
     for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
@@ -65,28 +79,41 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
   return DV_OK;
 }
 
+/* an engine's early errors (rad, then rad/s), each floored at a's nudge and
+ * capped at the theta limit (the rates': over the rate scale) */
+static void early_nudges(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
+                         double e[DV_NUDGE_DIRS]) {
+  for (int j = 0; j < DV_NUDGE_DIRS; j++)
+    e[j] = fmin(fmax(early[j], a->size[j]),
+                DV_HORIZON_SPREAD * (j == RED_TH ? 1.0 : a->rate_scale));
+}
+
+int dv_run_engine_shadow(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
+                         const double early[DV_NUDGE_DIRS], dv_shadow *shadow,
+                         double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err) {
+  memcpy(ends, a->ends, sizeof a->ends);
+  for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
+  if (dv_shadow_alloc(shadow, ref->n)) return dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
+  double e[DV_NUDGE_DIRS];
+  early_nudges(a, early, e);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
+    double made;
+    if (!(e[j] > a->size[j]) && a->shadow_of[j].n == ref->n) { /* the amplification's own runs */
+      for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
+      dv_shadow_merge(shadow, &a->shadow_of[j]);
+      continue;
+    }
+    const int status = nudged_runs(sc, ref, j, e[j], NULL, shadow, spread,
+                                   j == RED_TH ? ends : NULL, &made, err);
+    if (status < 0) return status;
+  }
+  return DV_OK;
+}
+
 /* an engine's early errors (rad, then rad/s), each floored at a's nudge */
 static void floor_errors(const dv_amplification *a, const double early[DV_NUDGE_DIRS],
                          double e[DV_NUDGE_DIRS]) {
   for (int j = 0; j < DV_NUDGE_DIRS; j++) e[j] = fmax(early[j], a->size[j]);
-}
-
-int dv_run_nudged_spread(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double early[DV_NUDGE_DIRS], double spread[DV_NMETRICS],
-                         dv_run_end ends[2], dv_error *err) {
-  memcpy(ends, a->ends, sizeof a->ends);
-  for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
-  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
-    double made;
-    if (!(early[j] > a->size[j])) {
-      for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
-      continue;
-    }
-    const int status =
-        nudged_runs(sc, ref, j, early[j], NULL, spread, j == RED_TH ? ends : NULL, &made, err);
-    if (status < 0) return status;
-  }
-  return DV_OK;
 }
 
 /* least-squares slope of y on x and its residual sum of squares */
@@ -152,10 +179,14 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
   if (!a->t || !a->gain) return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
   for (size_t i = 0; i < ref->n; i++) a->t[i] = ref->s[i].t;
   a->rate_scale = dv_run_rate_scale(sc);
+  a->half_thickness = sc->thickness > 0.0 ? 0.5 * sc->thickness : 0.0;
   for (int j = 0; j < DV_NUDGE_DIRS; j++) {
     a->size[j] = DV_HORIZON_NUDGE * (j == RED_TH ? 1.0 : a->rate_scale);
-    const int status = nudged_runs(sc, ref, j, a->size[j], a->gain_of[j], a->spread_of[j],
-                                   j == RED_TH ? a->ends : NULL, &a->size[j], err);
+    if (dv_shadow_alloc(&a->shadow_of[j], ref->n))
+      return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
+    const int status =
+        nudged_runs(sc, ref, j, a->size[j], a->gain_of[j], &a->shadow_of[j], a->spread_of[j],
+                    j == RED_TH ? a->ends : NULL, &a->size[j], err);
     if (status < 0) return status;
   }
   a->nudge = a->size[RED_TH];
@@ -189,6 +220,7 @@ void dv_run_amplification_free(dv_amplification *a) {
   free(a->t);
   free(a->gain);
   for (int j = 0; j < DV_NUDGE_DIRS; j++) free(a->gain_of[j]);
+  for (int j = 0; j < DV_NUDGE_DIRS; j++) dv_shadow_free(&a->shadow_of[j]);
   memset(a, 0, sizeof *a);
 }
 
