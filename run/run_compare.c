@@ -36,7 +36,7 @@ void dv_run_traj_free(dv_traj *tr) {
 static double turning_lag(const dv_traj *e, const dv_traj *ref, double t_end) {
   double *t = malloc((e->n + ref->n + 1) * sizeof *t), *lag = malloc((e->n + ref->n + 1) * sizeof *lag);
   double most = NAN;
-  const size_t n = t && lag ? dv_run_turning_lags(e, ref, t_end, t, lag) : 0;
+  const size_t n = t && lag ? dv_run_turning_lags(e, ref, t_end, t, lag, NULL) : 0;
   for (size_t k = 0; k < n; k++) most = k ? fmax(most, fabs(lag[k])) : fabs(lag[k]);
   free(t);
   free(lag);

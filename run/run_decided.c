@@ -2,6 +2,7 @@
 #include "run_decided.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -82,6 +83,33 @@ static void turning_words(const dv_traj *eng, const dv_traj *ref, double t_end, 
   else
     snprintf(out, size, "%zu%s %s %.2g ms %s", w.ordinal, sfx, kind, 1e3 * fabs(w.lag),
              w.lag < 0 ? "early" : "late");
+}
+
+/* the turn of eng that lags or leads ref's most, in words: "3rd maximum 280 ms late" */
+static void lag_words(const dv_traj *eng, const dv_traj *ref, double t_end, char *out,
+                      size_t size) {
+  double *t = malloc((eng->n + ref->n + 1) * sizeof *t), *lag = malloc((eng->n + ref->n + 1) * sizeof *lag);
+  dv_turn_id *id = malloc((eng->n + ref->n + 1) * sizeof *id);
+  const size_t n = t && lag && id ? dv_run_turning_lags(eng, ref, t_end, t, lag, id) : 0;
+  size_t w = 0;
+  for (size_t k = 1; k < n; k++)
+    if (fabs(lag[k]) > fabs(lag[w])) w = k;
+  out[0] = '\0';
+  if (n) {
+    const char *kind = id[w].kind > 0 ? "maximum" : "minimum";
+    const char *sfx = ordinal_suffix(id[w].ordinal);
+    if (id[w].only > 0)
+      snprintf(out, size, "its %zu%s %s, the reference's past the window", id[w].ordinal, sfx, kind);
+    else if (id[w].only < 0)
+      snprintf(out, size, "the reference's %zu%s %s, its own past the window", id[w].ordinal, sfx,
+               kind);
+    else
+      snprintf(out, size, "%zu%s %s %.2g ms %s", id[w].ordinal, sfx, kind, 1e3 * fabs(lag[w]),
+               lag[w] < 0 ? "early" : "late");
+  }
+  free(t);
+  free(lag);
+  free(id);
 }
 
 /* why the compared window ends where it does: a few words into brief, a
@@ -184,6 +212,8 @@ static void one_line(const dv_comparison *c, const dv_traj *ref, const char *bri
     two_numbers(v, l, dv_metric_units[m], vs, ls, sizeof vs);
     if (m == DV_THETA_TURNING_ERR)
       turning_words(&r->traj, ref, r->vs_ref.t_window, detail, sizeof detail);
+    else if (m == DV_TURNING_LAG)
+      lag_words(&r->traj, ref, r->vs_ref.t_window, detail, sizeof detail);
     else if (dv_run_metric_pointwise((dv_metric_id)m) &&
              r->pointwise_end < r->vs_ref.t_window - 0.5 * c->sc->output_dt)
       snprintf(detail, sizeof detail, "judged to t = %.3g s, where the spread reaches the motion",

@@ -145,7 +145,7 @@ static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_res
     excuse(r, DV_PATH_RMS_ERR, sqrt(sq[DV_SHADOW_PATH] / count));
     excuse(r, DV_PHASE_ERR, most[DV_SHADOW_PHASE]);
   }
-  const size_t turns = dv_run_turning_lags(&r->traj, ref, t_end, tk, lag);
+  const size_t turns = dv_run_turning_lags(&r->traj, ref, t_end, tk, lag, NULL);
   double lag_most = 0.0;
   for (size_t k = 0; k < turns; k++)
     lag_most = fmax(lag_most, fmax(0.0, fabs(lag[k]) - dv_shadow_at(sh, ref, DV_SHADOW_LAG, tk[k])));
@@ -410,8 +410,16 @@ int dv_run_cannot_model(const dv_engine_type *engine, const dv_scenario *sc, cha
                         size_t size) {
   if (dv_engine_own_body(engine, sc)) return 0;
   const double h = dv_engine_half_thickness(engine, sc);
+  const dv_engine_contact *k = engine->contact;
+  const dv_setting_spec *geom = k->geom_key ? dv_settings_find(engine->settings, k->geom_key) : NULL;
+  const char *shape = geom ? dv_setting_choice(geom, (size_t)dv_scenario_get(sc, engine->name,
+                                                                             k->geom_key))
+                           : NULL;
   char other[64] = "a thin disk";
-  if (h > 0.0) snprintf(other, sizeof other, "a cylinder %.3g mm thick", 2e3 * h);
+  if (shape && strcmp(shape, "cylinder") && (!k->thin_choice || strcmp(shape, k->thin_choice)))
+    snprintf(other, sizeof other, "its geom %s", shape); /* a stand-in of its own kind */
+  else if (h > 0.0)
+    snprintf(other, sizeof other, "a cylinder %.3g mm thick", 2e3 * h);
   if (sc->thickness > 0.0)
     snprintf(why, size,
              "cannot model: no cylinder of the scene's %.3g mm (as the scene sets it up, it "

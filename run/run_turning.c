@@ -117,7 +117,7 @@ double dv_run_theta_rate_max(const dv_traj *tr, double t_end) {
 }
 
 size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, double *t,
-                           double *lag) {
+                           double *lag, dv_turn_id *id) {
   size_t n = 0;
   turn *te = malloc((e->n + 1) * sizeof *te), *tr = malloc((ref->n + 1) * sizeof *tr);
   turn *ke = malloc((e->n + 1) * sizeof *ke), *kr = malloc((ref->n + 1) * sizeof *kr);
@@ -128,6 +128,7 @@ size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, d
   for (int kind = -1; kind <= 1; kind += 2) {
     const size_t me = of_kind(te, ne, kind, ke), mr = of_kind(tr, nr, kind, kr);
     for (size_t k = 0; k < (me > mr ? me : mr); k++) {
+      if (id) id[n] = (dv_turn_id){kind, k + 1, k < me && k < mr ? 0 : k < mr ? -1 : 1};
       if (k < me && k < mr) {
         t[n] = kr[k].t, lag[n++] = ke[k].t - kr[k].t;
       } else if (k < mr) { /* the engine's k-th comes after the window's end, if ever */

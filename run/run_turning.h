@@ -48,9 +48,14 @@ void dv_run_turning_compare(const dv_traj *e, const dv_traj *ref, double t_end, 
  * window and the other does not lies past the window's end in that other
  * run: its lag is at least the time from it to the end (that bound is
  * given, at the unpaired turn's time). turning_lag, cumulative: a drift of
- * any size a period adds up turn by turn */
+ * any size a period adds up turn by turn. id (may be NULL): which turn each is */
+typedef struct dv_turn_id {
+  int kind;       /* +1 a maximum, -1 a minimum */
+  size_t ordinal; /* the ordinal-th of its kind (1: the first) */
+  int only;       /* 1 the engine's alone in the window, -1 the reference's, 0 both */
+} dv_turn_id;
 size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, double *t,
-                           double *lag);
+                           double *lag, dv_turn_id *id);
 
 /* the turning points theta_turning_err compares: those of tr up to t_end,
  * in time order, into t, theta and kind (+1 maximum, -1 minimum), tr->n of

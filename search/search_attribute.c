@@ -40,10 +40,11 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, over, n, &p, err))
     return DV_EINPUT;
   /* a stand-in's run (the thin disk's of a thick scene, a cylinder's of a
-   * thin one) is not judged, yet its error against the thin disk, all the
-   * geometry step reads, is measured */
-  const int thin_measured = p.thinner && !pr->own_reference && isfinite(p.theta_thin);
-  if (!p.ok && !thin_measured) {
+   * thin one) is not judged, yet its errors, all the geometry step and a
+   * convergence read, are measured */
+  const double measured = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
+  const int stand_in_measured = p.thinner && isfinite(measured);
+  if (!p.ok && !stand_in_measured) {
     char with[400] = "";
     for (size_t i = 0; i < n; i++)
       snprintf(with + strlen(with), sizeof with - strlen(with), " %s", over[i]);
@@ -51,7 +52,7 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
                    pr->engine->name, n ? " with" : "", with, dv_run_verdict_name(p.verdict),
                    p.detail);
   }
-  *e = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
+  *e = measured;
   return DV_OK;
 }
 
@@ -62,12 +63,10 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
   why[0] = '\0';
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, NULL, 0, &p, err))
     return DV_EINPUT;
-  /* a stand-in is not judged (another body), yet its error against the thin disk is measured */
-  const int thin_measured = p.thinner && !pr->own_reference && isfinite(p.theta_thin);
-  *e = thin_measured ? p.theta_thin
-       : !p.ok       ? NAN
-       : pr->own_reference ? p.metric[DV_THETA_MAX_ERR]
-                           : p.theta_thin;
+  /* a stand-in is not judged (another body), yet its errors are measured */
+  const double measured = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
+  const int thin_measured = p.thinner && isfinite(measured);
+  *e = p.ok || thin_measured ? measured : NAN;
   if (!thin_measured && p.ok && isnan(*e))
     snprintf(why, size, "%s against %s: %.270s", dv_run_verdict_name(p.verdict),
              pr->own_reference ? "its own reference" : "the thin disk",

@@ -4,7 +4,8 @@
 # is refused with one line. Knob runs are counted on DV_CAUSE_TRACE's lines
 # ("cause trace: ENGINE: KNOB (CHANGE): worst W, ..."). Two failing cases whose
 # causes differ, made short (re-run: the commands below with DV_CAUSE_TRACE=1):
-#   integrator  MuJoCo rk4 over 0.5 s, path limit 4e-4 m: path 9.18e-4 m;
+#   integrator  MuJoCo rk4 over 0.5 s, path limit 1e-4 m: path 9.18e-4 m, of
+#               which the spread of its early error excuses 7.1e-4 m (issue 48);
 #               full: euler 3.58e-4, implicit 1.01e-4 remove it, the step
 #               /4 leaves worst 2.29; quick tries the integrator first (its
 #               signature: nothing over but the path, and a time integrator
@@ -14,7 +15,8 @@
 #               body 6.37); quick tries it first: 1 run, full 4
 #   window      the same Bullet over the scene's 3 s: theta 9.38e-3 rad, from
 #               0.36 s; full: no knob removes it (the step /4 leaves worst
-#               3.87); quick over the first 0.536 s: the step /4 removes that
+#               3.87); quick over the first 0.795 s (0.536 s before the spread
+#               of its early error was excused): the step /4 removes that
 #               window's error (worst 0.392) but not the whole run's, which it
 #               then runs: no cause named, as full
 set -u
@@ -23,7 +25,7 @@ diskval=$1 saucer=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mujoco=(--engines mujoco --set engines.mujoco.integrator=rk4 --set scenario.duration=0.5
-  --set tolerance.mujoco.path_max_err=4e-4)
+  --set tolerance.mujoco.path_max_err=1e-4)
 bullet=(--engines bullet --set engines.bullet.timestep=1.6e-4 --set scenario.duration=1)
 # the knob named in stdout's cause, and the knob runs on stderr
 run() { # NAME MODE ARGS...
@@ -56,9 +58,9 @@ run window full "${window[@]}"
 run window quick "${window[@]}"
 check 'grep -q "; cause: none of the knobs removes it" "$work/window.full.out"' \
   "full, window: $(cat "$work/window.full.out")"
-check 'grep -q "^cause trace: bullet: timestep .* with scenario.duration=0\.5[0-9]*: .*removes it" "$work/window.quick.err"' \
-  "quick did not try the step over the first half second: $(cat "$work/window.quick.err")"
-check 'grep -q "; cause: not found among .*(quick, each over the first 0\.5[0-9]* s" "$work/window.quick.out"' \
+check 'grep -q "^cause trace: bullet: timestep .* with scenario.duration=0\.[5-9][0-9]*: .*removes it" "$work/window.quick.err"' \
+  "quick did not try the step over the first second: $(cat "$work/window.quick.err")"
+check 'grep -q "; cause: not found among .*(quick, each over the first 0\.[5-9][0-9]* s" "$work/window.quick.out"' \
   "quick names a cause full does not: $(cat "$work/window.quick.out")"
 run bullet none "${bullet[@]}"
 check '[ "$(runs bullet.none)" -eq 0 ] && grep -q "; cause: not searched (--cause none)" "$work/bullet.none.out"' \

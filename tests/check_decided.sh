@@ -135,7 +135,7 @@ check 'grep -q "^    not judged: compared window 0 s (rolling needs more frictio
   "hoop with mu 0.02: $(cat hoop.out)"
 check 'jq -r .engines.mujoco.decided_why out/hoop/report.json | grep -q "rolling needs more friction than mu = 0.02"' \
   "hoop with mu 0.02: decided_why says not why the window ends"
-check 'grep -Eq "^    fails: theta_turning_err [0-9.]+ > 0.01 \(.*[0-9](st|nd|rd|th) (maximum|minimum)" wobble.out' \
+check 'grep -Eq "^    fails: (theta_turning_err [0-9.]+ rad > 0.01 rad|turning_lag [0-9.]+ s > [0-9.]+ s) \(.*[0-9](st|nd|rd|th) (maximum|minimum)" wobble.out' \
   "wobble, coarse ODE step: the turning point is not named: $(cat wobble.out)"
 check 'grep -q "^    passes: .*, vs cylinder h 2 mm$" cylinder.out' "cylinder: $(cat cylinder.out)"
 # a turning point early or late: the engine's and the reference's own samples say which

@@ -37,7 +37,7 @@ done
 code=$?
 check '[ $code -ne 0 ] && grep -Eq "^euro_coin +ode +not judged .* vs thin disk +FAIL$" "$work/stdout"' \
   "a thin stand-in of a thick coin: exit $code: $(head -1 "$work/stdout")"
-check 'grep -q "thinner than the scene" "$work/stdout"' "no reason given: $(cat "$work/stdout")"
+check 'grep -q "cannot model: no cylinder of the scene" "$work/stdout"' "no reason given: $(cat "$work/stdout")"
 
 # attribution's thin-disk run of the coin is not judged, yet measured: no
 # exit 2, and the thin disk is never named the cause for the coin's engine

@@ -72,7 +72,7 @@ int dv_shadow_add_run(dv_shadow *into, const dv_traj *run, const dv_traj *ref) {
   int status = -1;
   if (!err[0] || !err[1] || !err[2] || !tk || !lag || dv_shadow_errors(run, ref, INFINITY, err))
     goto cleanup;
-  const size_t nturns = dv_run_turning_lags(run, ref, INFINITY, tk, lag);
+  const size_t nturns = dv_run_turning_lags(run, ref, INFINITY, tk, lag, NULL);
   double most[3] = {0.0, 0.0, 0.0}, most_lag = 0.0;
   for (size_t i = 0; i < n && i < into->n; i++) {
     for (int k = 0; k < 3; k++) /* NAN: past the run's end, or a point the phase skipped */

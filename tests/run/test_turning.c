@@ -144,7 +144,7 @@ int main(void) {
    * (turns every T0 / 2 from a maximum at the start, no turn), paired kind
    * with kind; measured 1.25e-8 s off each turn (the Hermite interpolant) */
   double tk[4096], lag[4096];
-  size_t nl = dv_run_turning_lags(&slow, &ref, INFINITY, tk, lag);
+  size_t nl = dv_run_turning_lags(&slow, &ref, INFINITY, tk, lag, NULL);
   CHECK(nl == 9, "9 turns in 8 s: %zu", nl);
   for (size_t k = 0; k < nl; k++) { /* minima first, then maxima */
     const double t_ref = tk[k], ord = round(t_ref / (T0 / 2));
@@ -152,25 +152,25 @@ int main(void) {
     CHECK(fabs(lag[k] - 0.01 * ord) < 1e-7, "turn %g lags 0.01 s a turn: %g", ord, lag[k]);
   }
   /* an engine early by as much leads by as much */
-  nl = dv_run_turning_lags(&ref, &slow, INFINITY, tk, lag);
+  nl = dv_run_turning_lags(&ref, &slow, INFINITY, tk, lag, NULL);
   for (size_t k = 0; k < nl; k++)
     CHECK(fabs(lag[k] + 0.01 * round(tk[k] / ((T0 + 0.02) / 2))) < 1e-7, "early turn %zu: %g", k,
           lag[k]);
   /* a turn the engine makes past the window's end lags by at least the rest
    * of the window: to 1.75 s its second turn (1.7613 s) is not in it, the
    * reference's (T0 = 1.7413 s) is: 0.0087 s, a bound under the true 0.02 */
-  nl = dv_run_turning_lags(&slow, &ref, 1.75, tk, lag);
+  nl = dv_run_turning_lags(&slow, &ref, 1.75, tk, lag, NULL);
   CHECK(nl == 2, "two turns to 1.75 s: %zu", nl);
   for (size_t k = 0; k < nl; k++) /* the first, paired, lags 0.01 s */
     CHECK(fabs(lag[k] - (fabs(tk[k] - T0) < 1e-7 ? 1.75 - T0 : 0.01)) < 1e-7,
           "turn at %g s: lag %g (the unpaired one's bound 0.0087)", tk[k], lag[k]);
   /* an engine without turns lags each of the reference's by the rest of the
    * run; the reference's turns the engine makes with none leads by as much */
-  nl = dv_run_turning_lags(&steady, &ref, INFINITY, tk, lag);
+  nl = dv_run_turning_lags(&steady, &ref, INFINITY, tk, lag, NULL);
   CHECK(nl == 9, "every turn of the reference: %zu", nl);
   for (size_t k = 0; k < nl; k++)
     CHECK(fabs(lag[k] - (DURATION - tk[k])) < 1e-6, "lost turn %zu: %g", k, lag[k]);
-  nl = dv_run_turning_lags(&ref, &steady, INFINITY, tk, lag);
+  nl = dv_run_turning_lags(&ref, &steady, INFINITY, tk, lag, NULL);
   for (size_t k = 0; k < nl; k++)
     CHECK(fabs(lag[k] + (DURATION - tk[k])) < 1e-6, "extra turn %zu: %g", k, lag[k]);
 
