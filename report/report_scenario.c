@@ -18,6 +18,7 @@
 #include "report_plot.h"
 #include "report_portrait.h"
 #include "run_trajectory.h"
+#include "run_turning.h"
 
 /* v in fmt, or "not measured" for a NaN: a quantity nothing measured is never a number */
 static const char *measured(char *buf, size_t size, const char *fmt, double v) {
@@ -222,6 +223,39 @@ static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
   return o;
 }
 
+/* the reference of the scene's body: the thin disk's, or the matched run of
+ * the scene's thickness (NULL where no engine needed it) */
+static const dv_traj *body_reference(const dv_comparison *c) {
+  if (!(c->sc->thickness > 0.0)) return &c->thin;
+  for (size_t k = 0; k < c->nmatched; k++)
+    if (c->matched[k].status >= 0 &&
+        fabs(c->matched[k].half_thickness - 0.5 * c->sc->thickness) <= 1e-12 * c->sc->thickness)
+      return &c->matched[k].traj;
+  for (size_t i = 0; i < c->n; i++)
+    if (c->r[i].matched.n &&
+        fabs(c->r[i].half_thickness - 0.5 * c->sc->thickness) <= 1e-12 * c->sc->thickness)
+      return &c->r[i].matched;
+  return NULL;
+}
+
+/* the body's nutation period (s): the mean time from one maximum of theta to
+ * the next over its reference's run; NAN where it completes none */
+static double body_period(const dv_comparison *c) {
+  const dv_traj *tr = body_reference(c);
+  if (!tr || tr->n < 3) return NAN;
+  double *t = malloc(tr->n * sizeof *t), *th = malloc(tr->n * sizeof *th);
+  int *kind = malloc(tr->n * sizeof *kind);
+  double first = NAN, last = NAN, count = 0;
+  const size_t n = t && th && kind ? dv_run_turning_points(tr, INFINITY, t, th, kind) : 0;
+  for (size_t k = 0; k < n; k++)
+    if (kind[k] > 0) {
+      if (isnan(first)) first = t[k];
+      last = t[k], count++;
+    }
+  free(t), free(th), free(kind);
+  return count >= 2 ? (last - first) / (count - 1) : NAN;
+}
+
 static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_error *err) {
   const dv_scenario *sc = c->sc;
   cJSON *o = cJSON_CreateObject();
@@ -240,6 +274,8 @@ static int write_json(const char *dir, const dv_comparison *c, int plotted, dv_e
   cJSON_AddStringToObject(ref, "method", c->thin_stats.method);
   cJSON_AddItemToObject(ref, "horizon", dv_io_json_number(c->horizon));
   cJSON_AddItemToObject(ref, "amplification", amplification_json(&c->amp));
+  cJSON_AddNumberToObject(ref, "body_half_thickness", 0.5 * sc->thickness);
+  cJSON_AddItemToObject(ref, "body_nutation_period", dv_io_json_number(body_period(c)));
   cJSON_AddNumberToObject(ref, "t_end", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
   cJSON_AddStringToObject(ref, "version", thin->version());
   cJSON_AddNumberToObject(ref, "wall_s", c->thin_wall_s);
@@ -274,13 +310,21 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
           integrator_name(sc), dv_reference_settings(sc)->rtol,
           dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",
           c->thin_stats.detail, c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
-  if (c->thin_stats.method[0]) fprintf(fp, "Reference method: %s.\n\n", c->thin_stats.method);
-  char words[160];
+  if (c->thin_stats.method[0])
+    fprintf(fp, "Reference method%s: %s.\n\n", sc->thickness > 0.0 ? " (the thin disk's)" : "",
+            c->thin_stats.method);
+  char words[160], body[64] = "the thin disk";
+  if (sc->thickness > 0.0)
+    snprintf(body, sizeof body, "the matched cylinder, %.3g mm thick", 1e3 * sc->thickness);
+  const double period = body_period(c);
+  if (isfinite(period))
+    fprintf(fp, "The scene's body (%s) nutates every %.4g s (its reference's maxima of theta).\n\n",
+            body, period);
   dv_run_amplification_words(&c->amp, words, sizeof words);
   fprintf(fp,
-          "Amplification: the reference nudged by %g rad in theta and by %g rad/s in each rate "
-          "leaves it %s (per %g of a nudge).\n\n",
-          c->amp.nudge, c->amp.size[RED_VPH], words, DV_HORIZON_NUDGE);
+          "Amplification: the reference of the scene's body (%s) nudged by %g rad in theta and "
+          "by %g rad/s in each rate leaves it %s (per %g of a nudge).\n\n",
+          body, c->amp.nudge, c->amp.size[RED_VPH], words, DV_HORIZON_NUDGE);
   fprintf(fp,
           "| engine | outcome | reference | theta max (rad) | theta rms | path max (m) | "
           "path rms | Hausdorff (m) | energy drift | slip max (m/s) | theta max vs thin | "
