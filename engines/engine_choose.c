@@ -337,16 +337,23 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
   const candidate *run = meets ? meets : best ? best : fallback;
   *out = run->k;
   describe(engine, kn, given, out, what, sizeof what);
+  /* the path target is a share of the distance rolled only where the disk rolls that far */
+  char target[96];
+  if (pr.rolled >= sc->disk.r)
+    snprintf(target, sizeof target, "%g of the %.3g m rolled over %g s", DV_SCENE_ACCURACY,
+             pr.rolled, pr.horizon);
+  else
+    snprintf(target, sizeof target, "%g of the %.3g m radius, more than it rolls over %g s",
+             DV_SCENE_ACCURACY, sc->disk.r, pr.horizon);
   int m = snprintf(why, size,
                    "%s: %s: projected theta %.2g rad, path %.2g m (%.2f of the target: theta "
-                   "%g rad, path %g of the %.3g m rolled over %g s) from a probe of %.3g s",
+                   "%g rad, path %s) from a probe of %.3g s",
                    what,
                    meets  ? "the cheapest candidate that meets the target with margin 0.5"
                    : best ? "no candidate within the cost cap meets the target; the best runs"
                           : "no candidate ran through the probe; the error model's step",
                    run->probed > 0 ? run->theta : NAN, run->probed > 0 ? run->path : NAN,
-                   run->probed > 0 ? run->margin : NAN, DV_SCENE_ACCURACY, DV_SCENE_ACCURACY,
-                   pr.rolled, pr.horizon, pr.window);
+                   run->probed > 0 ? run->margin : NAN, DV_SCENE_ACCURACY, target, pr.window);
   model_reason(sc, kn, given, run->k.choice, model, sizeof model);
   if (m > 0 && (size_t)m < size) m += snprintf(why + m, size - (size_t)m, "; the model: %s", model);
   for (int i = 0, listed = 0; i < nprobed && listed < 3 && m > 0 && (size_t)m < size; i++) {
