@@ -13,7 +13,7 @@
 #include "report_plot.h"
 
 #define PORTRAIT_POINTS 400
-/* grey: the energy level, apart from the black reference and the engines */
+/* grey: the energy level, apart from the black reference (and the engines: level_colour) */
 #define LEVEL_COLOUR 8
 
 /* theta and p_theta = (A + m r^2) theta' of a trajectory, for the phase plane */
@@ -31,8 +31,19 @@ typedef struct portrait {
   double *traj[1 + DV_MAX_ENGINES]; /* n thetas, then n momenta */
 } portrait;
 
-/* draw the portraits of c from pt, whose arrays are allocated */
-static int draw_portraits(const char *dir, const dv_comparison *c, portrait *pt, dv_error *err) {
+/* the level set's colour on a phase plane beside the n engines' colours: grey,
+ * or the first colour none of them has */
+static int level_colour(const int *colour, size_t n) {
+  int want[1 + DV_MAX_ENGINES], got[1 + DV_MAX_ENGINES];
+  for (size_t k = 0; k < n; k++) want[k] = colour[k];
+  want[n] = LEVEL_COLOUR;
+  dv_report_plot_distinct_colours(want, n + 1, got);
+  return got[n];
+}
+
+/* draw the portraits of c from pt, whose arrays are allocated, engine k in colour[k] */
+static int draw_portraits(const char *dir, const dv_comparison *c, portrait *pt, const int *colour,
+                          dv_error *err) {
   const red_disk *dk = &c->sc->disk;
   const double *y0 = c->sc->initial;
   double f1, f2, lo = INFINITY, hi = -INFINITY;
@@ -61,22 +72,22 @@ static int draw_portraits(const char *dir, const dv_comparison *c, portrait *pt,
   if (!status) status = dv_report_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
   /* phase plane: the level set, then the reference and every engine */
   dv_plot_curve ph[2 + 1 + DV_MAX_ENGINES];
+  _Static_assert(2 + 1 + DV_MAX_ENGINES <= DV_PLOT_MAX_CURVES, "a phase plane holds every engine");
+  const int level = level_colour(colour, c->n);
   size_t n = 0;
-  ph[n++] = (dv_plot_curve){"level set E", PORTRAIT_POINTS, pt->th,      pt->up,
-                            NULL,          DV_CURVE_LINE,   LEVEL_COLOUR};
-  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, pt->th, pt->dn, NULL, DV_CURVE_LINE, LEVEL_COLOUR};
+  ph[n++] =
+      (dv_plot_curve){"level set E", PORTRAIT_POINTS, pt->th, pt->up, NULL, DV_CURVE_LINE, level};
+  ph[n++] = (dv_plot_curve){"", PORTRAIT_POINTS, pt->th, pt->dn, NULL, DV_CURVE_LINE, level};
   for (size_t k = 0; k <= c->n; k++) {
     const dv_traj *tr = k ? &c->r[k - 1].traj : &c->thin;
     phase_coordinates(dk, tr, pt->traj[k], pt->traj[k] + tr->n);
-    ph[n++] = (dv_plot_curve){
-        k ? c->r[k - 1].engine->name : "reference (thin disk)",
-        tr->n,
-        pt->traj[k],
-        pt->traj[k] + tr->n,
-        NULL,
-        DV_CURVE_LINE,
-        dv_report_plot_engine_colour(k ? c->r[k - 1].engine->name
-                                       : dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name)};
+    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (thin disk)",
+                              tr->n,
+                              pt->traj[k],
+                              pt->traj[k] + tr->n,
+                              NULL,
+                              DV_CURVE_LINE,
+                              k ? colour[k - 1] : 0}; /* the thin reference black */
   }
   snprintf(title, sizeof title, "%s: phase plane", c->sc->name);
   if (!status) status = dv_io_path(path, sizeof path, err, "%s/phase.svg", dir);
@@ -105,7 +116,7 @@ static const dv_traj *thick_body(const dv_comparison *c, double *h) {
  * E - I theta'^2 / 2: its potential over the range it sweeps, its level set its
  * own curve in the phase plane. */
 static int draw_thick(const char *dir, const dv_comparison *c, const dv_traj *body, double h,
-                      double **traj, dv_error *err) {
+                      double **traj, const int *colour, dv_error *err) {
   const red_disk *dk = &c->sc->disk;
   const double I = dk->A + dk->m * (dk->r * dk->r + h * h), E = body->s[0].energy;
   double lo = INFINITY, hi = -INFINITY;
@@ -127,6 +138,7 @@ static int draw_thick(const char *dir, const dv_comparison *c, const dv_traj *bo
   int status = dv_io_path(path, sizeof path, err, "%s/potential.svg", dir);
   if (!status) status = dv_report_plot_xy(path, title, "tilt theta (rad)", "U (J)", pot, 2, 0, err);
   dv_plot_curve ph[1 + DV_MAX_ENGINES];
+  _Static_assert(1 + DV_MAX_ENGINES <= DV_PLOT_MAX_CURVES, "a phase plane holds every engine");
   size_t n = 0;
   for (size_t k = 0; k <= c->n; k++) {
     const dv_traj *tr = k ? &c->r[k - 1].traj : body;
@@ -135,15 +147,13 @@ static int draw_thick(const char *dir, const dv_comparison *c, const dv_traj *bo
       t[i] = tr->s[i].y[RED_TH];
       p[i] = I * tr->s[i].y[RED_VTH];
     }
-    ph[n++] = (dv_plot_curve){
-        k ? c->r[k - 1].engine->name : "reference (matched, the level set E)",
-        tr->n,
-        t,
-        p,
-        NULL,
-        DV_CURVE_LINE,
-        dv_report_plot_engine_colour(k ? c->r[k - 1].engine->name
-                                       : dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE)->name)};
+    ph[n++] = (dv_plot_curve){k ? c->r[k - 1].engine->name : "reference (matched, the level set E)",
+                              tr->n,
+                              t,
+                              p,
+                              NULL,
+                              DV_CURVE_LINE,
+                              k ? colour[k - 1] : colour[c->n]};
   }
   snprintf(title, sizeof title, "%s: phase plane of the cylinder (h %.3g mm)", c->sc->name,
            1e3 * h);
@@ -157,7 +167,7 @@ static int draw_thick(const char *dir, const dv_comparison *c, const dv_traj *bo
 /* the thesis's Figures 4.1-4.6 for this scenario: the effective potential of
  * theta for its f1, f2 with the energy level, and the phase plane with the
  * level set and every engine's trajectory over it */
-int dv_report_portraits(const char *dir, const dv_comparison *c, dv_error *err) {
+int dv_report_portraits(const char *dir, const dv_comparison *c, const int *colour, dv_error *err) {
   double h = 0.0;
   const dv_traj *body = thick_body(c, &h);
   if (body) { /* arrays: the body's, then its and every engine's theta and p_theta */
@@ -170,7 +180,7 @@ int dv_report_portraits(const char *dir, const dv_comparison *c, dv_error *err) 
     if (status)
       dv_fail(err, status, "%s: portraits: out of memory", c->sc->name);
     else
-      status = draw_thick(dir, c, body, h, traj, err);
+      status = draw_thick(dir, c, body, h, traj, colour, err);
     for (size_t k = 0; k <= c->n + 1; k++) free(traj[k]);
     return status;
   }
@@ -183,7 +193,7 @@ int dv_report_portraits(const char *dir, const dv_comparison *c, dv_error *err) 
   if (status)
     dv_fail(err, status, "%s: portraits: out of memory", c->sc->name);
   else
-    status = draw_portraits(dir, c, pt, err);
+    status = draw_portraits(dir, c, pt, colour, err);
   for (size_t k = 0; pt && k <= c->n; k++) free(pt->traj[k]);
   free(pt);
   return status;

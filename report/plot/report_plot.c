@@ -24,7 +24,8 @@
 const char *const dv_report_plot_files[] = {"theta.svg", "theta_error.svg", "path.svg",
                                             "energy.svg", NULL};
 
-_Static_assert(DV_PLOT_MAX_SERIES <= DVP_NPALETTE, "a palette colour per series");
+_Static_assert(DV_PLOT_MAX_SERIES <= DVP_NPALETTE * DVP_NDASHES,
+               "a palette colour and line pattern of its own per series");
 
 static const struct {
   const char *what, *xlabel, *ylabel;
@@ -148,10 +149,11 @@ static void free_curve(dvp_curve *c) {
   memset(c, 0, sizeof *c);
 }
 
-/* set up c from series s (NULL: the thin reference) for a plot of kind; -1 out of memory */
-static int set_curve(dvp_curve *c, dvp_kind kind, const dv_plot_series *s, const dv_plot_input *in) {
-  c->colour = s ? (PLINT)(DVP_COL_SERIES + (dv_report_plot_engine_colour(s->label) - 1) % DVP_NPALETTE)
-                : DVP_COL_FG;
+/* set up c from series s (NULL: the thin reference) in colour number colour
+ * (dv_plot_curve's) for a plot of kind; -1 out of memory */
+static int set_curve(dvp_curve *c, dvp_kind kind, const dv_plot_series *s, int colour,
+                     const dv_plot_input *in) {
+  dvp_colour_style(s ? colour : 0, &c->colour, &c->style);
   c->judged = s && s->reference;
   c->ranged = compared(in, s);
   c->window_end = !c->ranged ? -INFINITY : s ? s->window_end : in->window_end;
@@ -166,9 +168,9 @@ static int set_curve(dvp_curve *c, dvp_kind kind, const dv_plot_series *s, const
   return kind == DVP_THETA && turns ? fill_turns(c, tr) : 0;
 }
 
-/* set up the curves of one plot, leaving out those without data (the title
- * names them); -1 out of memory */
-static int build_figure(dvp_figure *f, dvp_kind kind, const dv_plot_input *in) {
+/* set up the curves of one plot, series k in colour number colour[k], leaving
+ * out those without data (the title names them); -1 out of memory */
+static int build_figure(dvp_figure *f, dvp_kind kind, const dv_plot_input *in, const int *colour) {
   memset(f, 0, sizeof *f);
   f->kind = kind;
   f->window_end = isfinite(in->window_end) ? in->window_end : NAN;
@@ -179,7 +181,7 @@ static int build_figure(dvp_figure *f, dvp_kind kind, const dv_plot_input *in) {
     const dv_plot_series *s = k ? &in->series[k - 1] : NULL;
     if (kind == DVP_ERROR && !(s && s->reference)) continue; /* a reference has no error */
     dvp_curve *c = &f->c[f->ncurves];
-    if (set_curve(c, kind, s, in)) return -1;
+    if (set_curve(c, kind, s, k ? colour[k - 1] : 0, in)) return -1;
     const char *label = s ? s->label : "reference (thin disk)";
     if (curve_has_data(c)) {
       dvp_escape(c->label, sizeof c->label, label, "");
@@ -244,15 +246,18 @@ static void draw_ends(const dvp_curve *c) {
  * (a window of fewer than two points draws nothing strongly) */
 static void draw_curve(const dvp_curve *c) {
   const int strong = c->nstrong >= 2;
+  pllsty(c->style);
   if (!strong || c->nstrong < c->n) {
     plwidth(FAINT_WIDTH);
     plcol0(dvp_faint(c->colour));
     draw_run(c, strong ? c->nstrong - 1 : 0, c->n); /* joined to the strong part */
   }
-  if (!strong) return;
-  plwidth(c->colour == DVP_COL_FG ? 3.0 : STRONG_WIDTH);
-  plcol0(c->colour);
-  draw_run(c, 0, c->nstrong);
+  if (strong) {
+    plwidth(c->colour == DVP_COL_FG ? 3.0 : STRONG_WIDTH);
+    plcol0(c->colour);
+    draw_run(c, 0, c->nstrong);
+  }
+  pllsty(1);
 }
 
 /* the latest time drawn: the end of the run */
@@ -282,7 +287,7 @@ static void draw_legend(const dvp_figure *f, const dvp_mark_legend *marks, const
   for (size_t k = 0; k < f->ncurves; k++, n++) {
     opt[n] = PL_LEGEND_LINE; /* faint where nothing of it was compared */
     lcol[n] = scol[n] = f->c[k].nstrong >= 2 ? f->c[k].colour : dvp_faint(f->c[k].colour);
-    lstyle[n] = 1;
+    lstyle[n] = f->c[k].style;
     lwidth[n] = 2.0;
     text[n] = f->c[k].label;
   }
@@ -302,10 +307,10 @@ static void draw_legend(const dvp_figure *f, const dvp_mark_legend *marks, const
   }
   PLFLT w, h;
   const PLINT rows = (n + lay->columns - 1) / lay->columns;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x,
-           lay->y, lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, lay->columns, n, opt,
-           DVP_LEGEND_TEXT_OFFSET, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
-           lstyle, lwidth, scol, sscale, snum, sym);
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x, lay->y,
+           lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, lay->columns, n, opt, DVP_LEGEND_TEXT_OFFSET,
+           lay->scale, dvp_legend_spacing(lay->scale), 0.0, tcol, text, NULL, NULL, NULL, NULL,
+           lcol, lstyle, lwidth, scol, sscale, snum, sym);
 }
 
 /* the window: every drawn point (and every limit) with a margin; 0 when no point is drawn */
@@ -360,19 +365,23 @@ static void draw_figure(const void *arg) {
 }
 
 int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *err) {
-  if (!dir || !in || in->nseries > DV_PLOT_MAX_SERIES)
-    return dv_fail(err, DV_EINPUT, "dv_report_plot_scenario: bad arguments");
+  if (!dir || !in) return dv_fail(err, DV_EINPUT, "dv_report_plot_scenario: bad arguments");
+  if (in->nseries > DV_PLOT_MAX_SERIES)
+    return dv_fail(err, DV_EINPUT, "%s: %zu series to plot, at most %d", dir, in->nseries,
+                   DV_PLOT_MAX_SERIES);
   struct stat st;
   if (stat(dir, &st) != 0) return dv_fail(err, DV_ESYSTEM, "%s: %s", dir, strerror(errno));
   if (!S_ISDIR(st.st_mode)) return dv_fail(err, DV_ESYSTEM, "%s: not a directory", dir);
   if (!dvp_have_svg()) return dv_fail(err, DV_ESYSTEM, "PLplot has no svg driver");
+  int colour[DV_PLOT_MAX_SERIES]; /* the same in every plot */
+  dv_report_plot_series_colours(in, colour);
   int status = DV_OK;
   dvp_figure f = {0};
   for (int k = 0; k < DVP_NPLOTS && status == DV_OK; k++) {
     char path[PATH_MAX];
     if (snprintf(path, sizeof path, "%s/%s", dir, dv_report_plot_files[k]) >= (int)sizeof path)
       status = dv_fail(err, DV_ESYSTEM, "%s: path too long", dir);
-    else if (build_figure(&f, (dvp_kind)k, in) != 0)
+    else if (build_figure(&f, (dvp_kind)k, in, colour) != 0)
       status = dv_fail(err, DV_ESYSTEM, "%s: out of memory", dv_report_plot_files[k]);
     else
       status = dvp_write_svg(path, draw_figure, &f, err);

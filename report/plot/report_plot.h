@@ -8,8 +8,11 @@
  *   energy.svg       (E(t) - E(0)) / |E(0)| per engine and reference
  *
  * Each engine has its colour (dv_report_plot_engine_colour), the thin
- * reference is black. A series without a drawable point is left out and the
- * title says "(no data: NAME, ...)". What the verdict used is drawn strongly,
+ * reference is black; series that would share a colour are told apart
+ * (dv_report_plot_distinct_colours): another palette colour while one is
+ * free, then a dashed line in their own; legends take more columns, then
+ * smaller text, as many series need. A series without a drawable point is
+ * left out and the title says "(no data: NAME, ...)". What the verdict used is drawn strongly,
  * the rest faintly (the same colour, translucent, thinner): each engine's
  * curve up to the end of its compared window (on the error plot: to its
  * horizon, where its pointwise metrics stop), a reference's up to the latest
@@ -20,7 +23,8 @@
  * (dash-dotted, its colour), each engine's horizon before its window's end
  * (dotted, its colour, labelled "NAME horizon"), on the error plot each
  * engine's own theta limit (dashed, its colour, labelled; one black line,
- * "limit", when all agree), on theta.svg the turning points compared (up
+ * "limit", when all agree; past three engines, one line per value, black and
+ * "(N engines)" where several share it), on theta.svg the turning points compared (up
  * and down triangles at maxima and minima, in each run's colour, to its
  * window's end; on a reference, those an engine's theta_turning_err was
  * judged against). A reference that judged no engine (the thin disk in a
@@ -39,9 +43,11 @@
 #include <stddef.h>
 
 #include "run_compare.h"
+#include "run_scenario.h"
 #include "dv_error.h"
 
-#define DV_PLOT_MAX_SERIES 8
+/* every engine of a comparison and the matched reference drawn beside them */
+#define DV_PLOT_MAX_SERIES (DV_MAX_ENGINES + 1)
 
 typedef struct dv_plot_series {
   const char *label;        /* the engine's name, e.g. "mujoco": legend text and colour */
@@ -73,10 +79,24 @@ typedef struct dv_plot_input {
  * of the registry, a stable one for any other name */
 int dv_report_plot_engine_colour(const char *name);
 
+/* colours (dv_plot_curve.colour) for n curves of one plot that ask for want[k]
+ * (>= 1; 0 or less: any), no two alike, into colour[k]: the first to ask for
+ * a colour keeps it; the others, in order, take the palette's first colour
+ * nobody asked for or was given, and once none is left, the colour they asked
+ * for (any: the first) with the first dashed line it has not drawn */
+void dv_report_plot_distinct_colours(const int *want, size_t n, int *colour);
+
+/* the colour numbers (dv_plot_curve's) of in's series in every plot
+ * dv_report_plot_scenario draws, into colour[k]: their labels'
+ * (dv_report_plot_engine_colour), kept apart (dv_report_plot_distinct_colours);
+ * in->nseries <= DV_PLOT_MAX_SERIES */
+void dv_report_plot_series_colours(const dv_plot_input *in, int *colour);
+
 /* the names of the files dv_report_plot_scenario writes, NULL-terminated */
 extern const char *const dv_report_plot_files[];
 
-/* write the plots into the existing directory dir */
+/* write the plots into the existing directory dir; DV_EINPUT (nothing
+ * written) for a NULL argument or more than DV_PLOT_MAX_SERIES series */
 int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *err);
 
 /* ---- generic x-y plot ------------------------------------------------------
@@ -117,7 +137,8 @@ int dv_report_plot_scenario(const char *dir, const dv_plot_input *in, dv_error *
  * temporary file is removed, path is left as it was). Nothing is printed.
  * PLplot's state is global: not thread-safe.
  */
-#define DV_PLOT_MAX_CURVES 16
+/* a phase plane's: its level set's two halves, the reference and every engine */
+#define DV_PLOT_MAX_CURVES (DV_MAX_ENGINES + 3)
 
 enum { DV_PLOT_LOGX = 1, DV_PLOT_LOGY = 2, DV_PLOT_EQUAL = 4 };
 enum { DV_CURVE_LINE = 0, DV_CURVE_POINTS = 1, DV_CURVE_LINE_POINTS = 2 };
@@ -133,7 +154,8 @@ typedef struct dv_plot_curve {
                           an engine's is dv_report_plot_engine_colour (1 blue, 2 orange,
                           3 green, 4 red, 5 purple, 6 brown, 7 pink, 8 grey, 9 olive,
                           10 cyan, 11 navy, 12 dark green, 13 ochre, 14 maroon,
-                          15 magenta, 16 teal; 17 is 1 again) */
+                          15 magenta, 16 teal); 17 to 32 are 1 to 16 dashed, 33 to 48
+                          dashed otherwise, ...: 8 line patterns in turn */
 } dv_plot_curve;
 
 /* one SVG at path (written under a temporary name in path's directory and renamed) */

@@ -19,6 +19,7 @@ typedef struct dvp_curve {
   size_t n;
   size_t nstrong;    /* its first nstrong points are what the verdict used: drawn strongly */
   PLINT colour;      /* cmap0 index */
+  PLINT style;       /* line style (pllsty): 1 solid, else dashed where colours ran out */
   char label[128];   /* legend text, PLplot-escaped */
   int judged;        /* an engine's curve (not a reference's): its marks are drawn */
   int ranged;        /* its points set the axis ranges (a reference that judged nothing does not) */

@@ -25,6 +25,8 @@ enum {
   DVP_NCOLOURS = DVP_COL_FAINT + DVP_NPALETTE
 };
 
+#define DVP_NDASHES 8 /* line patterns: solid, then PLplot's seven dashed ones */
+
 #define DVP_PAGE_W 960       /* px */
 #define DVP_PAGE_H 500       /* px */
 #define DVP_PLOT_LIMIT 1e150 /* larger magnitudes are not drawn */
@@ -43,25 +45,36 @@ double dvp_ylabel_disp(int log, double labels);
 /* the translucent version of cmap0 colour c (foreground or series), c itself otherwise */
 PLINT dvp_faint(PLINT c);
 
+/* the cmap0 colour and line style (pllsty) of colour number c of a
+ * dv_plot_curve: 0 the foreground; c >= 1 palette colour (c - 1) % DVP_NPALETTE,
+ * pattern (c - 1) / DVP_NPALETTE (0 solid) of DVP_NDASHES in turn */
+void dvp_colour_style(int c, PLINT *colour, PLINT *style);
+
 /* the points of one curve, in plot coordinates */
 typedef struct dvp_points {
   const double *x, *y;
   size_t n;
 } dvp_points;
 
-/* where dvp_viewport put the legend: pllegend's position, offsets, columns
- * and line sample's length (plot_width) */
+/* where dvp_viewport put the legend: pllegend's position, offsets, columns,
+ * line sample's length (plot_width) and text size (text_scale) */
 typedef struct dvp_layout {
   PLINT position;
   double x, y;
   int columns;
   double line;
+  double scale;
 } dvp_layout;
+
+/* pllegend's text_spacing for text at scale: DVP_LEGEND_SPACING at DVP_LEGEND_SCALE,
+ * proportionally closer for smaller text (pllegend spaces by the default height) */
+double dvp_legend_spacing(double scale);
 
 /* set the viewport (after pladv): left_chars character heights left of the
  * frame for the y axis's labels and title, room right of it for a legend of
- * the nlines texts (PLplot text) in ncolumns columns, or below it when the
- * frame would be too narrow beside it (none: nlines 0) */
+ * the nlines texts (PLplot text) in ncolumns columns or more, as its height
+ * needs, or below it when the frame would be too narrow beside it; a legend
+ * too large for either in smaller text (report_plot_legend.c; none: nlines 0) */
 void dvp_viewport(const char *const *text, int nlines, int ncolumns, double left_chars,
                   dvp_layout *out);
 

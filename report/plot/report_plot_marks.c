@@ -4,12 +4,15 @@
  * runs go on after it, an engine's own window end where it stops earlier
  * (dash-dotted, its colour), each engine's horizon before that (dotted, its
  * colour, labelled along the line); on the error plot each engine's own theta
- * limit (dashed, its colour, labelled), or one black line when all agree; on
- * theta.svg the turning points theta_turning_err compared (triangles). On the
- * path, a diamond at the reference's contact point where the window ends.
+ * limit (dashed, its colour, labelled), or one black line when all agree (with
+ * more than LIMIT_LABELS engines, one line per value, black where engines
+ * share it, so that labels do not pile up); on theta.svg the turning points
+ * theta_turning_err compared (triangles). On the path, a diamond at the
+ * reference's contact point where the window ends.
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "report_plot_figure.h"
 #include "report_plot_internal.h"
@@ -19,6 +22,7 @@
 #define TURN_SCALE 0.7      /* of the default character height */
 #define LABEL_SCALE 0.7
 #define LABEL_BESIDE 0.012 /* a label along a vertical line: its middle this far off, of the range */
+#define LIMIT_LABELS 3  /* engines' limits labelled each with its name, at most */
 #define STYLE_LIMIT 2   /* pllsty: dashed */
 #define STYLE_HORIZON 3 /* dotted */
 #define STYLE_WINDOW 4  /* dash-dotted */
@@ -63,34 +67,61 @@ static void vline(double t, const double r[4], PLINT style, PLINT colour) {
   pllsty(1);
 }
 
-/* the error plot's limits: one labelled black line, or one per engine in its colour */
+/* whether log10 limits a and b read the same in a label (%.3g rad) */
+static int reads_as(double a, double b) {
+  char ta[32], tb[32];
+  snprintf(ta, sizeof ta, "%.3g", pow(10.0, a));
+  snprintf(tb, sizeof tb, "%.3g", pow(10.0, b));
+  return !strcmp(ta, tb);
+}
+
+/* the engines of f whose limit reads as limit; the first of them into *first */
+static int sharing(const dvp_figure *f, double limit, size_t *first) {
+  int n = 0;
+  for (size_t k = 0; k < f->ncurves; k++)
+    if (isfinite(f->c[k].limit) && reads_as(f->c[k].limit, limit) && !n++) *first = k;
+  return n;
+}
+
+/* a horizontal limit line at log10 limit, dashed, in colour, its text staggered along it by nth */
+static void limit_line(double limit, PLINT colour, const char *text, int nth, const double r[4]) {
+  const double dx = r[1] - r[0], dy = r[3] - r[2];
+  plcol0(colour);
+  pllsty(STYLE_LIMIT);
+  pljoin(r[0], limit, r[1], limit);
+  pllsty(1);
+  /* labels staggered along the line, so equal-looking limits stay apart */
+  plptex(r[1] - (0.02 + 0.3 * (nth % 3)) * dx, limit + 0.04 * dy, 1, 0, 1, text);
+}
+
+/* the error plot's limits: one labelled black line when all agree; else one
+ * per engine in its colour, labelled with its name, where at most
+ * LIMIT_LABELS engines have one; else one per value as its label reads it,
+ * black where engines share it, labelled with how many */
 static void draw_limits(const dvp_figure *f, const double r[4]) {
   double one;
   const int differ = dvp_limits_differ(f, &one);
   if (!isfinite(one)) return;
-  const double dx = r[1] - r[0], dy = r[3] - r[2];
   plschr(0, LABEL_SCALE);
-  int nth = 0;
+  int nth = 0, limited = 0;
+  for (size_t k = 0; k < f->ncurves; k++) limited += isfinite(f->c[k].limit);
   for (size_t k = 0; k < f->ncurves && differ; k++) {
     const dvp_curve *c = &f->c[k];
+    size_t first = k;
     if (!isfinite(c->limit)) continue;
+    const int n = limited > LIMIT_LABELS ? sharing(f, c->limit, &first) : 1;
+    if (first != k) continue; /* its value is drawn */
     char text[160];
-    snprintf(text, sizeof text, "%s limit %.3g rad", c->label, pow(10.0, c->limit));
-    plcol0(c->colour);
-    pllsty(STYLE_LIMIT);
-    pljoin(r[0], c->limit, r[1], c->limit);
-    pllsty(1);
-    /* labels staggered along the line, so equal-looking limits stay apart */
-    plptex(r[1] - (0.02 + 0.3 * (nth++ % 3)) * dx, c->limit + 0.04 * dy, 1, 0, 1, text);
+    if (n > 1)
+      snprintf(text, sizeof text, "limit %.3g rad (%d engines)", pow(10.0, c->limit), n);
+    else
+      snprintf(text, sizeof text, "%s limit %.3g rad", c->label, pow(10.0, c->limit));
+    limit_line(c->limit, n > 1 ? DVP_COL_FG : c->colour, text, nth++, r);
   }
   if (!differ) {
     char text[64];
     snprintf(text, sizeof text, "limit %.3g rad", pow(10.0, one));
-    plcol0(DVP_COL_FG);
-    pllsty(STYLE_LIMIT);
-    pljoin(r[0], one, r[1], one);
-    pllsty(1);
-    plptex(r[1] - 0.02 * dx, one + 0.04 * dy, 1, 0, 1, text);
+    limit_line(one, DVP_COL_FG, text, 0, r);
   }
   plschr(0, 1.0);
 }

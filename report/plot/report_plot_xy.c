@@ -31,6 +31,7 @@ typedef struct xy_curve {
   int style, any;  /* any: a point to draw */
   int zeros;       /* every y is 0: on a log axis, below it rather than missing */
   PLINT colour;    /* cmap0 index */
+  PLINT pattern;   /* line style (pllsty): 1 solid, dashed for colour numbers past the palette */
   char label[128]; /* PLplot-escaped */
 } xy_curve;
 
@@ -63,7 +64,7 @@ static int fill_curve(xy_curve *c, const dv_plot_curve *in, int flags) {
   c->n = in->n;
   c->style = in->style;
   c->marked = in->marked;
-  c->colour = in->colour == 0 ? DVP_COL_FG : DVP_COL_SERIES + (in->colour - 1) % DVP_NPALETTE;
+  dvp_colour_style(in->colour, &c->colour, &c->pattern);
   if (c->n > 0) {
     c->x = malloc(c->n * sizeof *c->x);
     c->y = malloc(c->n * sizeof *c->y);
@@ -127,7 +128,9 @@ static void draw_curve(const xy_curve *c) {
       glyphs(c, i, i + 1, DOT);
       plschr(0, 1.0);
     } else if (line) {
+      pllsty(c->pattern);
       dvp_line(&c->x[i], &c->y[i], j - i);
+      pllsty(1);
     }
     if (dots) {
       plschr(0, DOT_SCALE);
@@ -160,11 +163,6 @@ static int legend_texts(const xy_figure *f, const char **text) {
   return n;
 }
 
-/* the legend's columns for nlines lines: two for more than 8 (up to 17 lines) */
-static int legend_columns(int nlines) {
-  return nlines > 8 ? 2 : 1;
-}
-
 /* a legend right of the frame: every labelled curve with data, then the marks if any */
 static void draw_legend(const xy_figure *f, const dvp_layout *lay) {
   enum { M = DV_PLOT_MAX_CURVES + 1 };
@@ -180,7 +178,7 @@ static void draw_legend(const xy_figure *f, const dvp_layout *lay) {
                                            : PL_LEGEND_LINE | PL_LEGEND_SYMBOL;
     tcol[n] = DVP_COL_FG;
     lcol[n] = scol[n] = c->colour;
-    lstyle[n] = 1;
+    lstyle[n] = c->pattern;
     lwidth[n] = c->colour == DVP_COL_FG ? 3.0 : 2.0;
     sscale[n] = DOT_SCALE;
     snum[n] = 3;
@@ -200,10 +198,10 @@ static void draw_legend(const xy_figure *f, const dvp_layout *lay) {
   if (n == 0) return;
   const PLINT columns = lay->columns, rows = (n + columns - 1) / columns;
   PLFLT w, h;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x,
-           lay->y, lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt,
-           DVP_LEGEND_TEXT_OFFSET, DVP_LEGEND_SCALE, DVP_LEGEND_SPACING, 0.0, tcol, text, NULL, NULL, NULL, NULL, lcol,
-           lstyle, lwidth, scol, sscale, snum, sym);
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, lay->position, lay->x, lay->y,
+           lay->line, DVP_COL_BG, DVP_COL_FG, 1, rows, columns, n, opt, DVP_LEGEND_TEXT_OFFSET,
+           lay->scale, dvp_legend_spacing(lay->scale), 0.0, tcol, text, NULL, NULL, NULL, NULL,
+           lcol, lstyle, lwidth, scol, sscale, snum, sym);
 }
 
 /* draw figure f (an xy_figure *) on the current, initialised stream */
@@ -222,7 +220,7 @@ static void draw_figure(const void *arg) {
   const int nlines = legend_texts(f, text);
   const double disp = dvp_ylabel_disp(logy, dvp_ylabels_width(r[2], r[3], logy));
   dvp_layout lay;
-  dvp_viewport(text, nlines, legend_columns(nlines), disp, &lay);
+  dvp_viewport(text, nlines, 1, disp, &lay); /* more columns where the page needs them */
   if (f->flags & DV_PLOT_EQUAL) dvp_equal_aspect(r);
   plwind(r[0], r[1], r[2], r[3]);
   dvp_axes ax;
