@@ -88,14 +88,15 @@ static void motion_size(const dv_traj *ref, double t_end, const dv_engine_result
 }
 
 /* where the shadow reaches the motion's size (INFINITY: never), never
- * within the early window; which measure reached it into *which (0 theta, 1 path) */
+ * within the early window; which measure reached it into *which (0 theta, 1
+ * path, 2 a nudged run ended there) */
 static double unpredictable_from(const dv_traj *ref, const dv_shadow *sh, double t_end,
                                  double early_until, const double size[2], int *which) {
   for (size_t i = 0; i < ref->n && i < sh->n && ref->s[i].t <= t_end + 1e-12; i++) {
     if (ref->s[i].t <= early_until + 1e-12) continue;
-    *which = !(sh->env[DV_SHADOW_THETA][i] >= size[0]);
-    if (sh->env[DV_SHADOW_THETA][i] >= size[0] || sh->env[DV_SHADOW_PATH][i] >= size[1])
-      return ref->s[i].t;
+    const double th = sh->env[DV_SHADOW_THETA][i], path = sh->env[DV_SHADOW_PATH][i];
+    *which = isinf(th) || isinf(path) ? 2 : !(th >= size[0]);
+    if (th >= size[0] || path >= size[1]) return ref->s[i].t;
   }
   return INFINITY;
 }
@@ -152,7 +153,9 @@ static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_res
   if (turns) excuse(r, DV_TURNING_LAG, lag_most);
   r->shadow_at_end[0] = r->shadow_at_end[1] = 0.0;
   for (size_t i = 0; i < n && i < sh->n && ref->s[i].t <= fmin(stop, t_end) + 1e-12; i++)
-    r->shadow_at_end[0] = sh->env[DV_SHADOW_THETA][i], r->shadow_at_end[1] = sh->env[DV_SHADOW_PATH][i];
+    for (int k = 0; k < 2; k++) /* the last finite spread: a nudged run may end at the stop */
+      if (isfinite(sh->env[k ? DV_SHADOW_PATH : DV_SHADOW_THETA][i]))
+        r->shadow_at_end[k] = sh->env[k ? DV_SHADOW_PATH : DV_SHADOW_THETA][i];
   r->motion_size[0] = size[0], r->motion_size[1] = size[1];
   r->unpredictable_by = which;
   status = 0;
@@ -176,7 +179,12 @@ static void shadow_words(const dv_comparison *c, dv_engine_result *r) {
            "that spread, the early window without it",
            r->early_until, r->early_err, rates, r->shadow_at_end[0], r->shadow_at_end[1],
            r->pointwise_end);
-  if (isfinite(r->horizon) && n > 0 && (size_t)n < sizeof r->horizon_why)
+  if (isfinite(r->horizon) && r->unpredictable_by == 2 && n > 0 && (size_t)n < sizeof r->horizon_why)
+    snprintf(r->horizon_why + n, sizeof r->horizon_why - (size_t)n,
+             "; there a reference nudged by it has ended (lain down): past it the scene predicts "
+             "nothing pointwise; amplification %s",
+             growth);
+  else if (isfinite(r->horizon) && n > 0 && (size_t)n < sizeof r->horizon_why)
     snprintf(r->horizon_why + n, sizeof r->horizon_why - (size_t)n,
              "; there the spread reaches the motion's size (%.3g %s, %s): past it the scene "
              "predicts nothing pointwise; amplification %s",

@@ -79,7 +79,8 @@ typedef struct dv_engine_result {
   double shadow_at_end[2];     /* rad, m: the shadow in theta and the contact point where
                                   pointwise judging ends */
   double motion_size[2];       /* rad, m: the motion's size the shadow is held against */
-  int unpredictable_by;        /* which of those the shadow reached (0 theta, 1 path) */
+  int unpredictable_by; /* which of those the shadow reached (0 theta, 1 path, 2 a nudged run
+                           ended: lay down sooner) */
   int pass;
   dv_verdict verdict;
   size_t nfailures;
