@@ -117,12 +117,12 @@ static void excuse(dv_engine_result *r, dv_metric_id m, double unexcused) {
 static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_result *r) {
   const size_t n = ref->n;
   const double t_end = r->vs_ref.t_window;
-  double *err[3], size[2], most[3] = {0, 0, 0}, sq[3] = {0, 0, 0};
-  for (int k = 0; k < 3; k++) err[k] = malloc((n ? n : 1) * sizeof(double));
-  double *tk = malloc((r->traj.n + n + 1) * sizeof *tk), *lag = malloc((r->traj.n + n + 1) * sizeof *lag);
-  int status = -1, which = 0;
-  if (!err[0] || !err[1] || !err[2] || !tk || !lag || dv_shadow_errors(&r->traj, ref, t_end, err))
-    goto cleanup;
+  double size[2], most[3] = {0, 0, 0}, sq[3] = {0, 0, 0};
+  dv_shadow_scratch w;
+  int which = 0;
+  if (dv_shadow_scratch_alloc(&w, n, r->traj.n) || dv_shadow_errors(&r->traj, ref, t_end, w.err))
+    return dv_shadow_scratch_free(&w), -1;
+  double *const *err = w.err, *tk = w.t, *lag = w.lag;
   motion_size(ref, t_end, r, size);
   const double stop = unpredictable_from(ref, sh, t_end, r->early_until, size, &which);
   size_t count = 0;
@@ -158,12 +158,8 @@ static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_res
         r->shadow_at_end[k] = sh->env[k ? DV_SHADOW_PATH : DV_SHADOW_THETA][i];
   r->motion_size[0] = size[0], r->motion_size[1] = size[1];
   r->unpredictable_by = which;
-  status = 0;
-cleanup:
-  for (int k = 0; k < 3; k++) free(err[k]);
-  free(tk);
-  free(lag);
-  return status;
+  dv_shadow_scratch_free(&w);
+  return 0;
 }
 
 /* the shadow's story in words: the early errors, the spread, where it ends */

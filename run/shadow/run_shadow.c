@@ -63,31 +63,38 @@ double dv_shadow_at(const dv_shadow *s, const dv_traj *ref, dv_shadow_kind kind,
   return s->n ? s->env[kind][i] : 0.0;
 }
 
+int dv_shadow_scratch_alloc(dv_shadow_scratch *s, size_t nref, size_t ne) {
+  for (int k = 0; k < 3; k++) s->err[k] = malloc((nref ? nref : 1) * sizeof(double));
+  s->t = malloc((nref + ne + 1) * sizeof *s->t);
+  s->lag = malloc((nref + ne + 1) * sizeof *s->lag);
+  return s->err[0] && s->err[1] && s->err[2] && s->t && s->lag ? 0 : -1;
+}
+
+void dv_shadow_scratch_free(dv_shadow_scratch *s) {
+  for (int k = 0; k < 3; k++) free(s->err[k]);
+  free(s->t);
+  free(s->lag);
+  memset(s, 0, sizeof *s);
+}
+
 int dv_shadow_add_run(dv_shadow *into, const dv_traj *run, const dv_traj *ref) {
   const size_t n = ref->n;
-  double *err[3] = {malloc((n ? n : 1) * sizeof(double)), malloc((n ? n : 1) * sizeof(double)),
-                    malloc((n ? n : 1) * sizeof(double))};
-  double *tk = malloc((run->n + ref->n + 1) * sizeof *tk);
-  double *lag = malloc((run->n + ref->n + 1) * sizeof *lag);
-  int status = -1;
-  if (!err[0] || !err[1] || !err[2] || !tk || !lag || dv_shadow_errors(run, ref, INFINITY, err))
-    goto cleanup;
-  const size_t nturns = dv_run_turning_lags(run, ref, INFINITY, tk, lag, NULL);
+  dv_shadow_scratch w;
+  if (dv_shadow_scratch_alloc(&w, n, run->n) || dv_shadow_errors(run, ref, INFINITY, w.err))
+    return dv_shadow_scratch_free(&w), -1;
+  const size_t nturns = dv_run_turning_lags(run, ref, INFINITY, w.t, w.lag, NULL);
   double most[3] = {0.0, 0.0, 0.0}, most_lag = 0.0;
   for (size_t i = 0; i < n && i < into->n; i++) {
     for (int k = 0; k < 3; k++) /* NAN: past the run's end, or a point the phase skipped */
-      most[k] = isnan(err[k][i]) ? (k == DV_SHADOW_PHASE && !isnan(err[0][i]) ? most[k] : INFINITY)
-                                 : fmax(most[k], err[k][i]);
+      most[k] = isnan(w.err[k][i])
+                    ? (k == DV_SHADOW_PHASE && !isnan(w.err[0][i]) ? most[k] : INFINITY)
+                    : fmax(most[k], w.err[k][i]);
     for (size_t j = 0; j < nturns; j++)
-      if (tk[j] <= ref->s[i].t + 1e-12) most_lag = fmax(most_lag, fabs(lag[j]));
-    if (isnan(err[DV_SHADOW_THETA][i])) most_lag = INFINITY;
+      if (w.t[j] <= ref->s[i].t + 1e-12) most_lag = fmax(most_lag, fabs(w.lag[j]));
+    if (isnan(w.err[DV_SHADOW_THETA][i])) most_lag = INFINITY;
     for (int k = 0; k < 3; k++) into->env[k][i] = fmax(into->env[k][i], most[k]);
     into->env[DV_SHADOW_LAG][i] = fmax(into->env[DV_SHADOW_LAG][i], most_lag);
   }
-  status = 0;
-cleanup:
-  for (int k = 0; k < 3; k++) free(err[k]);
-  free(tk);
-  free(lag);
-  return status;
+  dv_shadow_scratch_free(&w);
+  return 0;
 }

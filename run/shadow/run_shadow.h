@@ -46,6 +46,15 @@ int dv_shadow_add_run(dv_shadow *into, const dv_traj *run, const dv_traj *ref);
  * err[DV_SHADOW_THETA .. DV_SHADOW_PHASE] (ref->n each); 0, or -1 out of memory */
 int dv_shadow_errors(const dv_traj *e, const dv_traj *ref, double t_end, double *err[3]);
 
+/* room for an error series against a reference of nref samples (err[3],
+ * dv_shadow_errors) and for the turning lags of a run of ne samples against
+ * it (t, lag: dv_run_turning_lags) */
+typedef struct dv_shadow_scratch {
+  double *err[3], *t, *lag;
+} dv_shadow_scratch;
+int dv_shadow_scratch_alloc(dv_shadow_scratch *s, size_t nref, size_t ne); /* 0, or -1 */
+void dv_shadow_scratch_free(dv_shadow_scratch *s);
+
 /* the spread of kind at time t (the reference's first sample at or after t;
  * its last past the end) */
 double dv_shadow_at(const dv_shadow *s, const dv_traj *ref, dv_shadow_kind kind, double t);
