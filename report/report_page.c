@@ -100,13 +100,20 @@ static const char css[] =
     "figure{display:inline-block;margin:.4em;vertical-align:top;max-width:48%}"
     "img{max-width:100%;border:1px solid #ddd}";
 
-/* a number with its limit: "0.0012 / 0.01" (an en dash for either one absent) */
+/* a number with its limit: "0.0012 / 0.01" (an en dash for either one absent);
+ * where the shadow excused some of it, the limit as the scene's plus that
+ * spread: "0.043 / 0.01 + 0.00011" */
 static void put_against(FILE *fp, const cJSON *eng, const char *metric) {
   const cJSON *l = item(item(eng, "limits"), metric);
   const cJSON *v = l ? item(l, "value") : item(eng, metric);
   const cJSON *lim = l ? item(l, "limit") : item(item(eng, "tolerances"), metric);
+  const cJSON *spread = l ? item(l, "spread") : NULL;
   dvs_put_num(fp, "<td class=\"n\">", v, " / ");
-  dvs_put_num(fp, "", lim, "</td>");
+  if (cJSON_IsNumber(spread) && spread->valuedouble > 0.0 && cJSON_IsNumber(lim) &&
+      isfinite(lim->valuedouble))
+    fprintf(fp, "%.3g + %.2g</td>", lim->valuedouble - spread->valuedouble, spread->valuedouble);
+  else
+    dvs_put_num(fp, "", lim, "</td>");
 }
 
 /* the line that decided eng's verdict; the verdict's words from its limits
@@ -124,7 +131,7 @@ static void put_table(FILE *fp, const cJSON *engines) {
   fputs("<table>\n<colgroup><col class=\"e\" /><col /><col class=\"j\" />"
         "<col class=\"n\" /><col class=\"n\" /><col class=\"c\" /></colgroup>\n"
         "<thead><tr><th>engine</th><th>verdict: what decided it</th><th>judged against</th>"
-        "<th>theta err / limit (rad)</th><th>path err / limit (m)</th>"
+        "<th>theta err / limit + spread (rad)</th><th>path err / limit + spread (m)</th>"
         "<th title=\"wall-clock s per simulated s\">cost (s/s)</th></tr></thead>\n<tbody>\n",
         fp);
   cJSON_ArrayForEach(eng, engines) {
