@@ -7,9 +7,11 @@ set(DV_SLOW_TESTS
     cli/analyze_range cli/verify_converges cli/progress_line
     # end-to-end repeats of code the quick tier runs in shorter tests (as the sanitizer
     # build's list says, tests/CMakeLists.txt): the hoop's horizon and quick cause
-    # (timing_horizon, cli/cause_quick), suite --verify (verify_judge, json_schemas),
+    # (shadow_fall, cli/cause_quick), suite --verify (verify_judge, json_schemas),
     # the settings choice's report and cause (cli/settings_choice_deterministic, verdicts)
     cli/hoop cli/suite_verify cli/settings_choice_reported cli/settings_choice_cause
+    # the objects of issue 48 (a hoop for 10 s, a washer) in every engine: 60 s
+    shadow_objects
     # what the machine has: Node, MPI, an install, a fuzzer built on its own
     adapters_node mpi package fuzz_scenario
     # time limits: waits that must outlast a limit (20-50 s)

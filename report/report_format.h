@@ -32,7 +32,9 @@
  *                                  numbers (null: not measurable, or
  *                                  infinite) over the whole compared window,
  *                                  against the reference of the scene's body
- *                                  (an engine of another body: not judged),
+ *                                  (an engine of another body: not judged);
+ *                                  limits.METRIC.value is the same where it
+ *                                  is judged (a pointwise one to pointwise_end),
  *         "wall_per_sim_s": s per simulated s; null for a run shorter than
  *                           one output_dt,
  *         "wall_s": s, the run's wall-clock time (the timing fields: wall_*),

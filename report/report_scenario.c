@@ -163,7 +163,7 @@ static cJSON *amplification_json(const dv_amplification *a) {
 }
 
 static cJSON *engine_json(const dv_comparison *c, const dv_engine_result *r) {
-  cJSON *o = metrics_json(r->vs_ref.value);
+  cJSON *o = metrics_json(r->whole); /* over the whole window; limits: where each is judged */
   const double sim = r->traj.n ? r->traj.s[r->traj.n - 1].t : 0.0;
   cJSON_AddItemToObject(o, "wall_per_sim_s",
                         dv_io_json_number(dv_run_cost_rate(r->wall_s, sim, c->sc->output_dt)));
@@ -500,8 +500,8 @@ void dv_report_scenario_print(FILE *fp, const dv_comparison *c) {
     dv_run_body_words(r->half_thickness, body, sizeof body);
     fprintf(fp, "%-24s %-8s %-18s theta %s  path %s  %s  %s\n", c->sc->name, r->engine->name,
             dv_run_verdict_name(r->verdict),
-            measured(th, sizeof th, "%.2e rad", r->vs_ref.value[DV_THETA_MAX_ERR]),
-            measured(path, sizeof path, "%.2e m", r->vs_ref.value[DV_PATH_MAX_ERR]), body,
+            measured(th, sizeof th, "%.2e rad", r->whole[DV_THETA_MAX_ERR]),
+            measured(path, sizeof path, "%.2e m", r->whole[DV_PATH_MAX_ERR]), body,
             r->pass ? "pass" : "FAIL");
     fprintf(fp, "    %s\n", r->decided);
     if (r->reference_note[0]) fprintf(fp, "    %s\n", r->reference_note);

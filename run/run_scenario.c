@@ -101,11 +101,13 @@ static double unpredictable_from(const dv_traj *ref, const dv_shadow *sh, double
   return INFINITY;
 }
 
-/* m's limit widened by what the shadow excuses of its value: unexcused is
- * the value judged, so value <= limit + excused exactly when unexcused <= limit */
-static void excuse(dv_engine_result *r, dv_metric_id m, double unexcused) {
-  const double v = r->vs_ref.value[m];
-  r->excused[m] = isfinite(v) && isfinite(unexcused) ? fmax(0.0, v - unexcused) : 0.0;
+/* m judged: its value where it is judged (the whole window's stays in
+ * whole), and its limit widened by what the shadow excuses of it: unexcused
+ * is what is held against the limit, so value <= limit + excused exactly
+ * when unexcused <= limit */
+static void excuse(dv_engine_result *r, dv_metric_id m, double judged, double unexcused) {
+  r->vs_ref.value[m] = judged;
+  r->excused[m] = isfinite(judged) && isfinite(unexcused) ? fmax(0.0, judged - unexcused) : 0.0;
   if (isfinite(r->tolerance[m])) r->tolerance[m] += r->excused[m];
 }
 
@@ -117,7 +119,7 @@ static void excuse(dv_engine_result *r, dv_metric_id m, double unexcused) {
 static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_result *r) {
   const size_t n = ref->n;
   const double t_end = r->vs_ref.t_window;
-  double size[2], most[3] = {0, 0, 0}, sq[3] = {0, 0, 0};
+  double size[2], most[3] = {0, 0, 0}, sq[3] = {0, 0, 0}, raw[3] = {0, 0, 0}, raw_sq[3] = {0, 0, 0};
   dv_shadow_scratch w;
   int which = 0;
   if (dv_shadow_scratch_alloc(&w, n, r->traj.n) || dv_shadow_errors(&r->traj, ref, t_end, w.err))
@@ -125,32 +127,34 @@ static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_res
   double *const *err = w.err, *tk = w.t, *lag = w.lag;
   motion_size(ref, t_end, r, size);
   const double stop = unpredictable_from(ref, sh, t_end, r->early_until, size, &which);
-  size_t count = 0;
-  for (size_t i = 0; i < n && i < sh->n; i++) {
+  size_t count = 0; /* the samples judged: to where the scene predicts nothing pointwise */
+  for (size_t i = 0; i < n && i < sh->n && ref->s[i].t < stop; i++) {
     if (isnan(err[DV_SHADOW_THETA][i])) continue;
     count++;
-    if (!(ref->s[i].t < stop)) continue; /* past it the scene predicts nothing pointwise */
     const int early = ref->s[i].t <= r->early_until + 1e-12;
     for (int k = 0; k < 3; k++) {
-      const double x = isnan(err[k][i]) ? 0.0 : fmax(0.0, err[k][i] - (early ? 0.0 : sh->env[k][i]));
-      most[k] = fmax(most[k], x);
-      sq[k] += x * x;
+      const double e = isnan(err[k][i]) ? 0.0 : err[k][i];
+      const double x = fmax(0.0, e - (early ? 0.0 : sh->env[k][i]));
+      most[k] = fmax(most[k], x), sq[k] += x * x;
+      raw[k] = fmax(raw[k], e), raw_sq[k] += e * e;
     }
   }
   r->pointwise_end = fmin(stop, t_end);
   r->horizon = stop;
   if (count) {
-    excuse(r, DV_THETA_MAX_ERR, most[DV_SHADOW_THETA]);
-    excuse(r, DV_THETA_RMS_ERR, sqrt(sq[DV_SHADOW_THETA] / count));
-    excuse(r, DV_PATH_MAX_ERR, most[DV_SHADOW_PATH]);
-    excuse(r, DV_PATH_RMS_ERR, sqrt(sq[DV_SHADOW_PATH] / count));
-    excuse(r, DV_PHASE_ERR, most[DV_SHADOW_PHASE]);
+    excuse(r, DV_THETA_MAX_ERR, raw[DV_SHADOW_THETA], most[DV_SHADOW_THETA]);
+    excuse(r, DV_THETA_RMS_ERR, sqrt(raw_sq[DV_SHADOW_THETA] / count),
+           sqrt(sq[DV_SHADOW_THETA] / count));
+    excuse(r, DV_PATH_MAX_ERR, raw[DV_SHADOW_PATH], most[DV_SHADOW_PATH]);
+    excuse(r, DV_PATH_RMS_ERR, sqrt(raw_sq[DV_SHADOW_PATH] / count),
+           sqrt(sq[DV_SHADOW_PATH] / count));
+    excuse(r, DV_PHASE_ERR, raw[DV_SHADOW_PHASE], most[DV_SHADOW_PHASE]);
   }
   const size_t turns = dv_run_turning_lags(&r->traj, ref, t_end, tk, lag, NULL);
   double lag_most = 0.0;
   for (size_t k = 0; k < turns; k++)
     lag_most = fmax(lag_most, fmax(0.0, fabs(lag[k]) - dv_shadow_at(sh, ref, DV_SHADOW_LAG, tk[k])));
-  if (turns) excuse(r, DV_TURNING_LAG, lag_most);
+  if (turns) excuse(r, DV_TURNING_LAG, r->vs_ref.value[DV_TURNING_LAG], lag_most);
   r->shadow_at_end[0] = r->shadow_at_end[1] = 0.0;
   for (size_t i = 0; i < n && i < sh->n && ref->s[i].t <= fmin(stop, t_end) + 1e-12; i++)
     for (int k = 0; k < 2; k++) /* the last finite spread: a nudged run may end at the stop */
@@ -598,6 +602,7 @@ static int judge_against(dv_comparison *c, const dv_comparison *refs, const dv_s
              "conserve them",
              r->half_thickness);
   }
+  memcpy(r->whole, r->vs_ref.value, sizeof r->whole);
   if (shadowed) {
     status = judge_shadowed(ref, &sh, r);
     dv_shadow_free(&sh);

@@ -76,6 +76,8 @@ typedef struct dv_engine_result {
   int other_body; /* it simulated another body than the scene's (not judged: cannot model) */
   double excused[DV_NMETRICS]; /* of each value, what the shadow excused (run_shadow.h): its
                                   tolerance is its limit plus this */
+  double whole[DV_NMETRICS];   /* each metric over the whole compared window (vs_ref: where it
+                                  is judged, to pointwise_end for a pointwise one) */
   double shadow_at_end[2];     /* rad, m: the shadow in theta and the contact point where
                                   pointwise judging ends */
   double motion_size[2];       /* rad, m: the motion's size the shadow is held against */
