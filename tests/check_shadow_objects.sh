@@ -51,7 +51,7 @@ INI
 row() { jq -r ".engines.$2 | [.outcome, .theta_max_err, .limits.theta_max_err.spread] | @tsv" "$1"; }
 "$dv" compare hoop.ini --engines mujoco,bullet,dart --cause none --out out --quiet >hoop.out 2>&1
 for e in mujoco:0.3 bullet:0.04 dart:0.07; do
-  read -r outcome err spread <<<"$(row out/hoop/report.json "${e%%:*}")"
+  IFS=$'\t' read -r outcome err spread <<<"$(row out/hoop/report.json "${e%%:*}")"
   check '[ "$outcome" = "exceeds tolerance" ] && awk -v e="$err" -v s="$spread" -v m="${e#*:}" "BEGIN { exit !(e > m && s < 1e-3) }"' \
     "hoop: ${e%%:*} $outcome, theta $err rad over the window (spread $spread): want a failure over ${e#*:} rad"
 done
@@ -60,7 +60,7 @@ adapters=$("$dv" engines | grep -E '^[a-z0-9_]+ +.*\]$' | grep -v 'not available
 "$dv" compare washer.ini --engines "mujoco,bullet${adapters:+,$adapters}" --cause none --out out \
   --quiet >washer.out 2>&1
 for e in mujoco bullet; do
-  read -r outcome err spread <<<"$(row out/washer/report.json $e)"
+  IFS=$'\t' read -r outcome err spread <<<"$(row out/washer/report.json $e)"
   check '[ "$outcome" = "exceeds tolerance" ] && awk -v e="$err" -v s="$spread" "BEGIN { exit !(e > 0.03 && s < 1e-3) }"' \
     "washer: $e $outcome, theta $err rad (spread $spread): want a failure over 0.03 rad"
 done
