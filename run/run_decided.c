@@ -81,7 +81,7 @@ static void turning_words(const dv_traj *eng, const dv_traj *ref, double t_end, 
   else if (fabs(w.lag) < 5e-4)
     snprintf(out, size, "%zu%s %s, on time", w.ordinal, sfx, kind);
   else
-    snprintf(out, size, "%zu%s %s %.2g ms %s", w.ordinal, sfx, kind, 1e3 * fabs(w.lag),
+    snprintf(out, size, "%zu%s %s %.3g ms %s", w.ordinal, sfx, kind, 1e3 * fabs(w.lag),
              w.lag < 0 ? "early" : "late");
 }
 
@@ -104,7 +104,7 @@ static void lag_words(const dv_traj *eng, const dv_traj *ref, double t_end, char
       snprintf(out, size, "the reference's %zu%s %s, its own past the window", id[w].ordinal, sfx,
                kind);
     else
-      snprintf(out, size, "%zu%s %s %.2g ms %s", id[w].ordinal, sfx, kind, 1e3 * fabs(lag[w]),
+      snprintf(out, size, "%zu%s %s %.3g ms %s", id[w].ordinal, sfx, kind, 1e3 * fabs(lag[w]),
                lag[w] < 0 ? "early" : "late");
   }
   free(t);
