@@ -10,12 +10,14 @@
 # it fails, judged over the whole window, the turning lag adding up. Planted
 # wrong engines, the reference's own run altered: a theta offset 0.05 t^2 rad
 # (theta_max_err), a period 5% longer after the first turn (turning_lag, its
-# periods listed), a nutation 3% wider (theta_turning_err). Measured with
+# periods listed), a nutation 3% wider (theta_turning_err); and on a steady circle theta
+# off by a constant, 0.97 and 1.03 of the limit, on either side of it. Measured with
 # `diskval simulate` each engine, then `diskval judge`, report.json.
 set -u
 . "$(dirname "$0")/check_lib.sh"
 export LC_ALL=C
 dv=${1:?usage: check_shadow_fall.sh DISKVAL}
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
@@ -77,4 +79,28 @@ awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next }
 judge w_wide wide.csv; code=$?
 check '[ $code -eq 1 ] && grep -q "quarter_fall: w_wide: theta_turning_err = [0-9.e-]* rad > 0.01[0-9]* rad " w_wide.out' \
   "a nutation 3% wide: exit $code, want 1 on theta_turning_err: $(cat w_wide.out)"
+
+# an early error is the engine's own: theta off by a constant on a steady circle
+# (tests/data/short_circle.ini, output_dt 0.01 s), eased in over its first 0.05 s, is held
+# against the limit itself in the early window, whatever the spread it makes later (the
+# nudge of 0.0103 rad spreads the reference by 0.01 rad at once): 0.97 of the limit
+# agrees, 1.03 fails on theta_max_err (energy and invariants lifted: an offset theta is
+# another energy)
+circle=$here/data/short_circle.ini
+"$dv" simulate "$circle" --engine reduced --out circle.csv --quiet 2>err
+for k in 0.97 1.03; do
+  awk -F, -v d="$(awk -v k=$k 'BEGIN { printf "%.17g", 0.01 * k }')" 'BEGIN { OFS = ","; T = 0.05 }
+    NR == 1 { print; next }
+    { u = $1 / T; if (u > 1) u = 1; $2 += d * u * u * (3 - 2 * u); $9 += d * 6 * u * (1 - u) / T; print }' \
+    circle.csv | cut -d, -f1-11 >"offset_$k.csv"
+  "$dv" judge "$circle" "offset_$k.csv" --name "o_$k" --set tolerance.energy_drift=100 \
+    --set tolerance.invariant_drift=100 --out out >"o_$k.out" 2>&1
+  code=$?
+  if [ $k = 0.97 ]; then
+    check '[ $code -eq 0 ]' "theta 0.97 of the limit off: exit $code, want 0: $(cat o_$k.out)"
+  else
+    check '[ $code -eq 1 ] && grep -q "short_circle: o_$k: theta_max_err = 0.0103[0-9]* rad > " o_$k.out' \
+      "theta 1.03 of the limit off: exit $code, want 1 on theta_max_err: $(cat o_$k.out)"
+  fi
+done
 exit $fail
