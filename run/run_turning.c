@@ -1,5 +1,5 @@
 /* run_turning: turning points and nutation period (run_turning.h); checked by
- * tests/run/test_turning against synthetic nutations with known answers. */
+ * tests/shadow/test_turning against synthetic nutations with known answers. */
 #include "run_turning.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* run_shadow: the spread of the nudged references (run_shadow.h); checked by
- * tests/run/test_shadow against runs shifted by known amounts. */
+ * tests/shadow/test_shadow against runs shifted by known amounts. */
 #include "run_shadow.h"
 
 #include <math.h>
