@@ -23,27 +23,33 @@ static int push(void *ctx, const dv_sample *s) {
   return dv_run_traj_push(ctx, s);
 }
 
-int props_solve(const dv_scenario *sc, dv_traj *out, dv_error *err) {
+int props_solve_from(const dv_scenario *sc, const double *nudge, double clock, dv_traj *out,
+                     dv_error *err) {
   const dv_engine_type *ref = dv_engine_of_role(sc->thickness > 0.0 ? DV_ENGINE_MATCHED_REFERENCE
                                                                     : DV_ENGINE_THIN_REFERENCE);
-  char fold[64], rtol[64], atol[64];
-  snprintf(fold, sizeof fold, "engines.%s.fold=off",
-           dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
-  snprintf(rtol, sizeof rtol, "engines.%s.rtol=1e-13",
-           dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
-  snprintf(atol, sizeof atol, "engines.%s.atol=1e-14",
-           dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name);
-  const char *sets[] = {rtol, atol, fold};
+  const char *thin = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE)->name;
+  char sets[5][80];
+  snprintf(sets[0], sizeof sets[0], "engines.%s.rtol=1e-13", thin);
+  snprintf(sets[1], sizeof sets[1], "engines.%s.atol=1e-14", thin);
+  snprintf(sets[2], sizeof sets[2], "engines.%s.fold=off", thin);
+  snprintf(sets[3], sizeof sets[3], "scenario.duration=%.17g", sc->duration * clock);
+  snprintf(sets[4], sizeof sets[4], "scenario.output_dt=%.17g", sc->output_dt * clock);
+  const char *set[] = {sets[0], sets[1], sets[2], sets[3], sets[4]};
   static dv_scenario fine;
-  int status = props_with(sc, sets, 3, &fine, err);
+  int status = props_with(sc, set, clock == 1.0 ? 3 : 5, &fine, err);
+  /* the start moved after the checks, which would derive a steady start's rates again */
+  for (int j = 0; nudge && j <= RED_VPS; j++) fine.initial[j] += nudge[j];
   memset(out, 0, sizeof *out);
   dv_engine_stats st;
   if (!status) status = dv_run_collect(ref, &fine, push, out, &st, err);
   return status < 0 ? status : DV_OK;
 }
 
-/* the unit tangent of tr's contact path at sample i (0, 0 where it stands still) */
-static void tangent(const dv_traj *tr, size_t i, double u[2]) {
+int props_solve(const dv_scenario *sc, dv_traj *out, dv_error *err) {
+  return props_solve_from(sc, NULL, 1.0, out, err);
+}
+
+void props_tangent(const dv_traj *tr, size_t i, double u[2]) {
   const size_t a = i ? i - 1 : i, b = i + 1 < tr->n ? i + 1 : i;
   const double dx = tr->s[b].contact[0] - tr->s[a].contact[0];
   const double dy = tr->s[b].contact[1] - tr->s[a].contact[1];
@@ -52,18 +58,23 @@ static void tangent(const dv_traj *tr, size_t i, double u[2]) {
   u[1] = d > 0.0 ? dy / d : 0.0;
 }
 
+double props_ramp(const props_error *e, double t) {
+  const double span = e->t_full - e->t_from;
+  return t <= e->t_from || !(span > 0.0) ? 0.0 : (t - e->t_from) / span;
+}
+
 /* the state of sample i with e done to it, at time *t */
 static void apply(const dv_scenario *sc, const dv_traj *tr, size_t i, const props_error *e,
                   double *t, double y[RED_NSTATE]) {
   const dv_sample *s = &tr->s[i];
   memcpy(y, s->y, sizeof s->y);
   *t = s->t;
-  const double span = e->t_full - e->t_from;
-  const double ramp = s->t <= e->t_from || !(span > 0.0) ? 0.0 : (s->t - e->t_from) / span;
+  const double span = e->t_full - e->t_from, ramp = props_ramp(e, s->t);
   y[RED_TH] += e->theta * ramp;
   if (ramp > 0.0) y[RED_VTH] += e->theta / span; /* the rate says so too */
+  for (int k = RED_VTH; e->bleed && k <= RED_VPS; k++) y[k] *= 1.0 + e->bleed[i];
   double u[2];
-  tangent(tr, i, u);
+  props_tangent(tr, i, u);
   y[RED_X] += e->phase * ramp * u[0];
   y[RED_Y] += e->phase * ramp * u[1];
   if (s->t > e->tail_after) { /* theta drawn toward upright from the window's end on, smoothly */
