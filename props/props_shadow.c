@@ -34,8 +34,9 @@ static const dv_engine_type *body_of(const dv_scenario *sc, dv_scenario *body) {
   return matched;
 }
 
-/* the spread of run from ref, as running maxima, into s (at least what is there) */
-static void add_run(props_shadow *s, const dv_traj *run) {
+/* the spread of run from ref, as running maxima, into theta and path (at
+ * least what is there) */
+static void add_run(const props_shadow *s, const dv_traj *run, double *theta, double *path) {
   double th = 0.0, p = 0.0;
   for (size_t i = 0; i < s->ref.n; i++) {
     const dv_sample *a = i < run->n ? &run->s[i] : NULL, *b = &s->ref.s[i];
@@ -45,8 +46,8 @@ static void add_run(props_shadow *s, const dv_traj *run) {
       th = fmax(th, fabs(a->y[RED_TH] - b->y[RED_TH]));
       p = fmax(p, hypot(a->contact[0] - b->contact[0], a->contact[1] - b->contact[1]));
     }
-    s->theta[i] = fmax(s->theta[i], th);
-    s->path[i] = fmax(s->path[i], p);
+    theta[i] = fmax(theta[i], th);
+    path[i] = fmax(path[i], p);
   }
 }
 
@@ -62,21 +63,27 @@ int props_shadow_run(const dv_scenario *sc, const double nudge[PROPS_DIRS], prop
   const size_t n = s->ref.n ? s->ref.n : 1;
   s->theta = calloc(n, sizeof *s->theta);
   s->path = calloc(n, sizeof *s->path);
-  if (!s->theta || !s->path) return dv_fail(err, DV_ESYSTEM, "out of memory (the shadow)");
+  double *th_j = calloc(n, sizeof *th_j), *p_j = calloc(n, sizeof *p_j);
+  if (!s->theta || !s->path || !th_j || !p_j)
+    return free(th_j), free(p_j), dv_fail(err, DV_ESYSTEM, "out of memory (the shadow)");
   const double lim = dv_reference_settings(sc)->theta_limit;
-  for (int j = 0; j < PROPS_DIRS; j++)
-    for (int side = -1; side <= 1; side += 2) {
+  /* each direction's spread (the larger of its two sides), summed over the directions */
+  for (int j = 0; j < PROPS_DIRS && status >= 0; j++) {
+    memset(th_j, 0, n * sizeof *th_j), memset(p_j, 0, n * sizeof *p_j);
+    for (int side = -1; side <= 1 && status >= 0; side += 2) {
       moved = body;
       moved.initial[j] += side * nudge[j];
       const double th = moved.initial[RED_TH];
       if (j == RED_TH && !(th > lim && th < M_PI - lim)) continue; /* it would start lying down */
       dv_traj run = {0};
       status = dv_run_collect(type, &moved, dv_run_traj_keep, &run, &st, err);
-      if (status >= 0) add_run(s, &run);
+      if (status >= 0) add_run(s, &run, th_j, p_j);
       dv_run_traj_free(&run);
-      if (status < 0) return status;
     }
-  return DV_OK;
+    for (size_t i = 0; i < s->ref.n; i++) s->theta[i] += th_j[i], s->path[i] += p_j[i];
+  }
+  free(th_j), free(p_j);
+  return status < 0 ? status : DV_OK;
 }
 
 void props_shadow_free(props_shadow *s) {

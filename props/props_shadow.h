@@ -7,9 +7,9 @@
  * from its start nudged by +- nudge[j] in each reduced direction j (theta,
  * theta_dot, phi_dot, psi_dot: the state's first four; a theta nudge that
  * would start past the lying-down limits left out). The shadow at each of
- * the reference's samples is the running maximum over those runs of
- * |theta - theta_ref| and |contact - contact_ref|, INFINITY past a run's
- * end. An error series e is judged against the limit plus the shadow: its
+ * the reference's samples is, summed over the directions, the running
+ * maximum over each direction's two runs of |theta - theta_ref| and
+ * |contact - contact_ref|, INFINITY past a run's end. An error series e is judged against the limit plus the shadow: its
  * unexcused part is max over the samples of e, over the early window
  * (t <= t_early), and of e - s past it, up to where s reaches the motion's
  * size (the pointwise end) or the window ends. */

@@ -562,7 +562,8 @@ static int judge_against(dv_comparison *c, const dv_comparison *refs, const dv_s
   if (shadowed) { /* its own nudges: the shadow, the spreads and the lying down they allow */
     const double t_spread = dv_clock_now();
     dv_run_progress_role("nudged references");
-    status = dv_run_engine_shadow(ref_sc, ref, &c->amp, r->early_of, &sh, r->spread, r->nudged, err);
+    status = dv_run_engine_shadow(ref_sc, ref, &c->amp, r->early_of, r->vs_ref.t_window, &sh,
+                                  r->spread, r->nudged, err);
     dv_run_progress_role(NULL);
     c->horizon_wall_s += dv_clock_now() - t_spread;
     if (status < 0) return dv_shadow_free(&sh), status;

@@ -35,9 +35,9 @@ const dv_engine_type *dv_run_body(const dv_scenario *sc, dv_scenario *body_sc) {
  * direction dir nudged by +- size; each run's |theta - theta_ref| /
  * |nudge| as a running max into gain (may be NULL; INFINITY past a run's
  * end), its spreads into shadow (may be NULL), spread (each metric's
- * largest value, not reset) and, for theta, ends (may be NULL) */
+ * largest value to t_end, not reset) and, for theta, ends (may be NULL) */
 static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, double size,
-                       double *gain, dv_shadow *shadow, double spread[DV_NMETRICS],
+                       double t_end, double *gain, dv_shadow *shadow, double spread[DV_NMETRICS],
                        dv_run_end ends[2], double *nudge_made, dv_error *err) {
   dv_scenario body_sc;
   const dv_engine_type *body = dv_run_body(sc, &body_sc);
@@ -71,8 +71,8 @@ static int nudged_runs(const dv_scenario *sc, const dv_traj *ref, int dir, doubl
       dv_run_traj_free(&tr);
       return dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
     }
-    dv_metrics moved;
-    dv_run_compare(&tr, ref, INFINITY, &moved);
+    dv_metrics moved; /* over the compared window: a spread past it excuses nothing */
+    dv_run_compare(&tr, ref, t_end, &moved);
     for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], moved.value[m]);
     dv_run_traj_free(&tr);
   }
@@ -89,25 +89,32 @@ static void early_nudges(const dv_amplification *a, const double early[DV_NUDGE_
 }
 
 int dv_run_engine_shadow(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double early[DV_NUDGE_DIRS], dv_shadow *shadow,
+                         const double early[DV_NUDGE_DIRS], double t_end, dv_shadow *shadow,
                          double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err) {
   memcpy(ends, a->ends, sizeof a->ends);
   for (int m = 0; m < DV_NMETRICS; m++) spread[m] = 0.0;
-  if (dv_shadow_alloc(shadow, ref->n)) return dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
+  dv_shadow one;
+  if (dv_shadow_alloc(shadow, ref->n) || dv_shadow_alloc(&one, ref->n))
+    return dv_shadow_free(shadow), dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
   double e[DV_NUDGE_DIRS];
   early_nudges(a, early, e);
-  for (int j = 0; j < DV_NUDGE_DIRS; j++) {
+  /* the amplification's runs measured their spreads over the reference's whole run */
+  const int whole = !(t_end < a->measured_to - 1e-9);
+  int status = DV_OK;
+  for (int j = 0; j < DV_NUDGE_DIRS && status >= 0; j++) {
     double made;
-    if (!(e[j] > a->size[j]) && a->shadow_of[j].n == ref->n) { /* the amplification's own runs */
+    if (!(e[j] > a->size[j]) && a->shadow_of[j].n == ref->n && whole) { /* a's own runs */
       for (int m = 0; m < DV_NMETRICS; m++) spread[m] = fmax(spread[m], a->spread_of[j][m]);
-      dv_shadow_merge(shadow, &a->shadow_of[j]);
+      dv_shadow_sum(shadow, &a->shadow_of[j]);
       continue;
     }
-    const int status = nudged_runs(sc, ref, j, e[j], NULL, shadow, spread,
-                                   j == RED_TH ? ends : NULL, &made, err);
-    if (status < 0) return status;
+    dv_shadow_clear(&one);
+    status = nudged_runs(sc, ref, j, e[j], t_end, NULL, &one, spread, j == RED_TH ? ends : NULL,
+                         &made, err);
+    dv_shadow_sum(shadow, &one);
   }
-  return DV_OK;
+  dv_shadow_free(&one);
+  return status;
 }
 
 /* an engine's early errors (rad, then rad/s), each floored at a's nudge */
@@ -185,8 +192,8 @@ int dv_run_amplification(const dv_scenario *sc, const dv_traj *ref, dv_amplifica
     if (dv_shadow_alloc(&a->shadow_of[j], ref->n))
       return dv_fail(err, DV_ESYSTEM, "out of memory (the horizon)");
     const int status =
-        nudged_runs(sc, ref, j, a->size[j], a->gain_of[j], &a->shadow_of[j], a->spread_of[j],
-                    j == RED_TH ? a->ends : NULL, &a->size[j], err);
+        nudged_runs(sc, ref, j, a->size[j], INFINITY, a->gain_of[j], &a->shadow_of[j],
+                    a->spread_of[j], j == RED_TH ? a->ends : NULL, &a->size[j], err);
     if (status < 0) return status;
   }
   a->nudge = a->size[RED_TH];

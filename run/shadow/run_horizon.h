@@ -17,7 +17,7 @@
  * What judges is the shadow (run_shadow.h) of an engine's own early error
  * (its largest error over the scene's shortest time scale in theta, and in
  * each rate: dv_run_engine_shadow). The reference is run again from +- that
- * error in each direction (at least the nudge: an engine below it shares
+ * error in each direction, the directions' spreads summed (at least the nudge: an engine below it shares
  * the amplification's runs; at most the theta limit, or the limit over the
  * rate scale for a rate: a larger early error is the engine's own failure,
  * judged pointwise from the start, and buys no larger excuse). Their
@@ -87,13 +87,16 @@ void dv_run_amplification_free(dv_amplification *a); /* NULL-safe */
 /* the shadow of an engine whose early errors are early[j] (rad, rad/s):
  * the reference ref of sc's body run again from each direction j nudged by
  * +- early[j] (floored at a's nudge, where a's own runs serve, and capped
- * at the limit), their spread at each of ref's samples into shadow
- * (allocated here; free it with dv_shadow_free), the largest value of each
- * metric between a nudged run and ref into spread, and how the
+ * at the limit); at each of ref's samples the sum over the directions of
+ * each direction's spread (a running maximum over its two runs) into
+ * shadow (allocated here; free it with dv_shadow_free): in the linear
+ * regime an early error in every direction at once moves the reference by
+ * at most that sum. The largest value of each metric between a nudged run
+ * and ref over the compared window (to t_end) into spread, and how the
  * theta-nudged runs ended into ends. a is the amplification of the same
  * body. < 0 when a run fails */
 int dv_run_engine_shadow(const dv_scenario *sc, const dv_traj *ref, const dv_amplification *a,
-                         const double early[DV_NUDGE_DIRS], dv_shadow *shadow,
+                         const double early[DV_NUDGE_DIRS], double t_end, dv_shadow *shadow,
                          double spread[DV_NMETRICS], dv_run_end ends[2], dv_error *err);
 
 /* the relative early error e of an engine whose early errors are early[j] */

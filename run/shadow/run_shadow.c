@@ -29,6 +29,16 @@ void dv_shadow_merge(dv_shadow *into, const dv_shadow *from) {
       into->env[k][i] = fmax(into->env[k][i], from->env[k][i]);
 }
 
+void dv_shadow_sum(dv_shadow *into, const dv_shadow *from) {
+  for (int k = 0; k < DV_SHADOW_N; k++)
+    for (size_t i = 0; i < into->n && i < from->n; i++) into->env[k][i] += from->env[k][i];
+}
+
+void dv_shadow_clear(dv_shadow *s) {
+  for (int k = 0; k < DV_SHADOW_N; k++)
+    for (size_t i = 0; i < s->n; i++) s->env[k][i] = 0.0;
+}
+
 /* the samples e and ref share at equal times, from the start, up to t_end */
 static size_t shared(const dv_traj *e, const dv_traj *ref, double t_end) {
   size_t n = 0;

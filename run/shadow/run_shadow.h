@@ -36,6 +36,10 @@ int dv_shadow_alloc(dv_shadow *s, size_t n);
 void dv_shadow_free(dv_shadow *s); /* NULL-safe */
 /* into's spreads at least from's (the same n) */
 void dv_shadow_merge(dv_shadow *into, const dv_shadow *from);
+/* from's spreads added to into's (the same n): directions' spreads together */
+void dv_shadow_sum(dv_shadow *into, const dv_shadow *from);
+/* every spread 0 again */
+void dv_shadow_clear(dv_shadow *s);
 
 /* one nudged run's spread from ref added to into: its running maximum of
  * each measure, INFINITY past its last sample shared with ref */
