@@ -50,6 +50,12 @@ static double path_limit(double rolled, double extent, double r, char *why, size
   return by_size;
 }
 
+double dv_run_default_path_limit(const dv_scenario *sc, const dv_traj *ref, double t_end) {
+  char why[112];
+  return path_limit(dv_run_distance_rolled(ref, t_end), dv_run_motion_extent(ref, t_end),
+                    sc->disk.r, why, sizeof why);
+}
+
 /* the limit the scenario gives for metric, with where it came from; 0 when none */
 static int given(const dv_scenario *sc, const char *engine, dv_metric_id metric, dv_limit *out) {
   int own;

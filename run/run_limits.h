@@ -79,6 +79,9 @@ typedef struct dv_limit {
 void dv_run_limits(const dv_scenario *sc, const char *engine, const dv_traj *ref, double t_end,
                    dv_limit out[DV_NMETRICS]);
 
+/* m: path_max_err's default limit over ref to t_end, whatever the scenario gives */
+double dv_run_default_path_limit(const dv_scenario *sc, const dv_traj *ref, double t_end);
+
 /* rad/s: sc's rate scale, its largest initial spin or roll rate, at least
  * sqrt(g / r); r times it is the speed scale */
 double dv_run_rate_scale(const dv_scenario *sc);

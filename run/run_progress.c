@@ -19,6 +19,7 @@ static struct {
   char command[24]; /* "compare" */
   size_t shown;     /* characters of the line now on the terminal */
   double last;      /* s: when the line was last drawn (or the run began) */
+  char drawn_phase[80]; /* the innermost phase of the line drawn last: "settings probe 5" */
   /* the run under way */
   int running, calibrated;
   int probing, planned; /* a probe runs; a plan was announced */
@@ -106,8 +107,13 @@ static void phase_changed(void) {
   const dv_phase *stack;
   if (!dv_phase_stack(&stack)) return clear();
   const double now = dv_clock_now();
-  if (now - P.last < 1.0 / DV_PROGRESS_HZ) return;
+  /* a phase begun is drawn at once: its items may all pass within the throttle */
+  const size_t depth = dv_phase_stack(&stack);
+  char phase[sizeof P.drawn_phase];
+  snprintf(phase, sizeof phase, "%.60s %zu", stack[depth - 1].name, stack[depth - 1].n);
+  if (now - P.last < 1.0 / DV_PROGRESS_HZ && !strcmp(phase, P.drawn_phase)) return;
   P.last = now;
+  memcpy(P.drawn_phase, phase, sizeof phase);
   char text[192], t_left[32];
   const size_t n = say_phases(text, 120);
   const double left = phases_left(now, NAN);

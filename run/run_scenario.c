@@ -75,16 +75,15 @@ int dv_run_metric_shadowed(dv_metric_id metric) {
 
 /* the motion's size in theta (rad) and in the contact point (m) over ref to
  * t_end: half the reference's theta swing and its path's extent, each at
- * least DV_SHADOW_SIZE_FLOOR limits (a steady motion has no swing) */
-static void motion_size(const dv_traj *ref, double t_end, const dv_engine_result *r,
-                        double size[2]) {
+ * least DV_SHADOW_SIZE_FLOOR default limits (a steady motion has no swing;
+ * a scene's tighter limit asks for more, never for less of the window) */
+static void motion_size(const dv_scenario *sc, const dv_traj *ref, double t_end, double size[2]) {
   double lo = INFINITY, hi = -INFINITY;
   for (size_t i = 0; i < ref->n && ref->s[i].t <= t_end + 1e-12; i++)
     lo = fmin(lo, ref->s[i].y[RED_TH]), hi = fmax(hi, ref->s[i].y[RED_TH]);
-  size[0] = fmax(hi > lo ? 0.5 * (hi - lo) : 0.0,
-                 DV_SHADOW_SIZE_FLOOR * r->tolerance[DV_THETA_MAX_ERR]);
+  size[0] = fmax(hi > lo ? 0.5 * (hi - lo) : 0.0, DV_SHADOW_SIZE_FLOOR * DV_LIMIT_THETA);
   size[1] = fmax(dv_run_motion_extent(ref, t_end),
-                 DV_SHADOW_SIZE_FLOOR * r->tolerance[DV_PATH_MAX_ERR]);
+                 DV_SHADOW_SIZE_FLOOR * dv_run_default_path_limit(sc, ref, t_end));
 }
 
 /* where the shadow reaches the motion's size (INFINITY: never), never
@@ -116,7 +115,8 @@ static void excuse(dv_engine_result *r, dv_metric_id m, double judged, double un
  * (run_shadow.h): e(t) <= limit + s(t), the early window without excuse
  * (an early error is the engine's own); pointwise judging ends only where
  * s reaches the motion's size. < 0 out of memory */
-static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_result *r) {
+static int judge_shadowed(const dv_scenario *sc, const dv_traj *ref, const dv_shadow *sh,
+                          dv_engine_result *r) {
   const size_t n = ref->n;
   const double t_end = r->vs_ref.t_window;
   double size[2], most[3] = {0, 0, 0}, sq[3] = {0, 0, 0}, raw[3] = {0, 0, 0}, raw_sq[3] = {0, 0, 0};
@@ -125,7 +125,7 @@ static int judge_shadowed(const dv_traj *ref, const dv_shadow *sh, dv_engine_res
   if (dv_shadow_scratch_alloc(&w, n, r->traj.n) || dv_shadow_errors(&r->traj, ref, t_end, w.err))
     return dv_shadow_scratch_free(&w), -1;
   double *const *err = w.err, *tk = w.t, *lag = w.lag;
-  motion_size(ref, t_end, r, size);
+  motion_size(sc, ref, t_end, size);
   const double stop = unpredictable_from(ref, sh, t_end, r->early_until, size, &which);
   size_t count = 0; /* the samples judged: to where the scene predicts nothing pointwise */
   for (size_t i = 0; i < n && i < sh->n && ref->s[i].t < stop; i++) {
@@ -605,7 +605,7 @@ static int judge_against(dv_comparison *c, const dv_comparison *refs, const dv_s
   }
   memcpy(r->whole, r->vs_ref.value, sizeof r->whole);
   if (shadowed) {
-    status = judge_shadowed(ref, &sh, r);
+    status = judge_shadowed(sc, ref, &sh, r);
     dv_shadow_free(&sh);
     if (status < 0) return dv_fail(err, DV_ESYSTEM, "out of memory (the spread)");
     shadow_words(c, r);

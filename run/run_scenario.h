@@ -37,8 +37,8 @@
 /* nor one of fewer samples than this (the first is the shared start) */
 #define DV_MIN_WINDOW_SAMPLES 10
 /* the motion's size that ends pointwise judging where the shadow reaches
- * it is at least this many of the limit: a steady motion does not swing,
- * and past ten limits a pointwise comparison says nothing of them */
+ * it is at least this many of the default limit: a steady motion does not
+ * swing, and past ten limits a pointwise comparison says nothing of them */
 #define DV_SHADOW_SIZE_FLOOR 10.0
 /* characters of an engine's one-line "decided" (run_decided.h) */
 #define DV_DECIDED_MAX 120

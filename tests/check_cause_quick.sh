@@ -4,8 +4,8 @@
 # is refused with one line. Knob runs are counted on DV_CAUSE_TRACE's lines
 # ("cause trace: ENGINE: KNOB (CHANGE): worst W, ..."). Two failing cases whose
 # causes differ, made short (re-run: the commands below with DV_CAUSE_TRACE=1):
-#   integrator  MuJoCo rk4 over 0.5 s, path limit 1e-4 m: path 9.18e-4 m, of
-#               which the spread of its early error excuses 7.1e-4 m (issue 48);
+#   integrator  MuJoCo rk4 over 0.5 s, path limit 1e-5 m: path 9.18e-4 m, of
+#               which the spread of its early error excuses 8.8e-4 m (issue 48);
 #               full: euler 3.58e-4, implicit 1.01e-4 remove it, the step
 #               /4 leaves worst 2.29; quick tries the integrator first (its
 #               signature: nothing over but the path, and a time integrator
@@ -13,10 +13,10 @@
 #   timestep    Bullet at 1.6e-4 s over 1 s: theta 3.16e-3 > 1e-3 rad, energy
 #               0.59 % of 1 %; full: only the step /4 removes it (worst 0.79,
 #               body 6.37); quick tries it first: 1 run, full 4
-#   window      the same Bullet over the scene's 3 s: theta 9.38e-3 rad, from
-#               0.36 s; full: no knob removes it (the step /4 leaves worst
-#               3.87); quick over the first 0.795 s (0.536 s before the spread
-#               of its early error was excused): the step /4 removes that
+#   window      the same Bullet over the scene's 3 s, limits 1e-4 rad and
+#               1e-3 m: theta 9.38e-3 rad against 1.4e-3 (the spread of its
+#               early error 1.3e-3 rad); full: no knob removes it (the step /4
+#               leaves worst 1.67); quick over the first 0.6075 s: the step /4 removes that
 #               window's error (worst 0.392) but not the whole run's, which it
 #               then runs: no cause named, as full
 set -u
@@ -25,7 +25,7 @@ diskval=$1 saucer=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mujoco=(--engines mujoco --set engines.mujoco.integrator=rk4 --set scenario.duration=0.5
-  --set tolerance.mujoco.path_max_err=1e-4)
+  --set tolerance.mujoco.path_max_err=1e-5)
 bullet=(--engines bullet --set engines.bullet.timestep=1.6e-4 --set scenario.duration=1)
 # the knob named in stdout's cause, and the knob runs on stderr
 run() { # NAME MODE ARGS...
@@ -53,7 +53,8 @@ for name in mujoco bullet; do
 done
 check '[ "$(runs bullet.quick)" -eq 1 ]' "bullet: the step is not tried first: $(cat "$work/bullet.quick.err")"
 # a knob that removes the error over the short window only is no cause
-window=(--engines bullet --set engines.bullet.timestep=1.6e-4)
+window=(--engines bullet --set engines.bullet.timestep=1.6e-4 --set tolerance.theta_max_err=1e-4
+  --set tolerance.path_max_err=1e-3)
 run window full "${window[@]}"
 run window quick "${window[@]}"
 check 'grep -q "; cause: none of the knobs removes it" "$work/window.full.out"' \

@@ -144,7 +144,7 @@ same tty.ver file.ver "verify stdout"
 
 # attribute: its runs counted (the split's, then each knob's: about 4 s at 1 s)
 on_tty att.log "'$dv' attribute '$sc' --engine mujoco > /dev/null"
-has_line att.log 'attribution [0-9]+/[0-9]+ [(]mujoco [a-z]' "attribute"
+has_line att.log 'attribution [0-9]+/[0-9]+ [(]mujoco,? [a-z]' "attribute"
 well_formed att.log "attribute"
 
 # best: its choices counted, their first probes then each one's search (ODE's two
