@@ -7,89 +7,58 @@
 #include <string.h>
 
 #include "dv_engine.h"
+#include "dv_rng.h"
 
 const char *const dv_gen_kind_names[4] = {"steady", "fall", "nutation", "spin"};
 
-/* splitmix64: a stream of its own for each (seed, index, draw) */
-typedef struct rng {
-  uint64_t s;
-} rng;
-
-static uint64_t next(rng *g) {
-  uint64_t z = (g->s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-/* uniform in [0, 1), 53 bits */
-static double u01(rng *g) {
-  return (double)(next(g) >> 11) * 0x1.0p-53;
-}
-
-static double uniform(rng *g, double a, double b) {
-  return a + (b - a) * u01(g);
-}
-
-static double log_uniform(rng *g, double a, double b) {
-  return exp(uniform(g, log(a), log(b)));
-}
-
-/* a value rounded to 6 significant digits: the .ini reads back as drawn */
-static double round6(double v) {
-  char buf[32];
-  snprintf(buf, sizeof buf, "%.6g", v);
-  return strtod(buf, NULL);
-}
-
 /* one draw of every value of g */
-static void draw(rng *r, double gravity, dv_gen_scene *g) {
-  const double u = u01(r);
+static void draw(dv_rng *r, double gravity, dv_gen_scene *g) {
+  const double u = dv_rng_u01(r);
   g->kind = u < 0.3    ? DV_GEN_STEADY
             : u < 0.5  ? DV_GEN_FALL
             : u < 0.75 ? DV_GEN_NUTATION
                        : DV_GEN_SPIN;
   g->gravity = gravity;
-  g->radius = round6(log_uniform(r, 0.008, 0.35));
+  g->radius = dv_round6(dv_rng_log_uniform(r, 0.008, 0.35));
   const double rad = g->radius;
-  g->thickness = u01(r) < 0.4 ? 0.0 : round6(2.0 * rad * uniform(r, 0.005, 0.6));
+  g->thickness = dv_rng_u01(r) < 0.4 ? 0.0 : dv_round6(2.0 * rad * dv_rng_uniform(r, 0.005, 0.6));
   /* steel to wood: the density scales the mass, nothing else */
   const double t_eff = fmax(g->thickness, 0.02 * rad);
-  g->mass = round6(uniform(r, 700.0, 8000.0) * M_PI * rad * rad * t_eff);
+  g->mass = dv_round6(dv_rng_uniform(r, 700.0, 8000.0) * M_PI * rad * rad * t_eff);
   const double mr2 = g->mass * rad * rad;
   /* a hoop (A = m r^2 / 2, C = 2A) to an axle-heavy wheel (C small against A) */
-  g->A = round6(mr2 * (uniform(r, 0.15, 0.5) + g->thickness * g->thickness / (12.0 * rad * rad)));
-  g->C = round6(fmin(uniform(r, 0.02, 1.0) * 2.0 * g->A, mr2));
-  g->friction = round6(uniform(r, 0.3, 2.0));
-  g->x = round6(uniform(r, -1.0, 1.0));
-  g->y = round6(uniform(r, -1.0, 1.0));
-  g->phi = round6(uniform(r, -M_PI, M_PI));
+  g->A = dv_round6(mr2 * (dv_rng_uniform(r, 0.15, 0.5) + g->thickness * g->thickness / (12.0 * rad * rad)));
+  g->C = dv_round6(fmin(dv_rng_uniform(r, 0.02, 1.0) * 2.0 * g->A, mr2));
+  g->friction = dv_round6(dv_rng_uniform(r, 0.3, 2.0));
+  g->x = dv_round6(dv_rng_uniform(r, -1.0, 1.0));
+  g->y = dv_round6(dv_rng_uniform(r, -1.0, 1.0));
+  g->phi = dv_round6(dv_rng_uniform(r, -M_PI, M_PI));
   const double w0 = sqrt(gravity / rad); /* the fall's rate */
   g->theta_dot = g->phi_dot = g->psi_dot = 0.0;
   g->steady_circle_radius = NAN;
   switch (g->kind) {
     case DV_GEN_STEADY: /* either lean: leaning over the centre, or away (past upright) */
-      g->theta = round6(u01(r) < 0.8 ? uniform(r, 0.25, 1.45) : uniform(r, 1.65, 2.2));
-      g->steady_circle_radius = round6(rad * log_uniform(r, 2.0, 100.0));
+      g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45) : dv_rng_uniform(r, 1.65, 2.2));
+      g->steady_circle_radius = dv_round6(rad * dv_rng_log_uniform(r, 2.0, 100.0));
       break;
     case DV_GEN_FALL:
-      g->theta = round6(uniform(r, 0.6, 1.55));
-      g->psi_dot = round6(uniform(r, -0.5, 0.5) * w0);
+      g->theta = dv_round6(dv_rng_uniform(r, 0.6, 1.55));
+      g->psi_dot = dv_round6(dv_rng_uniform(r, -0.5, 0.5) * w0);
       break;
     case DV_GEN_NUTATION:
-      g->theta = round6(uniform(r, 0.3, 1.5));
-      g->psi_dot = round6((u01(r) < 0.5 ? -1 : 1) * uniform(r, 1.0, 12.0) * w0);
-      g->phi_dot = round6(uniform(r, -1.0, 1.0) * w0);
-      g->theta_dot = round6(uniform(r, -0.5, 0.5) * w0);
+      g->theta = dv_round6(dv_rng_uniform(r, 0.3, 1.5));
+      g->psi_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * dv_rng_uniform(r, 1.0, 12.0) * w0);
+      g->phi_dot = dv_round6(dv_rng_uniform(r, -1.0, 1.0) * w0);
+      g->theta_dot = dv_round6(dv_rng_uniform(r, -0.5, 0.5) * w0);
       break;
     case DV_GEN_SPIN:
-      g->theta = round6(uniform(r, 1.2, 1.57));
-      g->psi_dot = round6((u01(r) < 0.5 ? -1 : 1) * uniform(r, 3.0, 30.0) * w0);
-      g->theta_dot = round6(uniform(r, -0.1, 0.1) * w0);
+      g->theta = dv_round6(dv_rng_uniform(r, 1.2, 1.57));
+      g->psi_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * dv_rng_uniform(r, 3.0, 30.0) * w0);
+      g->theta_dot = dv_round6(dv_rng_uniform(r, -0.1, 0.1) * w0);
       break;
   }
-  g->duration = round6(fmin(2.5, uniform(r, 2.0, 6.0) * 2.0 * M_PI / w0));
-  g->output_dt = round6(g->duration / floor(uniform(r, 150.0, 300.0)));
+  g->duration = dv_round6(fmin(2.5, dv_rng_uniform(r, 2.0, 6.0) * 2.0 * M_PI / w0));
+  g->output_dt = dv_round6(g->duration / floor(dv_rng_uniform(r, 150.0, 300.0)));
 }
 
 /* g into sc, checked as a load checks a file */
@@ -140,8 +109,8 @@ int dv_engine_generate(uint64_t seed, size_t index, double gravity, dv_gen_scene
   dv_scenario *into = sc ? sc : &scratch;
   dv_error why = {0};
   for (uint64_t attempt = 0; attempt < 200; attempt++) {
-    rng r = {seed * 0x100000001B3ull ^ ((uint64_t)index << 20) ^ attempt};
-    for (int warm = 0; warm < 4; warm++) next(&r);
+    dv_rng r = {seed * 0x100000001B3ull ^ ((uint64_t)index << 20) ^ attempt};
+    for (int warm = 0; warm < 4; warm++) dv_rng_next(&r);
     memset(g, 0, sizeof *g);
     snprintf(g->name, sizeof g->name, "gen-%llu-%zu", (unsigned long long)seed, index);
     draw(&r, gravity, g);

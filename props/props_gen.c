@@ -30,6 +30,7 @@
 
 #include "dv_reference.h"
 #include "engine_scene.h"
+#include "dv_rng.h"
 #include "props.h"
 #include "red_steady.h"
 #include "run_trajectory.h"
@@ -47,33 +48,6 @@ const char *const props_kind_names[PROPS_NKINDS] = {"steady", "fall",     "nutat
 #define PER_PERIOD 25   /* samples a wobble period at least: turning points placed */
 #define MAX_SAMPLES 600 /* samples at most (the cost of a judge grows with them) */
 #define GROWTH 30.0     /* an unstable release's distance from its state grows this much */
-
-/* splitmix64, a stream of props' own for each (seed, index, attempt) */
-static uint64_t next(uint64_t *s) {
-  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-static double u01(uint64_t *s) {
-  return (double)(next(s) >> 11) * 0x1.0p-53;
-}
-
-static double uniform(uint64_t *s, double a, double b) {
-  return a + (b - a) * u01(s);
-}
-
-static double log_uniform(uint64_t *s, double a, double b) {
-  return exp(uniform(s, log(a), log(b)));
-}
-
-/* 6 significant digits, as the generator draws */
-static double round6(double v) {
-  char buf[32];
-  snprintf(buf, sizeof buf, "%.6g", v);
-  return strtod(buf, NULL);
-}
 
 /* g into sc as a load of its .ini builds it (engine_generate.c's build) */
 static int build(const dv_gen_scene *g, dv_scenario *sc, dv_error *err) {
@@ -157,18 +131,18 @@ static int linearised(const dv_scenario *sc, double *re, double *im) {
 }
 
 /* the duration and sample interval of g: duration d, n samples at least */
-static void set_time(uint64_t *r, dv_gen_scene *g, double d, double n) {
-  g->duration = round6(d);
-  const double samples = fmin(MAX_SAMPLES, fmax(floor(uniform(r, 150.0, 300.0)), ceil(n)));
-  g->output_dt = round6(g->duration / samples);
+static void set_time(dv_rng *r, dv_gen_scene *g, double d, double n) {
+  g->duration = dv_round6(d);
+  const double samples = fmin(MAX_SAMPLES, fmax(floor(dv_rng_uniform(r, 150.0, 300.0)), ceil(n)));
+  g->output_dt = dv_round6(g->duration / samples);
 }
 
 /* a draw of g (the object kept) as a periodic start; 0, or -1 no such draw */
-static int draw_periodic(uint64_t *r, dv_gen_scene *g, dv_scenario *sc) {
+static int draw_periodic(dv_rng *r, dv_gen_scene *g, dv_scenario *sc) {
   dv_error err = {0};
   g->kind = DV_GEN_STEADY;
-  g->theta = round6(uniform(r, 0.35, 1.45));
-  g->steady_circle_radius = round6(g->radius * log_uniform(r, 2.0, 100.0));
+  g->theta = dv_round6(dv_rng_uniform(r, 0.35, 1.45));
+  g->steady_circle_radius = dv_round6(g->radius * dv_rng_log_uniform(r, 2.0, 100.0));
   g->duration = 1.0, g->output_dt = 0.01; /* for the steady rates; set below */
   double re, im;
   if (build(g, sc, &err) || linearised(sc, &re, &im) || !(im > 0.0) || re > 1e-6 * im) return -1;
@@ -176,43 +150,43 @@ static int draw_periodic(uint64_t *r, dv_gen_scene *g, dv_scenario *sc) {
   g->kind = DV_GEN_NUTATION;
   g->steady_circle_radius = NAN;
   g->phi_dot = sc->initial[RED_VPH], g->psi_dot = sc->initial[RED_VPS];
-  g->theta_dot = round6((u01(r) < 0.5 ? -1 : 1) * log_uniform(r, 0.003, 0.05) * im);
-  const double periods = uniform(r, 9.5, 12.0);
+  g->theta_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * dv_rng_log_uniform(r, 0.003, 0.05) * im);
+  const double periods = dv_rng_uniform(r, 9.5, 12.0);
   set_time(r, g, periods * period, PER_PERIOD * periods);
   return build(g, sc, &err) ? -1 : 0;
 }
 
 /* a draw of g (the object kept) as a release near an unstable state: the
  * state's theta into *th0; 0, or -1 no such draw */
-static int draw_unstable(uint64_t *r, dv_gen_scene *g, dv_scenario *sc, double *th0) {
+static int draw_unstable(dv_rng *r, dv_gen_scene *g, dv_scenario *sc, double *th0) {
   dv_error err = {0};
   double re, im, delta;
   g->duration = 1.0, g->output_dt = 0.01; /* for the linearisation; set below */
-  if (u01(r) < 0.5) {                     /* an unstable steady circle */
+  if (dv_rng_u01(r) < 0.5) {                     /* an unstable steady circle */
     g->kind = DV_GEN_STEADY;
-    g->theta = round6(u01(r) < 0.8 ? uniform(r, 0.25, 1.45) : uniform(r, 1.65, 2.2));
-    g->steady_circle_radius = round6(g->radius * log_uniform(r, 2.0, 100.0));
+    g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45) : dv_rng_uniform(r, 1.65, 2.2));
+    g->steady_circle_radius = dv_round6(g->radius * dv_rng_log_uniform(r, 2.0, 100.0));
     if (build(g, sc, &err) || linearised(sc, &re, &im) || !(re > 1e-6 * fmax(re, im))) return -1;
     g->kind = DV_GEN_NUTATION;
     g->steady_circle_radius = NAN;
     g->phi_dot = sc->initial[RED_VPH], g->psi_dot = sc->initial[RED_VPS];
-    delta = log_uniform(r, 1e-4, 3e-3);
-    g->theta_dot = round6((u01(r) < 0.5 ? -1 : 1) * delta * re);
+    delta = dv_rng_log_uniform(r, 1e-4, 3e-3);
+    g->theta_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * delta * re);
     *th0 = g->theta;
   } else { /* upright rolling below the critical spin, leaning a little */
     red_disk d = {g->radius, g->mass, g->A, g->C, g->gravity};
-    const double spin = uniform(r, 0.3, 0.9) * red_upright_critical_spin(&d);
+    const double spin = dv_rng_uniform(r, 0.3, 0.9) * red_upright_critical_spin(&d);
     g->kind = DV_GEN_NUTATION;
     g->steady_circle_radius = NAN;
     g->theta = M_PI_2, g->theta_dot = g->phi_dot = 0.0;
-    g->psi_dot = round6((u01(r) < 0.5 ? -1 : 1) * spin);
+    g->psi_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * spin);
     if (build(g, sc, &err) || linearised(sc, &re, &im) || !(re > 1e-6 * fmax(re, im))) return -1;
-    delta = log_uniform(r, 1e-3, 3e-2);
+    delta = dv_rng_log_uniform(r, 1e-3, 3e-2);
     *th0 = M_PI_2;
-    g->theta = round6(M_PI_2 - delta);
+    g->theta = dv_round6(M_PI_2 - delta);
   }
   const double d =
-      fmax(uniform(r, 1.0, 1.5) * log(0.3 / delta) / re, 4.0 * M_PI * sqrt(g->radius / g->gravity));
+      fmax(dv_rng_uniform(r, 1.0, 1.5) * log(0.3 / delta) / re, 4.0 * M_PI * sqrt(g->radius / g->gravity));
   set_time(r, g, d, 5.0 * d * re);
   return build(g, sc, &err) ? -1 : 0;
 }
@@ -255,8 +229,8 @@ int props_generate(uint64_t seed, size_t index, int plain, dv_gen_scene *g, dv_s
   if (status || plain || !compares_nothing(sc)) return status;
   const dv_gen_scene base = *g;
   static dv_scenario drawn;
-  uint64_t r = seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)index << 24) ^ 0x5A;
-  const int first = u01(&r) < 0.5 ? PROPS_KIND_PERIODIC : PROPS_KIND_UNSTABLE;
+  dv_rng r = {seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)index << 24) ^ 0x5A};
+  const int first = dv_rng_u01(&r) < 0.5 ? PROPS_KIND_PERIODIC : PROPS_KIND_UNSTABLE;
   for (int k = 0; k < 2; k++) { /* the kind drawn, else the other */
     const int want = k ? PROPS_KIND_PERIODIC + PROPS_KIND_UNSTABLE - first : first;
     for (int attempt = 0; attempt < ATTEMPTS; attempt++) {

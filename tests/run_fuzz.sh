@@ -35,7 +35,7 @@ clang -std=c11 -D_XOPEN_SOURCE=700 -g -O1 -fsanitize=fuzzer,address,undefined \
   -DDV_ENGINE_BUILD_DIR="\"$work\"" -DDV_ENGINE_INSTALL_DIR="\"$work\"" \
   -I"$src/common" -I"$src/reduced" -I"$src/scenario" \
   "$src/tests/fuzz/fuzz_scenario.c" "$src"/scenario/*.c "${engine_c[@]}" \
-  "$src/common/dv_error.c" "$src/common/dv_input.c" "$src/common/dv_phase.c" "$src/common/dv_clock.c" "$work/dv_format.o" "$src"/reduced/*.c "$src"/reduced/*/*.c \
+  "$src/common/dv_error.c" "$src/common/dv_input.c" "$src/common/dv_phase.c" "$src/common/dv_clock.c" "$src/common/dv_rng.c" "$work/dv_format.o" "$src"/reduced/*.c "$src"/reduced/*/*.c \
   -I"$src/engines" $(pkg-config --cflags --libs inih gsl) $sundials -ldl -lpthread -ldouble-conversion \
   -lstdc++ -lm -o "$work/fuzz" || exit 1
 mkdir -p "$work/corpus"
