@@ -3,8 +3,9 @@
 # at its defaults (implicit, 8e-6 s) is judged over the whole window, and only the
 # spread of its early error excuses any of its error (issue 48). The reference
 # amplifies a 1e-6 rad nudge linearly (x99 in 8 s); MuJoCo's early error, 1.1e-6
-# rad, spreads it by 1.1e-4 rad by 8 s. Its own error grows to 0.043 rad, its
-# turning points lagging more each period (0.013 s by the last, against the
+# rad, spreads it by 1.8e-4 rad by 8 s (its four directions summed). Its own error
+# grows to 0.043 rad, its turning points lagging more each period (0.013 s by the
+# last, against the
 # 3.06e-3 s in which the fastest theta rate 3.27 rad/s moves theta by 0.01 rad):
 # once "timing" that ended its pointwise judging at 3.48 s, now its failure, named
 # with every unit and the spread that was excused. The quick cause search tries

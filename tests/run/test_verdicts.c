@@ -184,7 +184,7 @@ int main(void) {
   }
 
   /* the hoop: the reference amplifies a nudge linearly (x99 in 8 s, measured
-   * here). MuJoCo's early error (1.1e-6 rad) spreads the reference by 1.1e-4
+   * here). MuJoCo's early error (1.1e-6 rad) spreads the reference by 1.8e-4
    * rad by 8 s; its own error grows to 0.043 rad, its turns lagging more each
    * period: a drift of its own, judged over the whole window, which it fails
    * (issue 48: the turning lag that once ended its pointwise judging at 3.48
