@@ -32,17 +32,6 @@ void dv_run_traj_free(dv_traj *tr) {
   tr->n = tr->cap = 0;
 }
 
-/* the largest |lag| of e's turns behind ref's up to t_end (s; NAN: no turn) */
-static double turning_lag(const dv_traj *e, const dv_traj *ref, double t_end) {
-  double *t = malloc((e->n + ref->n + 1) * sizeof *t), *lag = malloc((e->n + ref->n + 1) * sizeof *lag);
-  double most = NAN;
-  const size_t n = t && lag ? dv_run_turning_lags(e, ref, t_end, t, lag, NULL) : 0;
-  for (size_t k = 0; k < n; k++) most = k ? fmax(most, fabs(lag[k])) : fabs(lag[k]);
-  free(t);
-  free(lag);
-  return most;
-}
-
 void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metrics *out) {
   size_t n = e->n < ref->n ? e->n : ref->n;
   while (n > 0 && (e->s[n - 1].t > t_end || ref->s[n - 1].t > t_end ||
@@ -113,7 +102,7 @@ void dv_run_compare(const dv_traj *e, const dv_traj *ref, double t_end, dv_metri
   out->value[DV_THETA_TURNING_ERR] = turning[0];
   out->value[DV_NUTATION_PERIOD_ERR] = turning[1];
   out->value[DV_HEADING_PERIOD_ERR] = turning[2];
-  out->value[DV_TURNING_LAG] = turning_lag(e, ref, out->t_window);
+  out->value[DV_TURNING_LAG] = dv_run_turning_lag_worst(e, ref, out->t_window, NULL, NULL);
   free(pa);
   free(pb);
 }

@@ -2,7 +2,6 @@
 #include "run_decided.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -88,28 +87,18 @@ static void turning_words(const dv_traj *eng, const dv_traj *ref, double t_end, 
 /* the turn of eng that lags or leads ref's most, in words: "3rd maximum 280 ms late" */
 static void lag_words(const dv_traj *eng, const dv_traj *ref, double t_end, char *out,
                       size_t size) {
-  double *t = malloc((eng->n + ref->n + 1) * sizeof *t), *lag = malloc((eng->n + ref->n + 1) * sizeof *lag);
-  dv_turn_id *id = malloc((eng->n + ref->n + 1) * sizeof *id);
-  const size_t n = t && lag && id ? dv_run_turning_lags(eng, ref, t_end, t, lag, id) : 0;
-  size_t w = 0;
-  for (size_t k = 1; k < n; k++)
-    if (fabs(lag[k]) > fabs(lag[w])) w = k;
+  dv_turn_id w;
+  double lag;
   out[0] = '\0';
-  if (n) {
-    const char *kind = id[w].kind > 0 ? "maximum" : "minimum";
-    const char *sfx = ordinal_suffix(id[w].ordinal);
-    if (id[w].only > 0)
-      snprintf(out, size, "its %zu%s %s, the reference's past the window", id[w].ordinal, sfx, kind);
-    else if (id[w].only < 0)
-      snprintf(out, size, "the reference's %zu%s %s, its own past the window", id[w].ordinal, sfx,
-               kind);
-    else
-      snprintf(out, size, "%zu%s %s %.3g ms %s", id[w].ordinal, sfx, kind, 1e3 * fabs(lag[w]),
-               lag[w] < 0 ? "early" : "late");
-  }
-  free(t);
-  free(lag);
-  free(id);
+  if (isnan(dv_run_turning_lag_worst(eng, ref, t_end, &w, &lag))) return;
+  const char *kind = w.kind > 0 ? "maximum" : "minimum", *sfx = ordinal_suffix(w.ordinal);
+  if (w.only > 0)
+    snprintf(out, size, "its %zu%s %s, the reference's past the window", w.ordinal, sfx, kind);
+  else if (w.only < 0)
+    snprintf(out, size, "the reference's %zu%s %s, its own past the window", w.ordinal, sfx, kind);
+  else
+    snprintf(out, size, "%zu%s %s %.3g ms %s", w.ordinal, sfx, kind, 1e3 * fabs(lag),
+             lag < 0 ? "early" : "late");
 }
 
 /* why the compared window ends where it does: a few words into brief, a
@@ -243,14 +232,11 @@ static void one_line(const dv_comparison *c, const dv_traj *ref, const char *bri
   snprintf(r->decided, sizeof r->decided, "%s", line);
 }
 
-/* what the shadow added to m's limit, in words ("" where nothing) */
-static const char *excused_words(const dv_engine_result *r, int m) {
-  static _Thread_local char words[120];
-  words[0] = '\0';
+void dv_run_excused_words(const dv_engine_result *r, int m, char *buf, size_t size) {
+  buf[0] = '\0';
   if (r->excused[m] > 0.0)
-    snprintf(words, sizeof words, ", plus %.3g %s the spread of its early error excuses",
-             r->excused[m], dv_metric_units[m]);
-  return words;
+    snprintf(buf, size, ", plus %.3g %s the spread of its early error excuses", r->excused[m],
+             dv_metric_units[m]);
 }
 
 /* the sentences: the window, the shadow, the deciding limit, the lying down */
@@ -282,9 +268,11 @@ static void sentences(const dv_comparison *c, const dv_traj *ref, const char *fu
         "it: %s. ",
         r->pointwise_end, r->horizon_why);
   const int m = dv_run_deciding_metric(r);
+  char plus[120];
+  if (m >= 0) dv_run_excused_words(r, m, plus, sizeof plus);
   if (m >= 0)
     put(w, size, &len, "The limit of %s (%.3g %s): %s%s. ", dv_metric_names[m], r->tolerance[m],
-        dv_metric_units[m], r->limit_why[m], excused_words(r, m));
+        dv_metric_units[m], r->limit_why[m], plus);
   else if (r->nfailures)
     put(w, size, &len, "%s. ", r->failures[0]);
   if (r->event.judged)

@@ -315,15 +315,12 @@ static void judge(const dv_comparison *c, const dv_traj *ref, const dv_engine_st
       r->verdict != DV_VERDICT_NOT_JUDGED && r->verdict != DV_VERDICT_OUTSIDE_VALIDITY;
   for (int m = 0; m < DV_NMETRICS && judged; m++) {
     if (dv_run_limit_check(r->vs_ref.value[m], r->tolerance[m]) != DV_LIMIT_OVER) continue;
-    if (!isnan(r->vs_ref.value[m]) && r->excused[m] > 0.0)
-      add_failure(r, "%s: %s: %s = %.6g %s > %.6g %s (%s, plus %.3g %s the spread of its early "
-                  "error excuses)", sc->name, name, dv_metric_names[m], r->vs_ref.value[m],
-                  dv_metric_units[m], r->tolerance[m], dv_metric_units[m], r->limit_why[m],
-                  r->excused[m], dv_metric_units[m]);
-    else if (!isnan(r->vs_ref.value[m]))
-      add_failure(r, "%s: %s: %s = %.6g %s > %.6g %s (%s)", sc->name, name, dv_metric_names[m],
+    char plus[120];
+    dv_run_excused_words(r, m, plus, sizeof plus);
+    if (!isnan(r->vs_ref.value[m]))
+      add_failure(r, "%s: %s: %s = %.6g %s > %.6g %s (%s%s)", sc->name, name, dv_metric_names[m],
                   r->vs_ref.value[m], dv_metric_units[m], r->tolerance[m], dv_metric_units[m],
-                  r->limit_why[m]);
+                  r->limit_why[m], plus);
     else if (r->verdict == DV_VERDICT_AGREES || r->verdict == DV_VERDICT_EXCEEDS)
       add_failure(r, "%s: %s: %s not measured, which never passes its limit %.6g (%s)", sc->name,
                   name, dv_metric_names[m], r->tolerance[m], r->limit_why[m]);

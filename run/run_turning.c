@@ -146,6 +146,24 @@ cleanup:
   return n;
 }
 
+double dv_run_turning_lag_worst(const dv_traj *e, const dv_traj *ref, double t_end,
+                                dv_turn_id *worst, double *lag_of) {
+  const size_t room = e->n + ref->n + 1;
+  double *t = malloc(room * sizeof *t), *lag = malloc(room * sizeof *lag);
+  dv_turn_id *id = malloc(room * sizeof *id);
+  const size_t n = t && lag && id ? dv_run_turning_lags(e, ref, t_end, t, lag, id) : 0;
+  size_t w = 0;
+  for (size_t k = 1; k < n; k++)
+    if (fabs(lag[k]) > fabs(lag[w])) w = k;
+  if (worst) *worst = n ? id[w] : (dv_turn_id){0, 0, 0};
+  if (lag_of) *lag_of = n ? lag[w] : NAN;
+  const double most = n ? fabs(lag[w]) : NAN;
+  free(t);
+  free(lag);
+  free(id);
+  return most;
+}
+
 /* turn_err's new candidate err at the ordinal-th turn of kind: kept in *w when largest */
 static void consider(double *turn_err, double err, int kind, size_t ordinal, double lag, int only,
                      dv_turning_worst *w) {

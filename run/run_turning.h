@@ -57,6 +57,11 @@ typedef struct dv_turn_id {
 size_t dv_run_turning_lags(const dv_traj *e, const dv_traj *ref, double t_end, double *t,
                            double *lag, dv_turn_id *id);
 
+/* turning_lag: the largest |lag| of those (s; NAN: no turn), which turn it
+ * is into worst and its signed lag into lag (each may be NULL) */
+double dv_run_turning_lag_worst(const dv_traj *e, const dv_traj *ref, double t_end,
+                                dv_turn_id *worst, double *lag);
+
 /* the turning points theta_turning_err compares: those of tr up to t_end,
  * in time order, into t, theta and kind (+1 maximum, -1 minimum), tr->n of
  * room each; their count (0 also when out of memory) */

@@ -23,12 +23,6 @@ void dv_shadow_free(dv_shadow *s) {
   memset(s, 0, sizeof *s);
 }
 
-void dv_shadow_merge(dv_shadow *into, const dv_shadow *from) {
-  for (int k = 0; k < DV_SHADOW_N; k++)
-    for (size_t i = 0; i < into->n && i < from->n; i++)
-      into->env[k][i] = fmax(into->env[k][i], from->env[k][i]);
-}
-
 void dv_shadow_sum(dv_shadow *into, const dv_shadow *from) {
   for (int k = 0; k < DV_SHADOW_N; k++)
     for (size_t i = 0; i < into->n && i < from->n; i++) into->env[k][i] += from->env[k][i];

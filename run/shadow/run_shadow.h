@@ -34,8 +34,6 @@ typedef struct dv_shadow {
 /* n samples, every spread 0: 0, or -1 out of memory */
 int dv_shadow_alloc(dv_shadow *s, size_t n);
 void dv_shadow_free(dv_shadow *s); /* NULL-safe */
-/* into's spreads at least from's (the same n) */
-void dv_shadow_merge(dv_shadow *into, const dv_shadow *from);
 /* from's spreads added to into's (the same n): directions' spreads together */
 void dv_shadow_sum(dv_shadow *into, const dv_shadow *from);
 /* every spread 0 again */

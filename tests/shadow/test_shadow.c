@@ -6,7 +6,7 @@
  *   - the contact 0.05 m ahead along the path: 0.05 m of path and of phase;
  *   - a period 0.02 s longer, ending at 4 s: its k-th turn lags 0.01 k s, the
  *     lag spread their running maximum, and every spread infinite past its end.
- * The spreads are running maxima, merged runs the larger of each. */
+ * The spreads are running maxima; directions' spreads add up. */
 #include <math.h>
 #include <string.h>
 
@@ -82,13 +82,16 @@ int main(void) {
     }
     if (t > 4.0 + 1e-9) break;
   }
-  /* merged: the larger of each, sample by sample */
-  dv_shadow_merge(&all, &a);
-  dv_shadow_merge(&all, &b);
+  /* two directions' spreads together: their sum, sample by sample (b moves no theta) */
+  dv_shadow_sum(&all, &a);
+  dv_shadow_sum(&all, &b);
   const size_t at = (size_t)(2.0 / DT);
-  CHECK(all.env[DV_SHADOW_PATH][at] == fmax(a.env[DV_SHADOW_PATH][at], b.env[DV_SHADOW_PATH][at]) &&
+  CHECK(all.env[DV_SHADOW_PATH][at] == a.env[DV_SHADOW_PATH][at] + b.env[DV_SHADOW_PATH][at] &&
             all.env[DV_SHADOW_THETA][at] == a.env[DV_SHADOW_THETA][at],
-        "merge at 2 s: %g %g", all.env[DV_SHADOW_PATH][at], all.env[DV_SHADOW_THETA][at]);
+        "sum at 2 s: %g %g", all.env[DV_SHADOW_PATH][at], all.env[DV_SHADOW_THETA][at]);
+  dv_shadow_clear(&all);
+  CHECK(all.env[DV_SHADOW_PATH][at] == 0.0 && all.env[DV_SHADOW_LAG][ref.n - 1] == 0.0,
+        "cleared: %g", all.env[DV_SHADOW_PATH][at]);
   /* the spread at a time: the reference's first sample at or after it */
   CHECK(dv_shadow_at(&a, &ref, DV_SHADOW_THETA, 2.0012) == a.env[DV_SHADOW_THETA][at + 1],
         "at 2.0012 s: %g", dv_shadow_at(&a, &ref, DV_SHADOW_THETA, 2.0012));
