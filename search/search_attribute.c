@@ -30,6 +30,17 @@ void dv_search_attribute_split(const dv_attribution_errors *e, int has_stand_in,
   out->rest = e->stand_in - out->geometry - out->time - out->contact;
 }
 
+/* p's theta error against pr's reference (the thin disk where pr measures
+ * against it) into *e; 1 where it measures something: a run judged, or a
+ * stand-in's (the thin disk's of a thick scene, a cylinder's of a thin one),
+ * which is not judged yet measured, all the geometry step and a
+ * convergence read */
+static int measured(const dv_prober *pr, const dv_sweep_point *p, double *e, int *stand_in) {
+  *e = pr->own_reference ? p->metric[DV_THETA_MAX_ERR] : p->theta_thin;
+  *stand_in = p->thinner && isfinite(*e);
+  return p->ok || *stand_in;
+}
+
 int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const char *o1,
                           const char *o2, const char *o3, const char *o4) {
   const char *given[4] = {o1, o2, o3, o4}, *over[4];
@@ -39,12 +50,8 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
   dv_sweep_point p;
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, over, n, &p, err))
     return DV_EINPUT;
-  /* a stand-in's run (the thin disk's of a thick scene, a cylinder's of a
-   * thin one) is not judged, yet its errors, all the geometry step and a
-   * convergence read, are measured */
-  const double measured = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
-  const int stand_in_measured = p.thinner && isfinite(measured);
-  if (!p.ok && !stand_in_measured) {
+  int stand_in;
+  if (!measured(pr, &p, e, &stand_in)) {
     char with[400] = "";
     for (size_t i = 0; i < n; i++)
       snprintf(with + strlen(with), sizeof with - strlen(with), " %s", over[i]);
@@ -52,7 +59,6 @@ int dv_search_probe_theta(const dv_prober *pr, double *e, dv_error *err, const c
                    pr->engine->name, n ? " with" : "", with, dv_run_verdict_name(p.verdict),
                    p.detail);
   }
-  *e = measured;
   return DV_OK;
 }
 
@@ -63,15 +69,13 @@ static int measures_nothing(const dv_prober *pr, double *e, char *why, size_t si
   why[0] = '\0';
   if (dv_search_sweep_probe_in(pr->refs, pr->sc, pr->engine->name, NULL, 0, &p, err))
     return DV_EINPUT;
-  /* a stand-in is not judged (another body), yet its errors are measured */
-  const double measured = pr->own_reference ? p.metric[DV_THETA_MAX_ERR] : p.theta_thin;
-  const int thin_measured = p.thinner && isfinite(measured);
-  *e = p.ok || thin_measured ? measured : NAN;
-  if (!thin_measured && p.ok && isnan(*e))
+  int stand_in;
+  if (!measured(pr, &p, e, &stand_in)) *e = NAN;
+  if (!stand_in && p.ok && isnan(*e))
     snprintf(why, size, "%s against %s: %.270s", dv_run_verdict_name(p.verdict),
              pr->own_reference ? "its own reference" : "the thin disk",
              p.detail[0] ? p.detail : "its compared window is too short to measure");
-  else if (!thin_measured && !p.ok && p.verdict == DV_VERDICT_NOT_JUDGED)
+  else if (!stand_in && !p.ok && p.verdict == DV_VERDICT_NOT_JUDGED)
     snprintf(why, size, "%.300s", p.detail);
   return DV_OK;
 }
