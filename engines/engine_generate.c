@@ -27,7 +27,8 @@ static void draw(dv_rng *r, double gravity, dv_gen_scene *g) {
   g->mass = dv_round6(dv_rng_uniform(r, 700.0, 8000.0) * M_PI * rad * rad * t_eff);
   const double mr2 = g->mass * rad * rad;
   /* a hoop (A = m r^2 / 2, C = 2A) to an axle-heavy wheel (C small against A) */
-  g->A = dv_round6(mr2 * (dv_rng_uniform(r, 0.15, 0.5) + g->thickness * g->thickness / (12.0 * rad * rad)));
+  g->A = dv_round6(
+      mr2 * (dv_rng_uniform(r, 0.15, 0.5) + g->thickness * g->thickness / (12.0 * rad * rad)));
   g->C = dv_round6(fmin(dv_rng_uniform(r, 0.02, 1.0) * 2.0 * g->A, mr2));
   g->friction = dv_round6(dv_rng_uniform(r, 0.3, 2.0));
   g->x = dv_round6(dv_rng_uniform(r, -1.0, 1.0));
@@ -38,7 +39,8 @@ static void draw(dv_rng *r, double gravity, dv_gen_scene *g) {
   g->steady_circle_radius = NAN;
   switch (g->kind) {
     case DV_GEN_STEADY: /* either lean: leaning over the centre, or away (past upright) */
-      g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45) : dv_rng_uniform(r, 1.65, 2.2));
+      g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45)
+                                               : dv_rng_uniform(r, 1.65, 2.2));
       g->steady_circle_radius = dv_round6(rad * dv_rng_log_uniform(r, 2.0, 100.0));
       break;
     case DV_GEN_FALL:
@@ -61,8 +63,7 @@ static void draw(dv_rng *r, double gravity, dv_gen_scene *g) {
   g->output_dt = dv_round6(g->duration / floor(dv_rng_uniform(r, 150.0, 300.0)));
 }
 
-/* g into sc, checked as a load checks a file */
-static int build(const dv_gen_scene *g, dv_scenario *sc, dv_error *err) {
+int dv_engine_generate_build(const dv_gen_scene *g, dv_scenario *sc, dv_error *err) {
   dv_engine_init_scenario(sc);
   dv_scenario_core_defaults(sc);
   snprintf(sc->name, sizeof sc->name, "%s", g->name);
@@ -114,7 +115,7 @@ int dv_engine_generate(uint64_t seed, size_t index, double gravity, dv_gen_scene
     memset(g, 0, sizeof *g);
     snprintf(g->name, sizeof g->name, "gen-%llu-%zu", (unsigned long long)seed, index);
     draw(&r, gravity, g);
-    if (build(g, into, &why) == DV_OK) return DV_OK;
+    if (dv_engine_generate_build(g, into, &why) == DV_OK) return DV_OK;
   }
   return dv_fail(err, DV_EINPUT, "%s: no valid scene in 200 draws (the last: %s)", g->name,
                  why.msg);

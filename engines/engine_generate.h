@@ -51,6 +51,10 @@ typedef struct dv_gen_scene {
 int dv_engine_generate(uint64_t seed, size_t index, double gravity, dv_gen_scene *g,
                        dv_scenario *sc, dv_error *err);
 
+/* g into sc, checked as a load checks its file (a steady start without its
+ * rates, any other without a circle); DV_OK, or < 0 with err */
+int dv_engine_generate_build(const dv_gen_scene *g, dv_scenario *sc, dv_error *err);
+
 /* g as a scenario file's text; the length written (snprintf's) */
 int dv_engine_generate_ini(const dv_gen_scene *g, char *buf, size_t size);
 

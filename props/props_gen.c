@@ -32,6 +32,7 @@
 #include "engine_scene.h"
 #include "dv_rng.h"
 #include "props.h"
+#include "props_shadow.h"
 #include "red_steady.h"
 #include "run_trajectory.h"
 #include "run_turning.h"
@@ -49,55 +50,11 @@ const char *const props_kind_names[PROPS_NKINDS] = {"steady", "fall",     "nutat
 #define MAX_SAMPLES 600 /* samples at most (the cost of a judge grows with them) */
 #define GROWTH 30.0     /* an unstable release's distance from its state grows this much */
 
-/* g into sc as a load of its .ini builds it (engine_generate.c's build) */
-static int build(const dv_gen_scene *g, dv_scenario *sc, dv_error *err) {
-  dv_engine_init_scenario(sc);
-  dv_scenario_core_defaults(sc);
-  snprintf(sc->name, sizeof sc->name, "%s", g->name);
-  const struct {
-    const char *section, *key;
-    double v;
-    int rate; /* 1: a rate (not for a steady start), -1: the circle (only for one) */
-  } keys[] = {
-      {"scenario", "duration", g->duration, 0},
-      {"scenario", "output_dt", g->output_dt, 0},
-      {"disk", "radius", g->radius, 0},
-      {"disk", "mass", g->mass, 0},
-      {"disk", "gravity", g->gravity, 0},
-      {"disk", "thickness", g->thickness, 0},
-      {"disk", "A", g->A, 0},
-      {"disk", "C", g->C, 0},
-      {"disk", "friction", g->friction, 0},
-      {"initial", "theta", g->theta, 0},
-      {"initial", "phi", g->phi, 0},
-      {"initial", "x", g->x, 0},
-      {"initial", "y", g->y, 0},
-      {"initial", "theta_dot", g->theta_dot, 1},
-      {"initial", "phi_dot", g->phi_dot, 1},
-      {"initial", "psi_dot", g->psi_dot, 1},
-      {"initial", "steady_circle_radius", g->steady_circle_radius, -1},
-  };
-  const int steady = g->kind == DV_GEN_STEADY;
-  int status = DV_OK;
-  for (size_t i = 0; i < sizeof keys / sizeof keys[0] && !status; i++) {
-    if ((steady && keys[i].rate > 0) || (!steady && keys[i].rate < 0)) continue;
-    status = dv_scenario_set_core(sc, keys[i].section, keys[i].key, keys[i].v, err);
-  }
-  if (!status) status = dv_scenario_check_core(sc, err);
-  if (!status) status = dv_engine_derive_settings(sc, err);
-  return status;
-}
-
 /* sc's body's reference at its default settings into tr; where its
  * validity ends (s, INFINITY: never) */
 static int body_run(const dv_scenario *sc, dv_traj *tr, double *valid, dv_error *err) {
   static dv_scenario body;
-  body = *sc;
-  const dv_engine_type *type = dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
-  if (sc->thickness > 0.0) {
-    type = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
-    dv_scenario_set_number(&body, type->name, "half_thickness", 0.5 * sc->thickness, NULL);
-  }
+  const dv_engine_type *type = props_body_of(sc, &body);
   memset(tr, 0, sizeof *tr);
   dv_engine_stats st;
   const int status = dv_run_collect(type, &body, dv_run_traj_keep, tr, &st, err);
@@ -145,15 +102,18 @@ static int draw_periodic(dv_rng *r, dv_gen_scene *g, dv_scenario *sc) {
   g->steady_circle_radius = dv_round6(g->radius * dv_rng_log_uniform(r, 2.0, 100.0));
   g->duration = 1.0, g->output_dt = 0.01; /* for the steady rates; set below */
   double re, im;
-  if (build(g, sc, &err) || linearised(sc, &re, &im) || !(im > 0.0) || re > 1e-6 * im) return -1;
+  if (dv_engine_generate_build(g, sc, &err) || linearised(sc, &re, &im) || !(im > 0.0) ||
+      re > 1e-6 * im)
+    return -1;
   const double period = 2.0 * M_PI / im;
   g->kind = DV_GEN_NUTATION;
   g->steady_circle_radius = NAN;
   g->phi_dot = sc->initial[RED_VPH], g->psi_dot = sc->initial[RED_VPS];
-  g->theta_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * dv_rng_log_uniform(r, 0.003, 0.05) * im);
+  g->theta_dot =
+      dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * dv_rng_log_uniform(r, 0.003, 0.05) * im);
   const double periods = dv_rng_uniform(r, 9.5, 12.0);
   set_time(r, g, periods * period, PER_PERIOD * periods);
-  return build(g, sc, &err) ? -1 : 0;
+  return dv_engine_generate_build(g, sc, &err) ? -1 : 0;
 }
 
 /* a draw of g (the object kept) as a release near an unstable state: the
@@ -162,11 +122,14 @@ static int draw_unstable(dv_rng *r, dv_gen_scene *g, dv_scenario *sc, double *th
   dv_error err = {0};
   double re, im, delta;
   g->duration = 1.0, g->output_dt = 0.01; /* for the linearisation; set below */
-  if (dv_rng_u01(r) < 0.5) {                     /* an unstable steady circle */
+  if (dv_rng_u01(r) < 0.5) {              /* an unstable steady circle */
     g->kind = DV_GEN_STEADY;
-    g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45) : dv_rng_uniform(r, 1.65, 2.2));
+    g->theta = dv_round6(dv_rng_u01(r) < 0.8 ? dv_rng_uniform(r, 0.25, 1.45)
+                                             : dv_rng_uniform(r, 1.65, 2.2));
     g->steady_circle_radius = dv_round6(g->radius * dv_rng_log_uniform(r, 2.0, 100.0));
-    if (build(g, sc, &err) || linearised(sc, &re, &im) || !(re > 1e-6 * fmax(re, im))) return -1;
+    if (dv_engine_generate_build(g, sc, &err) || linearised(sc, &re, &im) ||
+        !(re > 1e-6 * fmax(re, im)))
+      return -1;
     g->kind = DV_GEN_NUTATION;
     g->steady_circle_radius = NAN;
     g->phi_dot = sc->initial[RED_VPH], g->psi_dot = sc->initial[RED_VPS];
@@ -180,15 +143,17 @@ static int draw_unstable(dv_rng *r, dv_gen_scene *g, dv_scenario *sc, double *th
     g->steady_circle_radius = NAN;
     g->theta = M_PI_2, g->theta_dot = g->phi_dot = 0.0;
     g->psi_dot = dv_round6((dv_rng_u01(r) < 0.5 ? -1 : 1) * spin);
-    if (build(g, sc, &err) || linearised(sc, &re, &im) || !(re > 1e-6 * fmax(re, im))) return -1;
+    if (dv_engine_generate_build(g, sc, &err) || linearised(sc, &re, &im) ||
+        !(re > 1e-6 * fmax(re, im)))
+      return -1;
     delta = dv_rng_log_uniform(r, 1e-3, 3e-2);
     *th0 = M_PI_2;
     g->theta = dv_round6(M_PI_2 - delta);
   }
-  const double d =
-      fmax(dv_rng_uniform(r, 1.0, 1.5) * log(0.3 / delta) / re, 4.0 * M_PI * sqrt(g->radius / g->gravity));
+  const double d = fmax(dv_rng_uniform(r, 1.0, 1.5) * log(0.3 / delta) / re,
+                        4.0 * M_PI * sqrt(g->radius / g->gravity));
   set_time(r, g, d, 5.0 * d * re);
-  return build(g, sc, &err) ? -1 : 0;
+  return dv_engine_generate_build(g, sc, &err) ? -1 : 0;
 }
 
 /* g's reference shows what its kind promises (props.h): periodic, it runs

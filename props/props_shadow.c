@@ -25,8 +25,7 @@ void props_nudges(const dv_scenario *sc, const double *early, double nudge[PROPS
   }
 }
 
-/* sc's body: the thin disk, or the matched reference at half its thickness, into body */
-static const dv_engine_type *body_of(const dv_scenario *sc, dv_scenario *body) {
+const dv_engine_type *props_body_of(const dv_scenario *sc, dv_scenario *body) {
   *body = *sc;
   if (!(sc->thickness > 0.0)) return dv_engine_of_role(DV_ENGINE_THIN_REFERENCE);
   const dv_engine_type *matched = dv_engine_of_role(DV_ENGINE_MATCHED_REFERENCE);
@@ -56,7 +55,7 @@ int props_shadow_run(const dv_scenario *sc, const double nudge[PROPS_DIRS], prop
   static dv_scenario body, moved; /* large: not on the stack */
   memset(s, 0, sizeof *s);
   memcpy(s->nudge, nudge, sizeof s->nudge);
-  const dv_engine_type *type = body_of(sc, &body);
+  const dv_engine_type *type = props_body_of(sc, &body);
   dv_engine_stats st;
   int status = dv_run_collect(type, &body, dv_run_traj_keep, &s->ref, &st, err);
   if (status < 0) return status;

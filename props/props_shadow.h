@@ -9,10 +9,10 @@
  * would start past the lying-down limits left out). The shadow at each of
  * the reference's samples is, summed over the directions, the running
  * maximum over each direction's two runs of |theta - theta_ref| and
- * |contact - contact_ref|, INFINITY past a run's end. An error series e is judged against the limit plus the shadow: its
- * unexcused part is max over the samples of e, over the early window
- * (t <= t_early), and of e - s past it, up to where s reaches the motion's
- * size (the pointwise end) or the window ends. */
+ * |contact - contact_ref|, INFINITY past a run's end. An error series e is judged against the limit
+ * plus the shadow: its unexcused part is max over the samples of e, over the early window (t <=
+ * t_early), and of e - s past it, up to where s reaches the motion's size (the pointwise end) or
+ * the window ends. */
 #ifndef DV_PROPS_SHADOW_H
 #define DV_PROPS_SHADOW_H
 
@@ -51,6 +51,10 @@ double props_rate_scale(const dv_scenario *sc);
  * at least PROPS_NUDGE (times the rate scale for a rate), at most the
  * theta limit (times the rate scale) */
 void props_nudges(const dv_scenario *sc, const double *early, double nudge[PROPS_DIRS]);
+
+/* sc's body into body (sc; the matched reference's half-thickness set to
+ * half the scene's on a thick scene) and the reference engine that runs it */
+const dv_engine_type *props_body_of(const dv_scenario *sc, dv_scenario *body);
 
 /* the reference of sc's body and its runs nudged by nudge into s (free it
  * with props_shadow_free): DV_OK, or < 0 when a run fails (err) */
