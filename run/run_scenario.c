@@ -396,7 +396,10 @@ int dv_run_thin_reference(const dv_scenario *ref_sc, dv_comparison *c, dv_error 
   status = dv_run_amplification(ref_sc, ref_sc->thickness > 0.0 ? &body.traj : &c->thin, &c->amp,
                                 c->spread, err);
   dv_run_progress_role(NULL);
-  dv_run_traj_free(&body.traj);
+  if (ref_sc->thickness > 0.0 && c->nmatched < DV_MAX_ENGINES)
+    c->matched[c->nmatched++] = body; /* the engines of the scene's body are judged against it */
+  else
+    dv_run_traj_free(&body.traj);
   c->horizon_wall_s = dv_clock_now() - t_horizon;
   if (status < 0) return status; /* err names the nudged run */
   c->horizon = c->amp.horizon;
