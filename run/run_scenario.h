@@ -1,18 +1,20 @@
 /* dv_run: one scenario through the references and the engines, compared.
  *
- * Every engine is compared with the reference for the body it simulates:
- * the geometry-matched disk (engine "matched", same half-thickness) for a
- * cylinder, the thin disk for a thin or ellipsoid stand-in; and, in any
- * case, with the thin disk. The compared window ends where the reference
- * ends (its event or validity limit). Every metric has a limit
- * (run_limits.h). The pointwise metrics (theta_max_err, theta_rms_err,
- * path_max_err, path_rms_err, phase_err) cover the window up to the engine's horizon:
- * where its early error, amplified as the reference amplifies a nudge,
- * reaches the theta limit (run_horizon.h); the timing-insensitive ones
- * (path_hausdorff, theta_extrema_err, energy_drift, invariant_drift,
- * slip_max) the whole window, unless the reference nudged by the engine's
- * early error moves them by half their limit. An engine's lying down is
- * judged against the reference's and those nudged runs' (run_event.h).
+ * Every engine is judged against the reference of the scene's body: the
+ * thin disk, or the geometry-matched disk (engine "matched") of the scene's
+ * thickness; an engine that would simulate another body is not judged
+ * (dv_run_cannot_model); every engine is also compared with the thin disk.
+ * The compared window ends where the reference ends (its event or validity
+ * limit). Every metric has a limit (run_limits.h). The pointwise metrics
+ * (theta_max_err, theta_rms_err, path_max_err, path_rms_err, phase_err) and
+ * turning_lag are judged over the window against their limit plus the
+ * shadow of the engine's early error (run_shadow.h, run_horizon.h), the
+ * pointwise ones up to where that shadow reaches the motion's size; the
+ * timing-insensitive ones (path_hausdorff, theta_extrema_err, energy_drift,
+ * invariant_drift, slip_max, the turning values and periods) over the whole
+ * window, unless the reference nudged by the engine's early error moves them
+ * by half their limit. An engine's lying down is judged against the
+ * reference's and those nudged runs' (run_event.h).
  *
  * Not judged, never a pass: an engine that is the reference it would be
  * compared with (the same engine on the same scenario: it measures nothing),
@@ -61,12 +63,12 @@ typedef struct dv_engine_result {
   double early_err;               /* rad: its largest theta error to early_until (run_horizon.h) */
   double early_of[DV_NUDGE_DIRS]; /* its largest errors there, by dv_nudge_dir_names */
   double early_until;             /* s: the scene's shortest time scale, at least output_dt */
-  double horizon;                 /* s: where early_of amplified reaches the limit (INFINITY) */
-  double horizon_gain;            /* the reference's amplification there (at the end: INFINITY) */
+  double horizon;      /* s: where its shadow reaches the motion's size (INFINITY: never) */
+  double horizon_gain; /* the reference's amplification of a nudge there (or at the end) */
   double nudge;                   /* rad: its event's theta nudge, max(early_err, the nudge) */
   double spread[DV_NMETRICS];     /* what its early errors as nudges move each metric by */
   dv_run_end nudged[2];           /* how those nudged reference runs ended */
-  char horizon_why[560];          /* why the horizon is where it is, in words */
+  char horizon_why[560];          /* its shadow in words: the early error, the spread, its end */
   char decided[DV_DECIDED_MAX + 1]; /* what decided the verdict, one line (run_decided.h) */
   char decided_why[1600];           /* why: the window's end, the horizon, the limit's source */
   char cause[200];                /* an excess's cause, from attribution ("": unknown) */
@@ -107,7 +109,7 @@ typedef struct dv_comparison {
   double horizon_wall_s; /* of the nudged reference runs (amplification, spreads), s */
   double thin_valid_end; /* where rolling stops describing the physics, s */
   dv_amplification amp;  /* how the reference amplifies a DV_HORIZON_NUDGE (run_horizon.h) */
-  double horizon;        /* s: amp.horizon, an engine's latest (its early error >= the nudge) */
+  double horizon;        /* s: amp.horizon, where a nudge of the start grows by the limit */
   double spread[DV_NMETRICS]; /* what amp's nudge of the reference moves each metric by */
   double min_window;          /* s: the scene's shortest time scale (no shorter window judged) */
   size_t n;
