@@ -2,7 +2,11 @@
  *
  * reset starts the adapter and sends the scene; advance asks for each sample
  * and checks the row it gets as a linked engine's state is checked
- * (engine_watch.h), plus what only a pipe can get wrong: an answer that never
+ * (engine_watch.h) and against the rows before it as a trajectory file's
+ * columns are (the steps against the time, the row at t = 0 against the state
+ * sent, each angle's step against its rate, the centre's against its
+ * velocity: a pose replayed with made-up velocities fails), plus what only a
+ * pipe can get wrong: an answer that never
  * comes (the manifest's timeout), a line that is not 16 numbers, a time that
  * is not the one asked, a quaternion off the unit sphere, the adapter's own
  * "error" line, its exit. Every one ends the run as failed with the reason
@@ -35,6 +39,12 @@ typedef struct adapter_run {
   dv_engine_watch watch;
   dv_engine_stats st;
   double prev_y[RED_NSTATE];
+  double sent[RED_NSTATE]; /* the state the run starts from */
+  double rate_scale;       /* rad/s: the rows' checks (engine_watch.h) */
+  size_t rows;             /* rows answered */
+  dv_sample last[1];       /* the row before */
+  dv_rows_centre_track centre;
+  dv_rows_drift drift[3]; /* theta, phi, psi */
   int status; /* DV_OK, DV_EVENT, or the failure's code */
 } adapter_run;
 
@@ -99,6 +109,11 @@ static int adapter_reset(void *p, const double state[RED_NSTATE], dv_error *err)
   if (dv_adapter_scene_text(r->a, &r->sc, state, r->scene, sizeof r->scene, err))
     return failed(r, DV_FAILURE_SETUP, err, "", err->msg);
   memcpy(r->prev_y, state, sizeof r->prev_y);
+  memcpy(r->sent, state, sizeof r->sent);
+  r->rate_scale = dv_rows_rate_scale(&r->sc.disk, state);
+  r->rows = 0;
+  memset(&r->centre, 0, sizeof r->centre);
+  memset(r->drift, 0, sizeof r->drift);
   dv_pose start; /* watched from the state sent, whatever times are asked for */
   dv_pose_from_state(&r->geom, state, &start);
   const dv_failure f = dv_engine_watch_start(&r->watch, &r->sc.disk, &start, what, sizeof what);
@@ -130,6 +145,55 @@ static int parse_row(const char *line, double v[ROW_FIELDS], char *what, size_t 
   }
   while (*s == ' ' || *s == '\t') s++;
   if (*s) return snprintf(what, size, "more than %d fields in: %.80s", ROW_FIELDS, line), -1;
+  return 0;
+}
+
+/* the row's own consistency, as a trajectory file's (engine_watch.h): its
+ * step count against its time, the row at t = 0 against the state sent, each
+ * angle's step against its rate and the centre's against its velocity: 0, or
+ * 1 with what set */
+static int rows_disagree(adapter_run *r, const dv_sample *s, const dv_pose *pose,
+                         const double v[ROW_FIELDS], char *what, size_t size) {
+  static const char *const name[RED_NSTATE] = {
+      [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot", [RED_VPS] = "psi_dot",
+      [RED_PH] = "phi",   [RED_PS] = "psi",        [RED_X] = "x",         [RED_Y] = "y"};
+  const double steps = round(v[0] / r->timestep);
+  if (v[15] != steps)
+    return snprintf(what, size, "%.0f steps at t = %.9g s, where the step %g s makes %.0f", v[15],
+                    v[0], r->timestep, steps), 1;
+  const int k = s->t == 0.0 ? dv_rows_start_off(s->y, r->sent, r->sc.disk.r, r->rate_scale) : -1;
+  if (k >= 0)
+    return snprintf(what, size, "its state at t = 0 is not the one sent: %s = %.10g, sent %.10g",
+                    name[k], s->y[k], r->sent[k]), 1;
+  const dv_sample *a = r->rows ? &r->last[0] : NULL;
+  const int flat = !a || s->y[RED_TH] < 1e-3 || dv_rows_turn_near_flat(a, s);
+  for (int q = 0; a && q < 3; q++) {
+    static const char *const angle[3] = {"theta", "phi", "psi"};
+    double miss;
+    int summed;
+    if (q > 0 && flat) continue; /* phi, psi whirl near flat, unresolved by the rows */
+    const double d = dv_rows_angle(a, s, q, r->rate_scale, &r->drift[q], &miss, &summed);
+    if (d > 1.0 && summed)
+      return snprintf(what, size,
+                      "%s's steps to t = %.9g s add up to %.3g rad off the trapezoids of its "
+                      "rate over %.3g rad of them, %.3g times what they allow",
+                      angle[q], s->t, r->drift[q].miss, r->drift[q].travel, d), 1;
+    if (d > 1.0)
+      return snprintf(what, size,
+                      "%s misses the trapezoid of its rate by %.3g rad from t = %.9g to %.9g s, "
+                      "%.3g times what the step and the rates allow",
+                      angle[q], fabs(miss), a->t, s->t, d), 1;
+  }
+  int c;
+  const double d = dv_rows_centre(&r->centre, a, s, pose->pos, pose->vel,
+                                  r->sc.disk.r * r->rate_scale, &c);
+  if (d > 1.0)
+    return snprintf(what, size,
+                    "the centre's %s step to t = %.9g s misses the trapezoid of its velocity, %.3g "
+                    "times what the step and the speed allow",
+                    c ? "y" : "x", s->t, d), 1;
+  r->last[0] = *s;
+  r->rows++;
   return 0;
 }
 
@@ -179,6 +243,8 @@ static int adapter_advance(void *p, double t, dv_sample *out, dv_error *err) {
                                              r->timestep, what, sizeof what);
   if (f) return failed(r, f, err, "", what);
   dv_sample_from_pose(&r->sc.disk, &r->geom, &pose, t, r->prev_y, out);
+  if (rows_disagree(r, out, &pose, v, what, sizeof what))
+    return failed(r, DV_FAILURE_LIBRARY, err, "its rows disagree: ", what);
   out->contacts = (int)v[14];
   memcpy(r->prev_y, out->y, sizeof r->prev_y);
   dv_stats_add_sample(&r->st, out);

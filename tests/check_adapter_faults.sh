@@ -9,7 +9,9 @@
 #   - crash, hang (timeout 2 s), garbage, a short row, a long one, NaN, an early exit, a
 #     row at the wrong time, an "error" line, a quaternion off the unit sphere,
 #     counts that are not whole, no "ready", silence at the start (a CR LF
-#     line end is no fault: it passes): each FAILs with its own words, exit 1,
+#     line end is no fault: it passes), rows that disagree with themselves
+#     (velocities 0 or 1.2 times the pose's steps, one step a row, a start 1.2
+#     times the scene's rates): each FAILs with its own words, exit 1,
 #     within 20 s, the report written;
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
@@ -69,7 +71,14 @@ counts|not whole counts
 noready|expected 'ready', got: hello
 hangstart|while it built the model: no answer within 2 s
 bgchild|stopped answering: exited with status 0
+stillvel|its rows disagree: .* the trapezoid
+fastvel|its rows disagree: .* the trapezoid
+onestep|its rows disagree: 1 steps at t = 0.1 s, where the step
 FAULTS
+# a start that is not the scene's: every velocity 1.2 times the pose's from t = 0
+DV_REPLAY_AT=0 run replay fastvel
+check '[ $code -eq 1 ] && grep -q "replay .*FAIL" "$work/stdout" && grep -q "its state at t = 0 is not the one sent: phi_dot" "$work/stdout"' \
+  "fastvel from t = 0: exit $code, want 1 and the start named: $out"
 for _ in 1 2 3 4 5 6 7 8 9 10; do pgrep -f "sleep $DV_REPLAY_SLEEP" >/dev/null || break; sleep 0.2; done # SIGKILL lands
 check '! pgrep -f "sleep $DV_REPLAY_SLEEP" >/dev/null' "an adapter's own children outlived it: $(pgrep -af "sleep $DV_REPLAY_SLEEP")"
 

@@ -31,56 +31,11 @@ void dv_run_trajcheck_ground(dv_trajfile *f, const dv_scenario *sc, double heigh
   if (f->ground_fault) f->ground_row = f->n;
 }
 
-/* theta turns between rows a and s with sin theta below DV_TRAJ_FLAT_TURN:
- * phi, psi and the centre whirl there, unresolved by the rows */
-static int turns_near_flat(const dv_sample *a, const dv_sample *s) {
-  return a->y[RED_VTH] * s->y[RED_VTH] < 0.0 &&
-         fmin(sin(a->y[RED_TH]), sin(s->y[RED_TH])) < DV_TRAJ_FLAT_TURN;
-}
-
-/* the scene's rate scale: sqrt(g/r), or a larger initial rate */
-static double rate_scale_of(const dv_scenario *sc) {
-  double rate_scale = sqrt(sc->disk.g / sc->disk.r);
-  for (int k = RED_VTH; k <= RED_VPS; k++) rate_scale = fmax(rate_scale, fabs(sc->initial[k]));
-  return rate_scale;
-}
-
 double dv_run_trajcheck_centre(dv_trajfile *f, const dv_scenario *sc, const double pos[2],
                                const double vel[2], int *k) {
-  double worst = 0.0, e[2] = {0.0, 0.0};
-  *k = 0;
-  if (f->n) {
-    const double dt = f->s[f->n].t - f->s[f->n - 1].t;
-    const double speed =
-        fmax(sc->disk.r * rate_scale_of(sc),
-             fmax(hypot(vel[0], vel[1]), hypot(f->centre_vel[0], f->centre_vel[1])));
-    const dv_sample *a = &f->s[f->n - 1], *s = &f->s[f->n];
-    /* theta turning near flat within the step: the centre whirls with phi
-     * between the rows, unresolved by them (as in dv_run_trajcheck_columns) */
-    const int flat_turn = turns_near_flat(a, s);
-    for (int i = 0; i < 2; i++) {
-      /* a velocity that changes by more than the allowance within the step
-       * is not resolved by the samples (a fall near lying down, as the
-       * angles' rates in dv_run_trajcheck_columns): the trapezoid says
-       * nothing there, nor about the next step's change of miss */
-      if (flat_turn || fabs(vel[i] - f->centre_vel[i]) > DV_TRAJ_CENTRE_TOL * speed) {
-        e[i] = NAN;
-        continue;
-      }
-      /* the step's miss of the trapezoid, and its change from the step
-       * before: smooth motion misses by a smooth amount, a centre sliding
-       * back and forth under rolling velocities by turns */
-      e[i] = (pos[i] - f->centre[i] - 0.5 * dt * (f->centre_vel[i] + vel[i])) / (dt * speed);
-      const double turn = f->n > 1 && !isnan(f->centre_miss[i])
-                              ? fabs(e[i] - f->centre_miss[i]) / DV_TRAJ_CENTRE_TURN
-                              : 0.0;
-      const double d = fmax(fabs(e[i]) / DV_TRAJ_CENTRE_TOL, turn);
-      if (!(d <= worst)) worst = d, *k = i;
-    }
-  }
-  for (int i = 0; i < 2; i++)
-    f->centre[i] = pos[i], f->centre_vel[i] = vel[i], f->centre_miss[i] = e[i];
-  return worst;
+  const double floor = sc->disk.r * dv_rows_rate_scale(&sc->disk, sc->initial);
+  return dv_rows_centre(&f->centre, f->n ? &f->s[f->n - 1] : NULL, &f->s[f->n], pos, vel, floor,
+                        k);
 }
 
 /* the contact point row i gives against the one theta, phi, x, y put on the scene's disk */
@@ -97,7 +52,8 @@ static double contact_off(const dv_sample *s, const dv_geometry *geom, double *t
 int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int ccol,
                              const int col[3], dv_error *err) {
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, f->half_thickness};
-  const double rate_scale = rate_scale_of(sc);
+  const double rate_scale = dv_rows_rate_scale(&sc->disk, sc->initial);
+  dv_rows_drift drift[3] = {{0}};
   for (size_t i = 0; i < f->n; i++) {
     const dv_sample *s = &f->s[i];
     double tol = 0.0;
@@ -109,30 +65,33 @@ int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int cc
                      f->path, f->line[i], ccol, s->contact[0], s->contact[1], off, tol);
     if (!i || !f->has_rates) continue;
     const dv_sample *a = s - 1;
-    const double dt = s->t - a->t;
-    static const int angle[3] = {RED_TH, RED_PH, RED_PS}, rate[3] = {RED_VTH, RED_VPH, RED_VPS};
     static const char *const name[3] = {"theta", "phi", "psi"};
+    static const int angle[3] = {RED_TH, RED_PH, RED_PS};
     if (f->form == DV_TRAJ_POSE && s->y[RED_TH] < 1e-3)
       continue; /* phi, psi undefined lying flat */
     /* theta turning near flat within the step: phi and psi whirl between the
      * rows (rates like 1 / sin^2 theta at the turn), unresolved by them */
-    const int flat_turn = turns_near_flat(a, s);
+    const int flat_turn = dv_rows_turn_near_flat(a, s);
     for (int k = 0; k < 3; k++) {
+      double miss;
+      int summed;
       if (k > 0 && flat_turn) continue;
-      const double step = 0.5 * dt * (a->y[rate[k]] + s->y[rate[k]]);
-      const double d = fabs(remainder(s->y[angle[k]] - a->y[angle[k]] - step, 2.0 * M_PI));
-      const double scale = dt * fmax(rate_scale, fmax(fabs(a->y[rate[k]]), fabs(s->y[rate[k]])));
-      /* a rate that changes by more than the allowance within the step is not
-       * resolved by the samples (a fall spinning phi up near lying down): the
-       * trapezoid says nothing there */
-      if (dt * fabs(s->y[rate[k]] - a->y[rate[k]]) > DV_TRAJ_RATE_TOL * scale) continue;
-      if (d > DV_TRAJ_RATE_TOL * scale)
+      const double d = dv_rows_angle(a, s, k, rate_scale, &drift[k], &miss, &summed);
+      if (d > 1.0 && summed)
+        return dv_fail(err, DV_EINPUT,
+                       "%.400s:%ld:%d: %s's steps add up to %.6g rad off the trapezoids of its "
+                       "rate over %.6g rad of them (%.3g times %g of that, plus a step's "
+                       "allowance): the columns disagree",
+                       f->path, f->line[i], col[k], name[k], drift[k].miss, drift[k].travel, d,
+                       DV_ROWS_DRIFT);
+      if (d > 1.0)
         return dv_fail(err, DV_EINPUT,
                        "%.400s:%ld:%d: %s turns by %.6g rad from the line before, its rate by "
                        "%.6g rad (off by %.3g rad, more than %g of the step times the rate scale "
                        "%.3g rad/s): the columns disagree",
                        f->path, f->line[i], col[k], name[k],
-                       remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI), step, d,
+                       remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI),
+                       remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI) - miss, fabs(miss),
                        DV_TRAJ_RATE_TOL, rate_scale);
     }
   }

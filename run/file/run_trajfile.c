@@ -213,8 +213,8 @@ static int pose_row(const reader *rd, const dv_scenario *sc, const dv_geometry *
   if (vel) { /* the centre's velocity against its steps, as the angles' rates are */
     int k;
     const double pos[2] = {v[C_X], v[C_Y]}, cv[2] = {v[C_VX], v[C_VY]};
-    const double last[2] = {f->centre[0], f->centre[1]};
-    const double last_v[2] = {f->centre_vel[0], f->centre_vel[1]};
+    const double last[2] = {f->centre.pos[0], f->centre.pos[1]};
+    const double last_v[2] = {f->centre.vel[0], f->centre.vel[1]};
     const double d = dv_run_trajcheck_centre(f, sc, pos, cv, &k);
     if (d > 1.0)
       return fail_at(rd, lineno, rd->col[k ? C_Y : C_X] + 1,

@@ -26,13 +26,14 @@
 #include <stddef.h>
 
 #include "dv_engine.h"
+#include "engine_watch.h"
 #include "scenario.h"
 
 /* the start must match the scenario's initial state to this: angles in rad,
  * positions over the radius, rates over the scene's rate scale. Measured:
  * the linked engines' first rows match to 1e-15 (they are read back from the
  * state they were given); a float32 engine holds 6e-8. */
-#define DV_TRAJ_START_TOL 1e-6
+#define DV_TRAJ_START_TOL DV_ROWS_START_TOL
 /* a quaternion's norm must be 1 to this (float32 storage rounds to 6e-8) */
 #define DV_TRAJ_QUAT_TOL 1e-6
 
@@ -70,7 +71,7 @@ typedef struct dv_trajfile {
   char ground_detail[240];
   /* the pose form with velocities: the last row's centre x, y and its
    * velocity vx, vy, for the next row's step (run_trajcheck.h) */
-  double centre[2], centre_vel[2], centre_miss[2];
+  dv_rows_centre_track centre;
   int airborne;     /* the lowest point is off the ground since air_since */
   double air_since; /* s */
 } dv_trajfile;

@@ -3,8 +3,12 @@
 # with the row of $DV_REPLAY_POSE (a pose-form CSV with velocities) at time T,
 # and misbehaves as $DV_REPLAY_FAULT says, from $DV_REPLAY_AT s on: crash,
 # hang, garbage, columns, extra, nan, early, time, error, quat, offset (the
-# centre 5 cm off: a run that exceeds its path limit), counts (steps 1.5),
-# crlf (lines ending in CR LF, which must pass), or at the start:
+# centre drifting off at 0.2 m/s, its velocity not saying so: a run that
+# exceeds its path limit, its rows' own check passed), counts (steps 1.5),
+# crlf (lines ending in CR LF, which must pass), lies whose rows disagree
+# with themselves: stillvel (every velocity 0 while the pose moves), fastvel
+# (every velocity 1.2 times the pose's: from DV_REPLAY_AT=0, a start off the
+# scene's), onestep (steps 1 on every row), or at the start:
 # noready, hangstart, bgchild (exits, a child of its own holding its output). $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
 [ -n "${DV_REPLAY_MARK:-}" ] && : >"$DV_REPLAY_MARK" # a run started (not a version query)
@@ -47,11 +51,14 @@ $1 == "advance" {
     if (fault == "extra") out = out " 0"
     if (fault == "counts") out = out ".5"
     if (fault == "crlf") out = out "\r"
-    if (fault == "offset") { split(out, v, " "); v[2] = v[2] + 0.05; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "offset") { split(out, v, " "); v[2] = v[2] + 0.2 * ($2 - at); out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "nan") { split(out, v, " "); v[2] = "nan"; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "early") exit 0
     if (fault == "time") { split(out, v, " "); v[1] = v[1] + 2 * dt; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "error") out = "error the solver failed at t = " $2
+    if (fault == "stillvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] = 0; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "fastvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] *= 1.2; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "onestep") { split(out, v, " "); v[16] = 1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "quat") { split(out, v, " "); v[5] = v[5] * 1.1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
   }
   print out
