@@ -3,8 +3,10 @@
  * Its standard input is a socket (written with MSG_NOSIGNAL: a child that
  * died is a failed run, never a SIGPIPE that kills diskval); its standard
  * output is read line by line with a time-out; its standard error is drained
- * as it comes and its last line kept for the report. It runs in a process
- * group of its own, killed whole when it stops, and dies with diskval.
+ * as it comes and its last line kept for the report. It runs under a guard
+ * process (adapter_child.c), which ends it and every process it started,
+ * in its process group or not, when it exits, when it is stopped, and when
+ * diskval dies of any signal, SIGKILL included.
  */
 #ifndef DV_ADAPTER_CHILD_H
 #define DV_ADAPTER_CHILD_H
@@ -15,7 +17,7 @@
 #define DV_CHILD_LINE 4096 /* the longest line read */
 
 typedef struct dv_child {
-  pid_t pid; /* 0: not running */
+  pid_t pid; /* its guard's, which ends as it ended; 0: not running */
   int in, out, err;
   char buf[DV_CHILD_LINE]; /* standard output read, not yet a line */
   size_t len;
@@ -39,7 +41,8 @@ int dv_child_write(dv_child *c, const char *text, char *what, size_t size);
 int dv_child_read_line(dv_child *c, double timeout, char *line, size_t size, char *what,
                        size_t wsize);
 
-/* close its input, give it grace s to exit, then kill it; reap it. Safe twice. */
+/* close its input, give it grace s to exit, then kill it and all it started; reap it.
+ * Safe twice. */
 void dv_child_stop(dv_child *c, double grace);
 
 /* how it ended, once stopped: "exited with status 3", "killed by signal 11" */

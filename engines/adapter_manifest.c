@@ -10,6 +10,8 @@
 #include "adapter.h"
 #include "scenario_number.h"
 
+#define TIMEOUT_MAX 600.0 /* s: a manifest's timeout at most (the suite's default time limit) */
+
 typedef struct reader {
   FILE *fp;
   int line;
@@ -176,7 +178,10 @@ static int adapter_key(parse *p, const char *key, const char *value) {
     return copy(p, a->command, sizeof a->command, key, value);
   }
   if (strcmp(key, "requires") == 0) return copy(p, a->requires, sizeof a->requires, key, value);
-  if (strcmp(key, "timeout") == 0) return number(p, key, value, 0.001, &a->timeout);
+  if (strcmp(key, "timeout") == 0) {
+    if (!number(p, key, value, 0.001, &a->timeout)) return 0;
+    return a->timeout <= TIMEOUT_MAX ? 1 : fail(p, key, "at most 600 s, not ", value);
+  }
   if (strcmp(key, "stand_in") == 0) return number(p, key, value, 1e-9, &a->stand_in);
   if (strcmp(key, "protocol") == 0) {
     double v;
