@@ -71,16 +71,30 @@ static int legacy_name(const char *name) {
  * the names it lists as "\nNAME\n...", or NULL when it lists none */
 static const char *mark_list(const char *path, char **text) {
   char mark[4096];
-  long len = 0;
+  struct stat st;
+  size_t len = 0;
   *text = NULL;
   if (snprintf(mark, sizeof mark, "%s/" DV_IO_MARK, path) >= (int)sizeof mark) return NULL;
   FILE *f = fopen(mark, "r");
-  if (f && (*text = malloc(1 << 20))) len = (long)fread(*text, 1, (1 << 20) - 1, f);
+  /* whole: generate's 100000 scenes list 5 MB (64 MiB at most) */
+  const size_t size = f && !fstat(fileno(f), &st) && st.st_size < (64L << 20)
+                          ? (size_t)st.st_size + 1
+                          : (size_t)(64L << 20);
+  if (f && (*text = malloc(size))) len = fread(*text, 1, size - 1, f);
   if (f) fclose(f);
   if (!*text) return NULL;
   (*text)[len] = '\0';
   const char *list = strstr(*text, "\n" DV_IO_MARK_FILES);
   return list ? list + strlen(DV_IO_MARK_FILES) : NULL; /* "\nNAME\n" for every name */
+}
+
+/* the digests of a mark's text: "sums:\n" and its lines, up to "\nfiles:", their
+ * length into *len; NULL when it has none */
+static const char *mark_sums(const char *text, size_t *len) {
+  const char *s = text ? strstr(text, "\n" DV_IO_MARK_SUMS) : NULL;
+  const char *f = s ? strstr(s, "\n" DV_IO_MARK_FILES) : NULL;
+  *len = f ? (size_t)(f - s) : 0;
+  return f ? s + 1 : NULL;
 }
 
 /* list (from mark_list) names name */
@@ -175,8 +189,10 @@ int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
   /* a mark from before marks listed files: the command's first output there
    * says the directory is this command's, and its files diskval's */
   const int legacy = owned && !list && names[0] && holds_file(dir, names[0]);
+  size_t sums_len;
+  const char *sums = mark_sums(text, &sums_len); /* generate's digests stay */
   size_t size = sizeof DV_IO_MARK_TEXT + sizeof DV_IO_MARK_OUT + sizeof DV_IO_MARK_FILES +
-                (list ? strlen(list) : 0);
+                (list ? strlen(list) : 0) + sums_len;
   for (const char *const *f = names; *f && !status; f++) {
     char path[4096];
     struct stat st;
@@ -194,7 +210,9 @@ int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
   /* the new mark: an --out's, listing what it listed and this run's names */
   char *mark = status ? NULL : malloc(size);
   if (mark) {
-    char *p = mark + sprintf(mark, "%s", DV_IO_MARK_TEXT DV_IO_MARK_OUT DV_IO_MARK_FILES);
+    char *p = mark + sprintf(mark, "%s", DV_IO_MARK_TEXT DV_IO_MARK_OUT);
+    if (sums) p += sprintf(p, "%.*s", (int)sums_len, sums);
+    p += sprintf(p, "%s", DV_IO_MARK_FILES);
     if (list) p += sprintf(p, "%s", list + 1);
     for (const char *const *f = names; *f; f++)
       if (!listed(list, *f) && !strchr(*f, '\n')) p += sprintf(p, "%s\n", *f);
@@ -204,6 +222,149 @@ int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err) {
     status = dv_fail(err, DV_ESYSTEM, "out of memory");
   }
   free(mark);
+  free(text);
+  return status;
+}
+
+uint64_t dv_io_digest(const void *bytes, size_t len) {
+  const unsigned char *b = bytes;
+  uint64_t h = 14695981039346656037ULL; /* FNV-1a, 64 bits */
+  for (size_t i = 0; i < len; i++) h = (h ^ b[i]) * 1099511628211ULL;
+  return h;
+}
+
+/* one line of a mark's digests: a name (not ended by '\0') and its digest */
+typedef struct sum_line {
+  const char *name;
+  size_t len;
+  uint64_t digest;
+} sum_line;
+
+static int sum_line_cmp(const void *pa, const void *pb) {
+  const sum_line *a = pa, *b = pb;
+  const size_t n = a->len < b->len ? a->len : b->len;
+  const int c = memcmp(a->name, b->name, n);
+  if (c || a->len != b->len) return c ? c : (a->len < b->len ? -1 : 1);
+  return (a->digest > b->digest) - (a->digest < b->digest);
+}
+
+/* the lines "DIGEST NAME" of sums (len bytes from mark_sums) into *lines
+ * (caller frees), sorted; how many, or -1 when out of memory */
+static long sum_lines(const char *sums, size_t len, sum_line **lines) {
+  long n = 0;
+  *lines = NULL;
+  if (!sums) return 0;
+  const char *end = sums + len;
+  for (const char *p = sums; p < end; p++) n += *p == '\n';
+  if (!(*lines = malloc((size_t)(n ? n : 1) * sizeof **lines))) return -1;
+  n = 0;
+  for (const char *p = memchr(sums, '\n', len); p && p + 1 < end;) {
+    const char *line = p + 1, *eol = memchr(line, '\n', (size_t)(end - line));
+    char *after;
+    if (!eol) break;
+    const uint64_t digest = strtoull(line, &after, 16);
+    if (after == line + 16 && *after == ' ' && after + 1 < eol)
+      (*lines)[n++] = (sum_line){after + 1, (size_t)(eol - after - 1), digest};
+    p = eol;
+  }
+  qsort(*lines, (size_t)n, sizeof **lines, sum_line_cmp);
+  return n;
+}
+
+/* the bytes of the regular file path (at most limit) into *bytes (caller
+ * frees), their count into *len: 0, or -1 when it cannot be read whole */
+static int read_whole(const char *path, size_t limit, char **bytes, size_t *len) {
+  FILE *f = fopen(path, "rb");
+  *bytes = f ? malloc(limit + 1) : NULL;
+  *len = *bytes ? fread(*bytes, 1, limit + 1, f) : 0;
+  const int ok = *bytes && !ferror(f) && *len <= limit;
+  if (f) fclose(f);
+  return ok ? 0 : -1;
+}
+
+int dv_io_check_unedited(const char *dir, const char *const *names, dv_io_same_fn same, void *arg,
+                         dv_error *err) {
+  if (!dv_io_owned(dir)) return DV_OK;
+  char *text = NULL, *bytes = NULL;
+  sum_line *lines = NULL;
+  const char *list = mark_list(dir, &text);
+  size_t sums_len;
+  const char *sums = mark_sums(text, &sums_len);
+  const long n = sum_lines(sums, sums_len, &lines);
+  int status = n < 0 ? dv_fail(err, DV_ESYSTEM, "out of memory") : DV_OK;
+  for (size_t i = 0; !status && names[i]; i++) {
+    char path[4096];
+    struct stat st;
+    size_t len;
+    if (dv_io_path(path, sizeof path, err, "%s/%s", dir, names[i])) {
+      status = DV_EINPUT;
+      break;
+    }
+    /* new, not diskval's (dv_io_own_dir names it), or left to dv_io_open */
+    if ((list && !listed(list, names[i])) || stat(path, &st) || !S_ISREG(st.st_mode)) continue;
+    free(bytes);
+    int ours = !read_whole(path, 1 << 20, &bytes, &len);
+    if (ours) {
+      const sum_line key = {names[i], strlen(names[i]), dv_io_digest(bytes, len)};
+      ours = (n > 0 && bsearch(&key, lines, (size_t)n, sizeof *lines, sum_line_cmp)) ||
+             same(i, bytes, len, arg);
+    }
+    if (!ours)
+      status = dv_fail(err, DV_EINPUT,
+                       "%s: not what diskval wrote there (the " DV_IO_MARK
+                       " of %s records other bytes: edited since), and this run would replace "
+                       "it; nothing was written: move it, or choose another --out",
+                       path, dir);
+  }
+  free(bytes);
+  free(lines);
+  free(text);
+  return status;
+}
+
+static int name_cmp(const void *a, const void *b) {
+  return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+int dv_io_mark_sums(const char *dir, const char *const *names, const uint64_t *digests, size_t n,
+                    int also, dv_error *err) {
+  char *text = NULL, *mark = NULL;
+  const char **sorted = malloc((n ? n : 1) * sizeof *sorted);
+  sum_line *lines = NULL;
+  const char *list = mark_list(dir, &text);
+  size_t sums_len;
+  const char *sums = mark_sums(text, &sums_len);
+  const long old = sum_lines(sums, sums_len, &lines);
+  size_t size = sizeof DV_IO_MARK_TEXT + sizeof DV_IO_MARK_OUT + sizeof DV_IO_MARK_SUMS +
+                sizeof DV_IO_MARK_FILES + (list ? strlen(list) : 0) + sums_len;
+  for (size_t i = 0; i < n; i++) size += 18 + strlen(names[i]);
+  int status = DV_OK;
+  if (!text || !list)
+    status = dv_fail(err, DV_ESYSTEM, "%s: its " DV_IO_MARK " cannot be read", dir);
+  else if (!sorted || old < 0 || !(mark = malloc(size)))
+    status = dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!status) {
+    memcpy(sorted, names, n * sizeof *sorted);
+    qsort(sorted, n, sizeof *sorted, name_cmp);
+    char *p = mark + sprintf(mark, "%s", DV_IO_MARK_TEXT DV_IO_MARK_OUT DV_IO_MARK_SUMS);
+    for (size_t i = 0; i < n; i++)
+      if (!strchr(names[i], '\n'))
+        p += sprintf(p, "%016llx %s\n", (unsigned long long)digests[i], names[i]);
+    for (long k = 0; k < old; k++) { /* the digests that stay */
+      char name[300];
+      const char *key = name;
+      if (lines[k].len >= sizeof name) continue;
+      memcpy(name, lines[k].name, lines[k].len);
+      name[lines[k].len] = '\0';
+      if (also || !n || !bsearch(&key, sorted, n, sizeof *sorted, name_cmp))
+        p += sprintf(p, "%016llx %s\n", (unsigned long long)lines[k].digest, name);
+    }
+    sprintf(p, "%s%s", DV_IO_MARK_FILES, list + 1);
+    status = dv_io_write_text(dir, DV_IO_MARK, mark, err);
+  }
+  free(mark);
+  free(lines);
+  free(sorted);
   free(text);
   return status;
 }

@@ -12,6 +12,7 @@
 #define DV_IO_OWNED_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "dv_error.h"
 
@@ -25,6 +26,11 @@
  * before DV_IO_MARK_FILES, which lists the fixed-name files diskval wrote
  * there: any other file of such a name is a user's, never replaced */
 #define DV_IO_MARK_OUT "out:\n"
+/* in the mark of an --out whose files diskval checks by their bytes
+ * (generate's scenes), between DV_IO_MARK_OUT and DV_IO_MARK_FILES: a line
+ * "DIGEST NAME" for each such file, DIGEST the 16 hex digits of the
+ * dv_io_digest of what diskval last wrote there */
+#define DV_IO_MARK_SUMS "sums:\n"
 
 /* path is a directory holding the mark */
 int dv_io_owned(const char *path);
@@ -46,6 +52,28 @@ int dv_io_check_replaceable(const char *path, dv_error *err);
  * names[0]); the mark is put in, listing names; else DV_EINPUT naming dir,
  * or the file of those names diskval did not make */
 int dv_io_own_dir(const char *dir, const char *const *names, dv_error *err);
+
+/* the digest of len bytes (64-bit FNV-1a): what the mark records of a file */
+uint64_t dv_io_digest(const void *bytes, size_t len);
+
+/* says whether bytes (len of them) are what this run writes as names[i] */
+typedef int (*dv_io_same_fn)(size_t i, const char *bytes, size_t len, void *arg);
+
+/* each of names (NULL-ended) that is a file in the marked dir holds what
+ * diskval last wrote there (a digest its mark records for that name), or
+ * what this run writes there (same says so: a mark from before digests);
+ * else DV_EINPUT naming the first that was edited. Nothing is written; a
+ * dir not marked is left to dv_io_own_dir */
+int dv_io_check_unedited(const char *dir, const char *const *names, dv_io_same_fn same, void *arg,
+                         dv_error *err);
+
+/* record in the mark of dir (taken by dv_io_own_dir) that diskval writes
+ * names[i] as bytes of digests[i], i < n: beside the digests the mark holds
+ * for them when also (before the files are written: a run stopped between
+ * leaves either known), else in their place (once they are); the digests
+ * of other names stay */
+int dv_io_mark_sums(const char *dir, const char *const *names, const uint64_t *digests, size_t n,
+                    int also, dv_error *err);
 
 /* none of inputs[0..n) is the file dir/<one of names> (NULL-ended), an
  * output of the run; else DV_EINPUT naming both */

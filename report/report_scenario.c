@@ -306,13 +306,18 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   fprintf(fp, "# %s: %s\n\n", sc->name, c->pass ? "pass" : "FAIL");
   dv_report_escape_markdown(fp, sc->description); /* the user's text: no markup, no control bytes */
   fputs("\n\n", fp);
-  fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s%s (t = %g s).\n\n",
-          integrator_name(sc), dv_reference_settings(sc)->rtol,
-          dv_outcome_name(c->thin_stats.outcome), c->thin_stats.detail[0] ? ": " : "",
-          c->thin_stats.detail, c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
-  if (c->thin_stats.method[0])
-    fprintf(fp, "Reference method%s: %s.\n\n", sc->thickness > 0.0 ? " (the thin disk's)" : "",
-            c->thin_stats.method);
+  /* every word an engine gives (a detail, a method, a setting's value, a
+   * failure with an adapter's error line and stderr) is text, never markup */
+  fprintf(fp, "Reference: reduced equations, %s at rtol %g; %s%s", integrator_name(sc),
+          dv_reference_settings(sc)->rtol, dv_outcome_name(c->thin_stats.outcome),
+          c->thin_stats.detail[0] ? ": " : "");
+  dv_report_escape_markdown(fp, c->thin_stats.detail);
+  fprintf(fp, " (t = %g s).\n\n", c->thin.n ? c->thin.s[c->thin.n - 1].t : 0.0);
+  if (c->thin_stats.method[0]) {
+    fprintf(fp, "Reference method%s: ", sc->thickness > 0.0 ? " (the thin disk's)" : "");
+    dv_report_escape_markdown(fp, c->thin_stats.method);
+    fputs(".\n\n", fp);
+  }
   char words[160], body[64] = "the thin disk";
   if (sc->thickness > 0.0)
     snprintf(body, sizeof body, "the matched cylinder, %.3g mm thick", 1e3 * sc->thickness);
@@ -371,10 +376,16 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     }
     char knobs[256];
     dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
-    if (knobs[0]) fprintf(fp, "%s ran with %s.\n\n", r->engine->name, knobs);
-    if (dv_scenario_derived(c->sc, r->engine->name)[0])
-      fprintf(fp, "%s settings chosen: %s.\n\n", r->engine->name,
-              dv_scenario_derived(c->sc, r->engine->name));
+    if (knobs[0]) {
+      fprintf(fp, "%s ran with ", r->engine->name);
+      dv_report_escape_markdown(fp, knobs);
+      fputs(".\n\n", fp);
+    }
+    if (dv_scenario_derived(c->sc, r->engine->name)[0]) {
+      fprintf(fp, "%s settings chosen: ", r->engine->name);
+      dv_report_escape_markdown(fp, dv_scenario_derived(c->sc, r->engine->name));
+      fputs(".\n\n", fp);
+    }
     if (r->event.judged)
       fprintf(fp, "Lying down: %s%s%s.\n\n", r->event.agrees ? "agrees" : r->event.why,
               r->event.agrees ? " with the reference: " : ": ", r->event.note);
@@ -392,7 +403,10 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     }
   }
   for (size_t i = 0; i < c->n; i++)
-    for (size_t k = 0; k < c->r[i].nfailures; k++) fprintf(fp, "\n- %s", c->r[i].failures[k]);
+    for (size_t k = 0; k < c->r[i].nfailures; k++) {
+      fputs("\n- ", fp);
+      dv_report_escape_markdown(fp, c->r[i].failures[k]);
+    }
   fprintf(fp, "\n");
   return dv_io_commit(&out, err);
 }

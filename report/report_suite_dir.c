@@ -14,6 +14,7 @@
 #include "io_lock.h"
 #include "io_owned.h"
 #include "io_temp.h"
+#include "report_escape.h"
 #include "report_page.h"
 
 int dv_report_dir_begin(char *tmp, size_t size, const char *out_dir, const char *name,
@@ -94,7 +95,8 @@ int dv_report_dir_check_junit(const char *junit, const char *out_dir, const dv_s
   return DV_OK;
 }
 
-/* report.json and report.md of a scenario that failed, into dir */
+/* report.json and report.md of a scenario that failed, into dir: the cause
+ * (an engine's or adapter's words among them) as text, never markup */
 static int write_error_files(const char *dir, const dv_scenario *sc, const char *cause,
                              dv_error *err) {
   cJSON *root = cJSON_CreateObject();
@@ -105,17 +107,18 @@ static int write_error_files(const char *dir, const dv_scenario *sc, const char 
   cJSON_AddObjectToObject(root, "engines");
   char *json = cJSON_Print(root);
   cJSON_Delete(root);
-  const size_t md_size = strlen(sc->name) + strlen(cause) + 32;
-  char *md = malloc(md_size);
-  int status = json && md ? DV_OK : dv_fail(err, DV_ESYSTEM, "out of memory");
-  if (!status) {
-    snprintf(md, md_size, "# %s\n\nerror: %s\n", sc->name, cause);
-    status = dv_io_write_text(dir, "report.json", json, err);
+  int status = json ? DV_OK : dv_fail(err, DV_ESYSTEM, "out of memory");
+  if (!status) status = dv_io_write_text(dir, "report.json", json, err);
+  dv_io_file md;
+  if (!status && !(status = dv_io_open_in(&md, dir, "report.md", err))) {
+    fprintf(md.fp, "# %s\n\nerror: ", sc->name);
+    dv_report_escape_markdown(md.fp, cause);
+    fputc('\n', md.fp);
+    status = dv_io_commit(&md, err);
+    dv_io_abort(&md);
   }
-  if (!status) status = dv_io_write_text(dir, "report.md", md, err);
   if (!status) status = dv_report_page_write(dir, err);
   free(json);
-  free(md);
   return status;
 }
 

@@ -87,8 +87,12 @@ static void write_markdown(FILE *fp, const dv_stability_row *rows, size_t n) {
   fputc('\n', fp);
   for (size_t i = 0; i < n; i++) {
     const dv_search *s = rows[i].search;
-    fprintf(fp, "| %s | %s | %g | %.3g | %s | %.120s |\n", rows[i].scenario, rows[i].engine,
-            s->tolerance, s->limit, mode(s), detail(s));
+    char cut[121]; /* the engine's words: the first 120 bytes, as text (never markup) */
+    snprintf(cut, sizeof cut, "%s", detail(s));
+    fprintf(fp, "| %s | %s | %g | %.3g | %s | ", rows[i].scenario, rows[i].engine, s->tolerance,
+            s->limit, mode(s));
+    dv_report_escape_markdown(fp, cut);
+    fputs(" |\n", fp);
   }
 }
 

@@ -33,7 +33,7 @@ while IFS= read -r f; do
 done < <(find "$work/a" -type f | sort)
 [ "$(find "$work/b" -type f | wc -l)" -eq "$n" ] || { echo "FAIL: --jobs 2 wrote other files"; fail=1; }
 report=$work/b/short_circle
-grep -q 'ode: theta_max_err = [0-9.e-]* rad > .*; cause: timestep' "$report/report.md" ||
+grep -q 'ode: theta\\_max\\_err = [0-9.e-]* rad \\> .*; cause: timestep' "$report/report.md" ||
   { echo "FAIL: no cause searched for ode"; fail=1; }
 for e in ode mujoco reduced; do
   set_ode=(); [ "$e" = ode ] && set_ode=(--set engines.ode.timestep=4e-4)
