@@ -20,7 +20,7 @@
 
 static const char HELP[] =
     "usage: diskval league [DIR|FILES...] [--engines LIST] [--targets T1,T2,...] [--out DIR]\n"
-    "                      [--jobs N] [--cost-cap S] [--cause quick|full|none]\n"
+    "                      [--jobs N] [--cost-cap S] [--cause quick|full|none] [--timeout S]\n"
     "                      [--set section.key=value]...\n"
     "\n"
     "Every engine on the same objects (scenario files; default: the shipped league/ folder,\n"
@@ -37,11 +37,16 @@ static const char HELP[] =
     "league.json, league.csv, league.md, league.html, overview.svg and\n"
     "work_precision_OBJECT.svg; the cells are kept in DIR/cells/, so running again into\n"
     "the same DIR resumes where a league stopped (a cell is reused while its object file,\n"
-    "engine version, target, cost cap and --set are the same).\n"
+    "engine version, target, cost cap and --set are the same, and what it claims is what\n"
+    "its backing report says). No object may lie in DIR/cells/ or DIR/compare/.\n"
     "--jobs N: pairs of object and engine at a time (default: the cores); under mpirun the\n"
     "ranks share them. At most 64 objects and 6 targets (each in (0, pi) rad).\n"
     "--quiet: no progress line on a terminal, no warning before a long league.\n"
-    "A cell's claim re-runs with the league's --set overrides too (league.json: overrides).\n"
+    "--timeout S: s of wall time a pair of object and engine (its cells at every target) may\n"
+    "take (default 0: no limit; none under mpirun); its cells not ended then are errors.\n"
+    "A cell's claim re-runs with the league's --set overrides too (league.json: overrides);\n"
+    "a --set of a key the league gives each cell (an engine's step or choice, which the\n"
+    "search varies, or the theta limit, a target) is refused.\n"
     "Exit status: 0 every cell ran, 1 a cell ended in an error, 2 bad input, 130 stopped by\n"
     "a signal (what finished is written and kept).\n";
 
@@ -94,25 +99,6 @@ static int engine_list(const char *list, const dv_engine_type **engines) {
   return DV_EXIT_OK;
 }
 
-/* the fixed-name outputs, the main one first, NULL-ended (names[] holds the strings) */
-static void output_names(const dv_league *lg, char (*names)[96], const char **out) {
-  static const char *const FIXED[] = {"league.html", "league.json", "league.csv", "league.md",
-                                      "overview.svg", "cells", "compare"};
-  size_t n = 0;
-  for (size_t i = 0; i < sizeof FIXED / sizeof FIXED[0]; i++) out[n++] = FIXED[i];
-  for (size_t o = 0; o < lg->nobjects; o++) {
-    dv_league_figure_file(lg->objects[o].name, names[o], sizeof names[o]);
-    out[n++] = names[o];
-  }
-  out[n] = NULL;
-}
-
-static int write_all(const char *dir, const dv_league *lg, dv_error *err) {
-  return dv_league_write_json(dir, lg, err) || dv_league_write_csv(dir, lg, err) ||
-         dv_league_write_md(dir, lg, err) || dv_league_write_html(dir, lg, err) ||
-         dv_league_write_figures(dir, lg, err);
-}
-
 /* one line per engine and target: reached of run, the geometric-mean cost */
 static void print_summary(const dv_league *lg) {
   for (size_t t = 0; t < lg->ntargets; t++)
@@ -144,7 +130,7 @@ static int object_files(const dv_cli_list *args, dv_cli_list *files) {
 }
 
 static int run(const dv_cli_args *a, const char *out, const char *list, const char *targets_text,
-               double cost_cap, const char *cause, int jobs) {
+               double cost_cap, const char *cause, int jobs, double timeout) {
   double targets[DV_LEAGUE_MAX_TARGETS];
   size_t ntargets = 0;
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
@@ -153,6 +139,10 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
   int code = parse_targets(targets_text, targets, &ntargets);
   if (!code) code = dv_cli_explainer("league", cause, &a->sets, &explain);
   if (!code) code = engine_list(list, engines);
+  dv_error set_err = {{0}};
+  if (!code && dv_league_check_overrides(engines, (const char *const *)a->sets.items, a->sets.n,
+                                         &set_err))
+    code = dv_cli_usage_error("league", "%s", set_err.msg);
   if (!code) code = object_files(&a->args, &files);
   if (!code && files.n > DV_LEAGUE_MAX_OBJECTS)
     code = dv_cli_error("league", "%zu objects: a league takes at most %d", files.n,
@@ -176,7 +166,7 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
   dv_error err = {{0}};
   int lock = -1;
   const dv_league_request rq = {objects, files.n, engines, targets, ntargets, cost_cap,
-                                a->sets.items, a->sets.n, out, jobs, &explain};
+                                a->sets.items, a->sets.n, out, jobs, &explain, timeout};
   const int rank0 = dv_exec_mpi_rank() == 0;
   if (!code && rank0) {
     /* the outputs' names need the objects' names: the league's header first */
@@ -188,9 +178,12 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
     if (!names || !all)
       code = dv_cli_error("league", "out of memory");
     else {
-      output_names(&lg, names, all);
-      if (dv_io_own_dir(out, all, &err) || dv_io_lock_dir(out, &lock, &err) ||
-          dv_io_check_inputs(out, all, (const char *const *)files.items, files.n, &err))
+      dv_league_output_names(&lg, names, all);
+      /* no input is an output, before anything is written */
+      const char *const *inputs = (const char *const *)files.items;
+      if (dv_io_check_inputs(out, all, inputs, files.n, &err) ||
+          dv_league_check_inputs(out, inputs, files.n, &err) || dv_io_own_dir(out, all, &err) ||
+          dv_io_lock_dir(out, &lock, &err))
         code = dv_cli_error("league", "%s", err.msg);
     }
     free(names), free(all);
@@ -201,7 +194,7 @@ static int run(const dv_cli_args *a, const char *out, const char *list, const ch
       code = DV_EXIT_OK;
     else if (status != DV_OK && status != DV_EVENT)
       code = dv_cli_error("league", "%s", err.msg);
-    else if (write_all(out, &lg, &err))
+    else if (dv_league_write_all(out, &lg, &err))
       code = dv_cli_error("league", "%s", err.msg);
     else {
       print_summary(&lg);
@@ -225,18 +218,20 @@ int dv_cli_league(int argc, char **argv) {
   const char *out = "league-report", *list = NULL, *targets = "1e-3", *cause = NULL;
   double cost_cap = DV_LEAGUE_COST_CAP;
   int jobs = dv_cli_default_jobs();
+  double timeout = 0.0;
   const dv_cli_option options[] = {
       {"out", DV_CLI_TEXT, &out, 0, 0},         {"engines", DV_CLI_TEXT, &list, 0, 0},
       {"targets", DV_CLI_TEXT, &targets, 0, 0}, {"cost-cap", DV_CLI_REAL, &cost_cap, 1e-3, 1e6},
       {"cause", DV_CLI_TEXT, &cause, 0, 0},     {"jobs", DV_CLI_INT, &jobs, 1, 1024},
+      {"timeout", DV_CLI_REAL, &timeout, 0, 1e9},
   };
-  const dv_cli_command cmd = {"league", HELP, options, 6, 0, (size_t)-1};
+  const dv_cli_command cmd = {"league", HELP, options, 7, 0, (size_t)-1};
   dv_cli_args a;
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("league", a.quiet, 0);
   dv_exec_hold_stops();
-  const int code = run(&a, out, list, targets, cost_cap, cause, jobs);
+  const int code = run(&a, out, list, targets, cost_cap, cause, jobs, timeout);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

@@ -11,6 +11,7 @@
 #include "dv_clock.h"
 #include "io_file.h"
 #include "io_json.h"
+#include "io_owned.h"
 #include "run_scenario.h"
 #include "search_best.h"
 
@@ -129,13 +130,45 @@ static void why_not(const dv_search *s, int near, dv_league_cell *c) {
            p->step, own[0] ? "; " : "", own);
 }
 
-/* the backing compare's numbers for the engine, from its report.json */
-static int read_report(const char *path, const char *engine, dv_league_cell *c, int *slips,
-                       dv_error *err) {
+/* the first of the report's failures for the engine, without its "SCENARIO: ENGINE: "
+ * and its "; cause: ..." (the cell says its cause apart) */
+static void first_failure(const cJSON *e, const char *scenario, const char *engine, char *buf,
+                          size_t size) {
+  const cJSON *f = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(e, "failures"), 0);
+  const char *text = cJSON_IsString(f) ? f->valuestring : "";
+  char prefix[200];
+  snprintf(prefix, sizeof prefix, "%s: %s: ", scenario, engine);
+  if (!strncmp(text, prefix, strlen(prefix))) text += strlen(prefix);
+  const char *cause = strstr(text, "; cause:");
+  snprintf(buf, size, "%.*s", (int)(cause ? (size_t)(cause - text) : strlen(text)), text);
+}
+
+/* the limit a report judged metric name with (its spread included), NAN when none */
+static double limit_of(const cJSON *e, const char *name) {
+  const cJSON *l = cJSON_GetObjectItemCaseSensitive(
+      cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(e, "limits"), name),
+      "limit");
+  return cJSON_IsNumber(l) ? l->valuedouble : NAN;
+}
+
+/* the limit a report was given for metric name, before the shadow's spread it grew
+ * by: limit - spread (NAN when none) */
+static double given_limit(const cJSON *e, const char *name) {
+  const cJSON *l = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(e, "limits"), name);
+  const cJSON *spread = cJSON_GetObjectItemCaseSensitive(l, "spread");
+  return limit_of(e, name) - (cJSON_IsNumber(spread) ? spread->valuedouble : 0.0);
+}
+
+/* the engine's entry of the report.json at path: its numbers into b */
+static int read_report(const char *path, const char *engine, const char *step_word,
+                       const char *choice_word, dv_league_backing *b, dv_error *err) {
   char why[256];
+  memset(b, 0, sizeof *b);
+  b->step = NAN;
   cJSON *root = dv_io_json_read(path, 64L << 20, why, sizeof why);
   if (!root) return dv_fail(err, DV_ESYSTEM, "%.250s", why);
   const cJSON *error = cJSON_GetObjectItemCaseSensitive(root, "error");
+  const cJSON *scenario = cJSON_GetObjectItemCaseSensitive(root, "scenario");
   const cJSON *e = cJSON_GetObjectItemCaseSensitive(
       cJSON_GetObjectItemCaseSensitive(root, "engines"), engine);
   int status = DV_OK;
@@ -145,23 +178,33 @@ static int read_report(const char *path, const char *engine, dv_league_cell *c, 
     status = dv_fail(err, DV_ESYSTEM, "%s: no entry for %s", path, engine);
   else {
     const cJSON *v;
-#define NUM(name) (cJSON_IsNumber(v = cJSON_GetObjectItemCaseSensitive(e, name)) ? v->valuedouble : NAN)
-#define TEXT(name) (cJSON_IsString(v = cJSON_GetObjectItemCaseSensitive(e, name)) ? v->valuestring : "")
-    c->theta_max_err = NUM("theta_max_err");
-    const double slip = NUM("slip_max");
-    const cJSON *limits = cJSON_GetObjectItemCaseSensitive(e, "limits");
-    const cJSON *slip_limit = cJSON_GetObjectItemCaseSensitive(
-        cJSON_GetObjectItemCaseSensitive(limits, "slip_max"), "limit");
-    *slips = cJSON_IsNumber(slip_limit) && slip > slip_limit->valuedouble;
-    c->path_max_err = NUM("path_max_err");
-    c->wall_per_sim_s = NUM("wall_per_sim_s");
-    const double steps = NUM("steps"), wall = NUM("wall_s");
-    c->steps = isfinite(steps) ? (long)steps : -1;
-    c->sim_s = c->wall_per_sim_s > 0.0 ? wall / c->wall_per_sim_s : NAN;
-    snprintf(c->cause, sizeof c->cause, "%s", TEXT("cause"));
+#define NUM(o, name) (cJSON_IsNumber(v = cJSON_GetObjectItemCaseSensitive(o, name)) ? v->valuedouble : NAN)
+#define TEXT(o, name) (cJSON_IsString(v = cJSON_GetObjectItemCaseSensitive(o, name)) ? v->valuestring : "")
+    b->theta_max_err = NUM(e, "theta_max_err");
+    b->path_max_err = NUM(e, "path_max_err");
+    b->theta_limit = given_limit(e, "theta_max_err");
+    b->path_limit = given_limit(e, "path_max_err");
+    const double slip_limit = limit_of(e, "slip_max");
+    b->slips = !isnan(slip_limit) && NUM(e, "slip_max") > slip_limit;
+    b->wall_per_sim_s = NUM(e, "wall_per_sim_s");
+    const double steps = NUM(e, "steps"), wall = NUM(e, "wall_s");
+    b->steps = isfinite(steps) ? (long)steps : -1;
+    b->sim_s = b->wall_per_sim_s > 0.0 ? wall / b->wall_per_sim_s : NAN;
+    snprintf(b->cause, sizeof b->cause, "%s", TEXT(e, "cause"));
+    snprintf(b->version, sizeof b->version, "%s", TEXT(e, "version"));
     const cJSON *pass = cJSON_GetObjectItemCaseSensitive(e, "pass");
-    snprintf(c->verdict, sizeof c->verdict, "%s",
-             cJSON_IsTrue(pass) ? "pass" : !strcmp(TEXT("outcome"), "not judged") ? "not judged" : "fail");
+    snprintf(b->verdict, sizeof b->verdict, "%s",
+             cJSON_IsTrue(pass) ? "pass" : !strcmp(TEXT(e, "outcome"), "not judged") ? "not judged" : "fail");
+    first_failure(e, cJSON_IsString(scenario) ? scenario->valuestring : "", engine, b->failure,
+                  sizeof b->failure);
+    const cJSON *settings = cJSON_GetObjectItemCaseSensitive(e, "settings");
+    const cJSON *f;
+    for (int k = 0; k < 2; k++) { /* the step and the choice it ran at, by their keys' last words */
+      const char *key = k ? choice_word : step_word;
+      if (!key || !(f = cJSON_GetObjectItemCaseSensitive(settings, key))) continue;
+      if (k) snprintf(b->choice, sizeof b->choice, "%s", cJSON_IsString(f) ? f->valuestring : "");
+      else b->step = cJSON_IsNumber(f) ? f->valuedouble : NAN;
+    }
 #undef NUM
 #undef TEXT
   }
@@ -169,10 +212,26 @@ static int read_report(const char *path, const char *engine, dv_league_cell *c, 
   return status;
 }
 
+/* the backing report's numbers into c */
+static void take_backing(const dv_league_backing *b, dv_league_cell *c) {
+  c->theta_max_err = b->theta_max_err;
+  c->path_max_err = b->path_max_err;
+  c->wall_per_sim_s = b->wall_per_sim_s;
+  c->steps = b->steps;
+  c->sim_s = b->sim_s;
+  snprintf(c->cause, sizeof c->cause, "%s", b->cause);
+  snprintf(c->verdict, sizeof c->verdict, "%s", b->verdict);
+}
+
+int dv_league_backed(const dv_league_cell *c, int slips) {
+  return !slips && !strcmp(c->verdict, "pass") && c->theta_max_err <= c->target &&
+         (isnan(c->path_target) || c->path_max_err <= c->path_target);
+}
+
 /* the compare at the cell's settings with its targets as the engine's limits:
  * its report in the league's folder, its numbers into the cell */
 static int backing_compare(const dv_league_pair *pair, const dv_search *s, const dv_probe *p,
-                           dv_league_cell *c, int *slips, dv_error *err) {
+                           dv_league_cell *c, dv_league_backing *b, dv_error *err) {
   const char *engine = pair->engine->name;
   char over[4][192], dir[1024], rel[256], path[1200];
   const char *ptrs[4];
@@ -187,7 +246,7 @@ static int backing_compare(const dv_league_pair *pair, const dv_search *s, const
   for (size_t i = 0; i < n; i++) ptrs[i] = over[i];
   dv_scenario *sc = malloc(sizeof *sc);
   if (!sc) return dv_fail(err, DV_ESYSTEM, "out of memory");
-  dv_league_report_dir(c->object, engine, c->target, rel, sizeof rel);
+  dv_league_report_dir(c->object, engine, c->target, rel, sizeof rel); /* its parent */
   const dv_engine_type *type = dv_engine_find(engine);
   const dv_engine_type *const engines[2] = {type, NULL};
   int status = dv_scenario_with(pair->sc, ptrs, n, sc, err);
@@ -198,8 +257,8 @@ static int backing_compare(const dv_league_pair *pair, const dv_search *s, const
     status = code == DV_SUITE_ERROR ? DV_ESYSTEM : DV_OK;
   }
   if (!status) status = dv_io_path(path, sizeof path, err, "%s/%s/report.json", dir, sc->name);
-  if (!status) status = read_report(path, engine, c, slips, err);
-  if (!status) snprintf(c->report, sizeof c->report, "%.150s/%.60s", rel, sc->name);
+  if (!status) status = read_report(path, engine, NULL, NULL, b, err);
+  if (!status) take_backing(b, c), dv_league_backing_dir(c, c->report, sizeof c->report);
   free(sc);
   return status;
 }
@@ -249,23 +308,106 @@ void dv_league_cell_run(const dv_league_pair *pair, size_t k, dv_league_cell *c)
   }
   c->order = observed_order(s, p->choice);
   if (s->best < 0) why_not(s, at, c);
-  int slips = 0;
-  if (backing_compare(pair, s, p, c, &slips, &err)) {
+  dv_league_backing b;
+  if (backing_compare(pair, s, p, c, &b, &err)) {
     snprintf(c->why, sizeof c->why, "error: the compare at these settings: %.180s", err.msg);
     c->outcome = DV_LEAGUE_NOT_REACHED;
-  } else if (slips) { /* the target is not reached by a disk that slides */
+  } else if (b.slips) { /* the target is not reached by a disk that slides */
     if (s->best >= 0 || !c->why[0])
       snprintf(c->why, sizeof c->why, "slips: its slip is over its limit at theta %.3g rad, path %.3g m",
                c->theta_max_err, c->path_max_err);
-  } else if (c->theta_max_err <= c->target &&
-             (isnan(c->path_target) || c->path_max_err <= c->path_target)) {
+  } else if (dv_league_backed(c, 0)) {
     c->outcome = DV_LEAGUE_REACHED;
     if (s->best < 0) /* the nearest run is within the targets, not within half of them */
       snprintf(c->why, sizeof c->why, "marginal: no run within half the targets (best's margin)");
-  }
-  else if (s->best >= 0) /* the search's winner, not met again by its compare */
+  } else if (c->theta_max_err <= c->target &&
+             (isnan(c->path_target) || c->path_max_err <= c->path_target)) {
+    /* within the targets, yet its compare did not pass: its verdict stops it (a window too
+     * short to judge, another metric over its limit) */
+    if (b.failure[0])
+      snprintf(c->why, sizeof c->why, "%s%.200s", strcmp(c->verdict, "not judged") ? "fails: " : "",
+               b.failure);
+    else
+      snprintf(c->why, sizeof c->why, "%s: its compare says so, within the targets", c->verdict);
+  } else if (s->best >= 0) /* the search's winner, not met again by its compare */
     snprintf(c->why, sizeof c->why, "the compare at the search's settings: theta %.3g rad, path %.3g m",
              c->theta_max_err, c->path_max_err);
   c->wall_s = dv_clock_now() - began;
   free(s);
+}
+
+void dv_league_backing_dir(const dv_league_cell *c, char *out, size_t size) {
+  char rel[256];
+  dv_league_report_dir(c->object, c->engine, c->target, rel, sizeof rel);
+  snprintf(out, size, "%.150s/%.60s", rel, c->object);
+}
+
+/* a and b are the same number (NaN is NaN) */
+static int same(double a, double b) { return a == b || (isnan(a) && isnan(b)); }
+
+/* a limit the report gives as limit - spread, against the one the cell was given: the
+ * subtraction may leave a few ulps (measured: none on the quarter's cells, limit
+ * 1.34e-3 less spread 3.4e-4 is 1e-3 exactly), 1e-12 is far below any edit */
+static int same_limit(double given, double got) {
+  return same(given, got) || fabs(given - got) <= 1e-12 * fabs(given);
+}
+
+/* the last word of key ("timestep" of engines.mujoco.timestep) when its section is
+ * engine's own (the settings a report lists), else NULL */
+static const char *own_word(const char *key, const char *engine) {
+  char prefix[64];
+  snprintf(prefix, sizeof prefix, "engines.%s.", engine);
+  return key[0] && !strncmp(key, prefix, strlen(prefix)) ? key + strlen(prefix) : NULL;
+}
+
+/* the claims of a cached cell that ran against its backing report: why not, or 0 */
+static int check_backed(const char *out_dir, const dv_league_cell *c, char *why, size_t size) {
+  char expected[256], compare[4096], path[4096];
+  dv_error err = {{0}};
+  dv_league_backing b;
+  dv_league_backing_dir(c, expected, sizeof expected);
+  if (strcmp(c->report, expected))
+    return snprintf(why, size, "its report is not %s", expected), -1;
+  /* resolved: a link out of --out (its compare/ or a folder in it) is not followed */
+  if (dv_io_path(compare, sizeof compare, &err, "%s/compare", out_dir) ||
+      dv_io_path(path, sizeof path, &err, "%s/%s/report.json", out_dir, c->report) ||
+      !dv_io_within(path, compare) || !dv_io_within(path, out_dir))
+    return snprintf(why, size, "its report lies outside %s", compare), -1;
+  const char *step_word = own_word(c->step_key, c->engine);
+  const char *choice_word = strcmp(c->choice, "default") ? own_word(c->choice_key, c->engine) : NULL;
+  if (read_report(path, c->engine, step_word, choice_word, &b, &err))
+    return snprintf(why, size, "its report: %.200s", err.msg), -1;
+  dv_league_cell as_said = *c;
+  take_backing(&b, &as_said);
+  char step[2][32];
+  snprintf(step[0], sizeof step[0], "%.9g", c->step), snprintf(step[1], sizeof step[1], "%.9g", b.step);
+  const int agrees =
+      same(c->theta_max_err, b.theta_max_err) && same(c->path_max_err, b.path_max_err) &&
+      same(c->wall_per_sim_s, b.wall_per_sim_s) && same(c->sim_s, b.sim_s) &&
+      c->steps == b.steps && !strcmp(c->verdict, b.verdict) && !strcmp(c->cause, b.cause) &&
+      !strcmp(c->engine_version, b.version) && same_limit(c->target, b.theta_limit) &&
+      (isnan(c->path_target) || same_limit(c->path_target, b.path_limit)) &&
+      (!step_word || !strcmp(step[0], step[1])) && (!choice_word || !strcmp(c->choice, b.choice)) &&
+      (c->outcome == DV_LEAGUE_REACHED) == dv_league_backed(&as_said, b.slips);
+  return agrees ? 0 : (snprintf(why, size, "it says other than its report %s", c->report), -1);
+}
+
+int dv_league_cell_check(const char *out_dir, const dv_league_cell *c, const dv_scenario *sc,
+                         char *why, size_t size) {
+  const dv_engine_type *type = dv_engine_find(c->engine);
+  char word[240];
+  if (!type) return snprintf(why, size, "no engine %s", c->engine), -1;
+  switch (c->outcome) {
+    case DV_LEAGUE_CANNOT_MODEL: /* compare's rule, asked again; a search's verdict runs again */
+      return !c->report[0] && dv_run_cannot_model(type, sc, word, sizeof word) &&
+                     !strcmp(word, c->why)
+                 ? 0
+                 : (snprintf(why, size, "a cannot-model cell not so by compare's rule"), -1);
+    case DV_LEAGUE_REACHED:
+    case DV_LEAGUE_NOT_REACHED:
+      if (!strncmp(c->why, "error:", 6)) return snprintf(why, size, "it ended in an error"), -1;
+      return check_backed(out_dir, c, why, size);
+    default:
+      return snprintf(why, size, "it did not run"), -1;
+  }
 }

@@ -126,7 +126,10 @@ static void put_provenance(FILE *fp, const dv_league *lg) {
       "target and the matching path target (the scene's path limit scaled as its theta limit "
       "is), searched until a run would cost more than the cost cap or the error stops falling "
       "with the step; its numbers come from a compare at those settings with the targets as "
-      "its limits, so re-running that compare (the cell's report) reproduces its claim. "
+      "its limits, so re-running that compare (the cell's report) reproduces its claim; a "
+      "cell is reached only when that compare passes, judged, within both targets. The search "
+      "varies each engine's step and choice, and the targets set the theta limit: a --set of "
+      "them is refused, so every --set listed above is one the cells ran with. "
       "Cost: wall seconds per simulated second of the engine's run.\n",
       fp);
   if (lg->interrupted)

@@ -18,6 +18,8 @@
 #include "exec_pool.h"
 #include "io_file.h"
 #include "io_json.h"
+#include "io_owned.h"
+#include "io_temp.h"
 #include "league_cell.h"
 #include "run_progress.h"
 
@@ -58,9 +60,10 @@ static void cell_key(const dv_league_request *rq, uint64_t file, dv_league_cell 
   snprintf(c->key, sizeof c->key, "%016llx", (unsigned long long)h);
 }
 
-/* the cached cell of c's name with c's key, into c; 0 when there is one */
-static int from_cache(const char *dir, dv_league_cell *c) {
-  char name[256], path[4096], why[128];
+/* the cached cell of c's name with c's key, into c, when what it claims is what its
+ * backing report says (league_cell.h); 0 when there is one */
+static int from_cache(const char *dir, const dv_scenario *sc, dv_league_cell *c) {
+  char name[256], path[4096], why[256];
   dv_error err = {{0}};
   dv_league_cache_name(c, name, sizeof name);
   if (dv_io_path(path, sizeof path, &err, "%s/%s", dir, name)) return -1;
@@ -68,12 +71,14 @@ static int from_cache(const char *dir, dv_league_cell *c) {
   cJSON *j = dv_io_json_read(path, 16L << 20, why, sizeof why);
   dv_league_cell *got = malloc(sizeof *got);
   int ok = j && got && !dv_league_cell_from_json(j, got, &err) && !strcmp(got->key, c->key) &&
-           got->outcome != DV_LEAGUE_NOT_RUN;
-  /* a cell whose backing report is gone is run again: its link would lead nowhere */
-  if (ok && got->report[0] &&
-      (dv_io_path(path, sizeof path, &err, "%s/%s/report.json", dir, got->report) ||
-       access(path, F_OK)))
+           !strcmp(got->object, c->object) && !strcmp(got->engine, c->engine) &&
+           got->target == c->target;
+  /* its key matches, yet its claims are not its report's (edited, or its report gone):
+   * run again, and say why */
+  if (ok && dv_league_cell_check(dir, got, sc, why, sizeof why)) {
+    if (got->outcome != DV_LEAGUE_NOT_RUN) dv_run_progress_say("%s: run again: %s", name, why);
     ok = 0;
+  }
   if (ok) *c = *got;
   cJSON_Delete(j);
   free(got);
@@ -139,6 +144,32 @@ static void pair_ended(size_t task, int ran, void *vctx) {
     snprintf(note, sizeof note, "%s %s: %s", c->object, c->engine, dv_league_outcome_name(c->outcome));
   }
   dv_run_progress_task_ended(note);
+}
+
+/* a pair whose process did not end with its cells (stopped by a signal, killed at
+ * the time limit or crashed): the cells it finished are in the cache, as they
+ * were; the others are not run, or, at the limit, an error that says so */
+static void not_ended(const dv_league_request *rq, const league_ctx *x, size_t k,
+                      unsigned char end) {
+  const size_t o = k / x->nengines;
+  int said = 0;
+  for (size_t t = 0; t < x->lg->ntargets; t++) {
+    dv_league_cell *c = cell_at(x->lg, k, t);
+    char rel[256], dir[4096];
+    dv_error err = {{0}};
+    dv_league_report_dir(c->object, c->engine, c->target, rel, sizeof rel);
+    /* the report its killed process was building */
+    if (!dv_io_path(dir, sizeof dir, &err, "%s/%s", rq->out_dir, rel)) dv_io_temp_remove_stale(dir);
+    if (c->outcome != DV_LEAGUE_NOT_RUN || !from_cache(rq->out_dir, &rq->objects[o], c)) continue;
+    if (end == DV_EXEC_TIMED_OUT) {
+      if (!said++) fprintf(stderr, "diskval league: %s %s: timed out after %g s\n", c->object, c->engine,
+                      rq->timeout);
+      c->outcome = DV_LEAGUE_NOT_REACHED;
+      snprintf(c->why, sizeof c->why,
+               "error: timed out after %g s (--timeout: the time its object and engine may take)",
+               rq->timeout);
+    }
+  }
 }
 
 static void describe_machine(dv_league *lg) {
@@ -213,7 +244,7 @@ static int fill(const dv_league_request *rq, dv_league *lg, dv_error *err) {
         c->steps = -1;
         snprintf(c->why, sizeof c->why, "not run: the league ended before it");
         cell_key(rq, file, c);
-        if (file) from_cache(rq->out_dir, c); /* a cached cell has this key, or is not taken */
+        if (file) from_cache(rq->out_dir, sc, c); /* a cached cell has this key, or is not taken */
       }
   }
   return DV_OK;
@@ -239,8 +270,9 @@ int dv_league_run(const dv_league_request *rq, dv_league *lg, dv_error *err) {
     if (some) x.todo[x.ntodo++] = k;
   }
   x.slots = calloc(x.ntodo ? x.ntodo * lg->ntargets : 1, sizeof *x.slots);
-  if (!x.engines || !x.slots || !x.todo) {
-    free(x.engines), free(x.slots), free(x.todo);
+  unsigned char *done = calloc(x.ntodo ? x.ntodo : 1, 1);
+  if (!x.engines || !x.slots || !x.todo || !done) {
+    free(x.engines), free(x.slots), free(x.todo), free(done);
     return dv_fail(err, DV_ESYSTEM, "out of memory");
   }
   size_t cached = 0;
@@ -249,15 +281,73 @@ int dv_league_run(const dv_league_request *rq, dv_league *lg, dv_error *err) {
     dv_run_progress_say("%zu of %zu cells from the cache (%s/" CACHE_DIR ")", cached, lg->ncells,
                         rq->out_dir);
   dv_run_progress_tasks_begin("pair", x.ntodo);
-  const int ran = x.ntodo ? dv_exec_pool_run(x.ntodo, lg->ntargets * sizeof *x.slots, run_pair, &x,
-                                             x.slots, rq->jobs, pair_ended)
+  const dv_exec_options opt = {
+      .jobs = rq->jobs, .on_result = pair_ended, .done = done, .timeout = rq->timeout};
+  const int ran = x.ntodo ? dv_exec_pool(x.ntodo, lg->ntargets * sizeof *x.slots, run_pair, &x,
+                                         x.slots, &opt)
                           : DV_EXEC_DONE;
   dv_run_progress_tasks_end();
-  free(x.engines), free(x.slots), free(x.todo);
+  for (size_t i = 0; (ran == DV_EXEC_DONE || ran == DV_EXEC_INTERRUPTED) && i < x.ntodo; i++)
+    if (done[i] != DV_EXEC_ARRIVED) not_ended(rq, &x, x.todo[i], done[i]);
+  free(x.engines), free(x.slots), free(x.todo), free(done);
   if (ran == DV_EXEC_NOMEM) return dv_fail(err, DV_ESYSTEM, "out of memory");
   if (ran == DV_EXEC_WORKER) return DV_LEAGUE_WORKER;
   lg->interrupted = ran == DV_EXEC_INTERRUPTED;
   return lg->interrupted ? DV_EVENT : DV_OK;
+}
+
+int dv_league_check_inputs(const char *out_dir, const char *const *inputs, size_t n,
+                           dv_error *err) {
+  static const char *const WRITTEN[] = {CACHE_DIR, "compare"};
+  for (size_t d = 0; d < 2; d++) {
+    char dir[4096];
+    if (dv_io_path(dir, sizeof dir, err, "%s/%s", out_dir, WRITTEN[d])) return DV_EINPUT;
+    for (size_t i = 0; i < n; i++)
+      if (inputs[i] && dv_io_within(inputs[i], dir))
+        return dv_fail(err, DV_EINPUT,
+                       "%s: an input of this run lies inside %s, which the league writes; "
+                       "nothing was written: move it, or choose another --out",
+                       inputs[i], dir);
+  }
+  return DV_OK;
+}
+
+/* the key of a --set override: its text before '=' */
+static void key_of(const char *override, char *key, size_t size) {
+  snprintf(key, size, "%.*s", (int)strcspn(override, "="), override);
+}
+
+int dv_league_check_overrides(const dv_engine_type *const *engines, const char *const *overrides,
+                              size_t n, dv_error *err) {
+  for (size_t i = 0; i < n; i++) {
+    char key[256], own[160];
+    key_of(overrides[i], key, sizeof key);
+    if (!strcmp(key, "tolerance.theta_max_err"))
+      return dv_fail(err, DV_EINPUT,
+                     "--set %s: the league's targets set it (--targets): a cell's theta "
+                     "limit is its target",
+                     key);
+    for (const dv_engine_type *const *e = engines; *e; e++) {
+      const dv_engine_search *s = (*e)->search;
+      snprintf(own, sizeof own, "tolerance.%s.theta_max_err", (*e)->name);
+      if (!strcmp(key, own))
+        return dv_fail(err, DV_EINPUT,
+                       "--set %s: the league's targets set it (--targets): a cell's theta "
+                       "limit is its target",
+                       key);
+      for (int k = 0; s && k < 2; k++) {
+        const char *word = k ? s->choice_key : s->step_key;
+        snprintf(own, sizeof own, "engines.%s.%s", s->section, word ? word : "");
+        if (word && !strcmp(key, own))
+          return dv_fail(err, DV_EINPUT,
+                         "--set %s: the league's search varies it (%s's %s): each cell runs the "
+                         "cheapest settings its search finds; drop it (compare runs fixed "
+                         "settings)",
+                         key, (*e)->name, k ? "choice" : "step");
+      }
+    }
+  }
+  return DV_OK;
 }
 
 void dv_league_free(dv_league *lg) {

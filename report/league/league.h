@@ -10,7 +10,13 @@
  * reproduces the claim. A cell is a function of the object file's bytes,
  * the engine's version, the target, the cost cap and the --set overrides:
  * its key; a league reuses every cell of its output directory whose key
- * matches, so an interrupted league resumes where it stopped.
+ * matches and whose claims are its backing report's, so an interrupted
+ * league resumes where it stopped.
+ *
+ * Here (report/league/): the table, a cell as JSON, the summary and the
+ * writers. The cells' search, the compare backing each, the cache and the
+ * pool that runs them: search/league/ (league_run.h); the command, its
+ * arguments alone: cli/league/cmd_league.c.
  */
 #ifndef DV_LEAGUE_H
 #define DV_LEAGUE_H
@@ -131,6 +137,14 @@ int dv_league_write_md(const char *dir, const dv_league *lg, dv_error *err);   /
 int dv_league_write_html(const char *dir, const dv_league *lg, dv_error *err); /* league.html */
 /* work_precision_OBJECT.svg per object and overview.svg */
 int dv_league_write_figures(const char *dir, const dv_league *lg, dv_error *err);
+
+/* all of the above, league.json first; the first error ends it */
+int dv_league_write_all(const char *dir, const dv_league *lg, dv_error *err);
+
+/* the names of the files and folders a league writes into its folder (for
+ * dv_io_own_dir), the main one first, NULL-ended: out holds 8 + lg->nobjects
+ * pointers, names lg->nobjects strings (the figures') */
+void dv_league_output_names(const dv_league *lg, char (*names)[96], const char **out);
 
 /* one cell as a JSON object (cJSON *), and back: the cache's form and league.json's cells */
 struct cJSON;

@@ -121,6 +121,9 @@ int dv_league_cell_from_json(const cJSON *j, dv_league_cell *c, dv_error *err) {
     if (!strcmp(outcome, dv_league_outcome_name((dv_league_outcome)o))) c->outcome = o;
   if (c->outcome > DV_LEAGUE_NOT_RUN)
     return dv_fail(err, DV_EINPUT, "field 'outcome': unknown '%s'", outcome);
+  const cJSON *reached = cJSON_GetObjectItemCaseSensitive(j, "reached");
+  if (!cJSON_IsBool(reached) || cJSON_IsTrue(reached) != (c->outcome == DV_LEAGUE_REACHED))
+    return dv_fail(err, DV_EINPUT, "field 'reached' is not what 'outcome' says (%s)", outcome);
   const cJSON *pts = cJSON_GetObjectItemCaseSensitive(j, "points"), *q;
   if (!cJSON_IsArray(pts) || cJSON_GetArraySize(pts) > DV_LEAGUE_MAX_POINTS)
     return dv_fail(err, DV_EINPUT, "field 'points' is no array of at most %d", DV_LEAGUE_MAX_POINTS);

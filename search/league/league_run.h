@@ -19,7 +19,22 @@ typedef struct dv_league_request {
   const char *out_dir; /* owned by the caller, made */
   int jobs;
   const dv_report_explain *explain;
+  double timeout; /* s of wall time a pair of object and engine may take (<= 0: no limit;
+                     none under MPI): its cells not ended then are errors */
 } dv_league_request;
+
+/* no input (inputs[0..n), the objects' files) lies in out_dir's cells/ or
+ * compare/, which the league writes (a cached cell, a backing report's
+ * file); else DV_EINPUT naming it. With dv_io_check_inputs for the league's
+ * fixed-name files, before anything is written. */
+int dv_league_check_inputs(const char *out_dir, const char *const *inputs, size_t n,
+                           dv_error *err);
+
+/* none of the --set overrides sets a key the league gives every cell itself:
+ * an engine's step or choice (engines[]'s search varies them) or the theta
+ * limit (--targets); else DV_EINPUT naming the key and what sets it */
+int dv_league_check_overrides(const dv_engine_type *const *engines, const char *const *overrides,
+                              size_t n, dv_error *err);
 
 /* the cell's file in the cache, relative to the league's folder */
 void dv_league_cache_name(const dv_league_cell *c, char *out, size_t size);
