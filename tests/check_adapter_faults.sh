@@ -4,14 +4,15 @@
 # way an adapter can misbehave is a failed run with its reason, never a pass,
 # a hang or a crash of diskval. The test adapter (tests/adapters/replay, POSIX
 # sh: no Node needed) replays the matched reference of SCENARIO made 2 mm
-# thick, its centre moved 1e-7 m (so it is judged, not "identical"):
+# thick, its centre moved 3e-8 m (so it is judged, not "identical"):
 #   - it passes compare, next to a linked engine, exit 0;
 #   - crash, hang (timeout 2 s), garbage, a short row, a long one, NaN, an early exit, a
 #     row at the wrong time, an "error" line, a quaternion off the unit sphere,
 #     counts that are not whole, no "ready", silence at the start (a CR LF
 #     line end is no fault: it passes), rows that disagree with themselves
-#     (velocities 0 or 1.2 times the pose's steps, one step a row, a start 1.2
-#     times the scene's rates): each FAILs with its own words, exit 1,
+#     (velocities 0 or 1.2 times the pose's steps, one step a row or one step
+#     too many, a start 1.2 times the scene's rates, its centre 1.1e-7 m off
+#     where 1e-7 is allowed; 0.9e-7 passes): each FAILs with its own words, exit 1,
 #     within 20 s, the report written;
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
@@ -74,7 +75,14 @@ bgchild|stopped answering: exited with status 0
 stillvel|its rows disagree: .* the trapezoid
 fastvel|its rows disagree: .* the trapezoid
 onestep|its rows disagree: 1 steps at t = 0.1 s, where the step
+extrastep|its rows disagree: 101 steps at t = 0.1 s, where the step 0.001 s makes 100
 FAULTS
+# the start within 1e-6 of the state sent (x over the radius: 1e-7 m here) passes, past it fails
+DV_REPLAY_NUDGE=0.9e-7 run replay
+check '[ $code -eq 0 ]' "the centre 0.9e-7 m off from the start: exit $code, want 0: $out"
+DV_REPLAY_NUDGE=1.1e-7 run replay
+check '[ $code -eq 1 ] && grep -q "its state at t = 0 is not the one sent: x = 1.1e-07" "$work/stdout"' \
+  "the centre 1.1e-7 m off from the start: exit $code, want 1, x named: $out"
 # a start that is not the scene's: every velocity 1.2 times the pose's from t = 0
 DV_REPLAY_AT=0 run replay fastvel
 check '[ $code -eq 1 ] && grep -q "replay .*FAIL" "$work/stdout" && grep -q "its state at t = 0 is not the one sent: phi_dot" "$work/stdout"' \

@@ -1,6 +1,7 @@
 #!/bin/sh
 # A test adapter (docs/adapters.md) in POSIX sh: it answers every "advance T"
 # with the row of $DV_REPLAY_POSE (a pose-form CSV with velocities) at time T,
+# its centre moved by $DV_REPLAY_NUDGE m (3e-8 unless set),
 # and misbehaves as $DV_REPLAY_FAULT says, from $DV_REPLAY_AT s on: crash,
 # hang, garbage, columns, extra, nan, early, time, error, quat, offset (the
 # centre drifting off at 0.2 m/s, its velocity not saying so: a run that
@@ -8,7 +9,8 @@
 # crlf (lines ending in CR LF, which must pass), lies whose rows disagree
 # with themselves: stillvel (every velocity 0 while the pose moves), fastvel
 # (every velocity 1.2 times the pose's: from DV_REPLAY_AT=0, a start off the
-# scene's), onestep (steps 1 on every row), or at the start:
+# scene's), onestep (steps 1 on every row), extrastep (one step more than
+# the time makes), or at the start:
 # noready, hangstart, bgchild (exits, a child of its own holding its output). $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
 [ -n "${DV_REPLAY_MARK:-}" ] && : >"$DV_REPLAY_MARK" # a run started (not a version query)
@@ -28,7 +30,7 @@ echo ready
 # mawk reads its input in blocks unless interactive: a row must answer each line
 case $(awk -W version 2>&1 | head -1) in mawk*) interactive="-W interactive" ;; esac
 exec awk $interactive -v file="$DV_REPLAY_POSE" -v fault="$DV_REPLAY_FAULT" -v at="${DV_REPLAY_AT:-0.1}" -v nap="$nap" \
-  -v dt="$dt" '
+  -v dt="$dt" -v nudge="${DV_REPLAY_NUDGE:-3e-8}" '
 BEGIN {
   FS = ","
   n = 0
@@ -40,7 +42,7 @@ $1 == "advance" {
   k = 0
   while (k < n && (t[k] - $2 > 1e-9 || $2 - t[k] > 1e-9)) k++
   if (k == n) { print "error no row at t = " $2; exit 1 }
-  split(row[k], v, ","); v[2] = v[2] + 1e-7  # not the reference exactly: judged, not "identical"
+  split(row[k], v, ","); v[2] = v[2] + nudge  # not the reference exactly: judged, not "identical"
   out = v[1]; for (i = 2; i <= 14; i++) out = out " " v[i]
   out = out " 1 " int($2 / dt + 0.5)
   if ($2 + 1e-12 >= at) {
@@ -59,6 +61,7 @@ $1 == "advance" {
     if (fault == "stillvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] = 0; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "fastvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] *= 1.2; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "onestep") { split(out, v, " "); v[16] = 1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "extrastep") { split(out, v, " "); v[16] += 1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "quat") { split(out, v, " "); v[5] = v[5] * 1.1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
   }
   print out
