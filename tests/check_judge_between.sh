@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # check_judge_between.sh DISKVAL BETWEEN_ROWS SCENARIO: judge's allowance for rows between the
 # sample times. The reference's own run of SCENARIO every 1 ms, judged at its output_dt:
-#   - honest, it agrees;
+#   - honest, it is not refused, and not judged: its every sample is the reference's (the
+#     rows at the sample times are those of the reference's run at output_dt, digit for digit);
 #   - its rows between the samples moved off the Akima interpolant to 0.999 T + 1.5 |a - b|
 #     (T: half the theta limit, run_judge.h; a, b: Akima and Steffen, by between_rows with
-#     GSL): inside the allowance of 2 |a - b| beyond T, it still agrees;
+#     GSL): inside the allowance of 2 |a - b| beyond T, it is still not refused (not judged:
+#     the samples, at the rows it leaves, are still the reference's);
 #   - moved to T + 2.5 |a - b|: outside it, refused, "disagrees with the rows at them".
 # The scene is cut to 2 s and sampled every 0.02 s. Then the same run with a row every 0.05 s,
 # sampled every 0.01 s: interpolating between its rows is uncertain by 0.019 rad in theta,
@@ -35,14 +37,19 @@ short=(--set scenario.duration=2 --set scenario.output_dt=$dt --set tolerance.en
 cut -d, -f1-6 dense.csv >honest.csv
 "$dv" judge "$sc" "${short[@]}" honest.csv --out out_honest --quiet >honest.out 2>honest.err
 code=$?
-check '[ $code -eq 0 ]' "honest: exit $code: $(cat honest.err)"
+# not refused (exit 2), and the reference's own output: not judged (exit 1), never a pass
+own() { # NAME: exit 1, not judged as the reference's own output
+  jq -e --arg n "$1" '.engines[$n] | .outcome == "not judged" and
+    any(.failures[]; contains("the reference'"'"'s own output"))' "out_$1/$name/report.json" >/dev/null
+}
+check '[ $code -eq 1 ] && own honest' "honest: exit $code: $(cat honest.err)"
 limit=$(jq -r ".engines.honest.limits.theta_max_err | .limit - .spread" "out_honest/$name/report.json")
 T=$(awk -v l="$limit" 'BEGIN { printf "%.17g", 0.5 * l }') # DV_JUDGE_BETWEEN_SHARE
 "$between" $dt "$(awk -v t="$T" 'BEGIN { printf "%.17g", 0.999 * t }')" 1.5 <dense.csv >inside.csv
 "$between" $dt "$T" 2.5 <dense.csv >outside.csv
 "$dv" judge "$sc" "${short[@]}" inside.csv --out out_inside --quiet >inside.out 2>inside.err
 code=$?
-check '[ $code -eq 0 ]' "rows inside the allowance: exit $code: $(cat inside.err)"
+check '[ $code -eq 1 ] && own inside' "rows inside the allowance: exit $code: $(cat inside.err)"
 "$dv" judge "$sc" "${short[@]}" outside.csv --out out_outside --quiet >outside.out 2>outside.err
 code=$?
 check '[ $code -eq 2 ] && grep -q "disagrees with the rows at them" outside.err' \
@@ -67,5 +74,5 @@ for case in "0.05 2 rad in theta" "2 0.05 m in the contact point"; do
   check '[ $code -eq 2 ] && grep -q "samples too sparse to judge: .* uncertain by [0-9.e-]* $what" sparse.err' \
     "rows every 0.05 s, limits $th rad and $path m: exit $code, not too sparse $what: $(cat sparse.err)"
 done
-[ $fail -eq 0 ] && echo "rows between samples: inside the allowance agree, outside refused (T $T rad)"
+[ $fail -eq 0 ] && echo "rows between samples: inside the allowance not refused, outside refused (T $T rad)"
 exit $fail

@@ -23,6 +23,10 @@
 #   - the pose's centre 3 mm off in x on every other row, its velocities
 #     still rolling: refused, "the centre's x moves by";
 #   - the reference's own output (simulate --engine reduced): not judged;
+#     so is that output cut to t,theta,contact_x,contact_y or to t..y, or
+#     written with 10 significant digits (what a file does not give is
+#     derived, and does not count; what it gives counts to its digits), while
+#     theta 1e-9 rad off on one row of it is another run, judged (agrees);
 #     so is a sweep point of the reference at its tighter reference's settings;
 #     its near copies are refused, "the columns disagree": x one row late
 #     (the contact point 2.1e-3 r from where x puts it at its second row,
@@ -108,6 +112,13 @@ awk -F, -v OFS=, -v CONVFMT=%.17g 'NR == 2 { p = $3 } NR == 3 { d = $3 - p } NR 
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 *= 1.2 } 1' ref.csv >ref_psi_far.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 *= 1.12 } 1' ref.csv >ref_psi_over.csv
 awk -F, -v OFS=, -v CONVFMT=%.17g 'NR > 1 { $4 *= 1.05 } 1' ref.csv >ref_psi_near.csv
+# the reference's own output with fewer columns, or fewer digits; and theta
+# 1e-9 rad off on one row (run_judge.c: own_output)
+cut -d, -f1,2,7,8 ref.csv >ref_min.csv
+cut -d, -f1-6 ref.csv >ref_pose.csv
+awk -F, -v OFS=, 'NR > 1 { for (k = 2; k <= NF; k++) $k = sprintf("%.10g", $k) } 1' ref.csv \
+  >ref_digits.csv
+awk -F, -v OFS=, -v CONVFMT=%.17g 'NR == 12 { $2 += 1e-9 } 1' ref.csv >ref_theta_near.csv
 # judge FILE WANT_STATUS WANT_VERDICT FRAGMENT: exit status, outcome (or, for
 # exit 2, the error line) and a failure saying FRAGMENT
 judge() {
@@ -158,6 +169,10 @@ judge ref_phi_step 2 "" "the contact point .* the columns disagree"
 judge ref_psi_far 2 "" "psi's steps add up to"
 judge ref_psi_over 2 "" "psi's steps add up to"
 judge ref_psi_near 0 agrees ""
+judge ref_min 1 "not judged" "the reference's own output"
+judge ref_pose 1 "not judged" "the reference's own output"
+judge ref_digits 1 "not judged" "the reference's own output"
+judge ref_theta_near 0 agrees ""
 # a convergence study of one file given three times, or of errors that do not
 # fall (the reference's theta + 1, 2, 3 urad after t = 0.1 s: under the floor)
 for k in 1 2 3; do

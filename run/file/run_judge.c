@@ -1,6 +1,7 @@
 /* run_judge: a comparison of recorded trajectories (run_judge.h). */
 #include "run_judge.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -60,6 +61,56 @@ static void check_sparse(judge_ctx *ctx, const dv_replay *rp, const dv_engine_re
           th ? r->tolerance[DV_THETA_MAX_ERR] : r->tolerance[DV_PATH_MAX_ERR], th ? "rad" : "m");
 }
 
+/* value column k (DV_CSV_HEADER's k+1: theta .. energy) of s */
+static double value_of(const dv_sample *s, int k) {
+  static const int state[DV_TRAJ_NVALUES] = {RED_TH, RED_PH,  RED_PS,  RED_X,   RED_Y, -1,
+                                             -1,     RED_VTH, RED_VPH, RED_VPS, -1};
+  return state[k] >= 0 ? s->y[state[k]]
+         : k == 5      ? s->contact[0]
+         : k == 6      ? s->contact[1]
+                       : s->energy;
+}
+
+/* v, written with its last digit at 10^digit, is r to that digit: r rounded
+ * there reads back as v (either way at a tie). Not a measured tolerance but
+ * the rounding's bound: the text is within half its last place of r, and v,
+ * the double nearest the text, within half an ulp of the text; the factor
+ * 1 + 4 eps covers pow's and the subtraction's rounding. At full precision
+ * (simulate's shortest round trip) half a place is under half an ulp, so two
+ * different doubles never match. Checked (tests/check_judge_hostile.sh): the
+ * reference's output written with %.10g is its own, theta 1e-9 rad off on one
+ * row is not. An exact value (DV_TRAJ_EXACT) is r, bit for bit. */
+static int same_printed(double v, double r, signed char digit) {
+  if (v == r) return 1;
+  if (digit == DV_TRAJ_EXACT || !isfinite(r)) return 0;
+  const double half_ulp = 0.5 * (nextafter(fabs(v), INFINITY) - fabs(v));
+  return fabs(v - r) <= 0.5 * pow(10.0, digit) * (1.0 + 4.0 * DBL_EPSILON) + half_ulp;
+}
+
+/* the file is the reference's own output: a row at every sample time of ref
+ * (the replay's run eng has as many samples) whose every value column the
+ * file gives is ref's there, to the digits it is written with (what the file
+ * does not give is derived, and does not count). Rows between the sample
+ * times serve no sample: check_sparse holds them to those at them. The pose
+ * form is a conversion of the state, never the reference's own digits. */
+static int own_output(const dv_trajfile *f, const dv_traj *eng, const dv_traj *ref) {
+  if (f->form != DV_TRAJ_STATE || eng->n != ref->n || ref->n < 2) return 0;
+  size_t j = 0;
+  for (size_t i = 0; i < ref->n; i++) {
+    const dv_sample *b = &ref->s[i];
+    /* a recorded time to 1e-9 s relative, the replay's (run_replay.h) */
+    const double near = 1e-9 * fmax(1.0, fabs(b->t));
+    while (j < f->n && f->s[j].t < b->t - near) j++;
+    if (j == f->n || fabs(f->s[j].t - b->t) > near) return 0;
+    const dv_sample *a = &f->s[j];
+    for (int k = 0; k < DV_TRAJ_NVALUES; k++)
+      if ((f->given >> k & 1u) &&
+          !same_printed(value_of(a, k), value_of(b, k), f->digit ? f->digit[j][k] : DV_TRAJ_EXACT))
+        return 0;
+  }
+  return 1;
+}
+
 static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r) {
   judge_ctx *ctx = p;
   const dv_replay *rp = dv_run_replay_of(r->engine);
@@ -93,7 +144,11 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
                  : m == DV_ENERGY_DRIFT ? "no energy in the file, nor a pose to compute it from"
                                         : "no phi, psi, x, y in the file to compute it from");
   const double end = window_end(c, r);
-  if (rp->ends_early && rp->t_end < end - 0.5 * c->sc->output_dt)
+  if (own_output(f, &r->traj, r->half_thickness > 0.0 ? &r->matched : &c->thin))
+    snprintf(r->not_judged, sizeof r->not_judged,
+             "its every sample is the reference's, to the digits the file gives (the "
+             "reference's own output): its errors are zero and measure nothing");
+  else if (rp->ends_early && rp->t_end < end - 0.5 * c->sc->output_dt)
     snprintf(r->not_judged, sizeof r->not_judged,
              "the file ends at t = %g s, before the compared window does (t = %g s), without "
              "lying down: what it does not cover cannot be judged",
@@ -110,8 +165,7 @@ static void before_verdict(void *p, const dv_comparison *c, dv_engine_result *r)
             "%.400s:%ld: the energy is not the energy of the state the row gives: off by %.3g of "
             "the starting energy, %.3g times %g of the energy drift's limit %.3g (the drift would "
             "measure the column, not the run): the columns disagree",
-            f->path, f->line[row], gap, gap / le, share,
-            r->tolerance[DV_ENERGY_DRIFT]);
+            f->path, f->line[row], gap, gap / le, share, r->tolerance[DV_ENERGY_DRIFT]);
   }
   check_sparse(ctx, rp, r);
 }

@@ -42,6 +42,7 @@ enum {
   C_WZ, /* pose */
   NCOLS
 };
+_Static_assert(C_E - C_TH + 1 == DV_TRAJ_NVALUES, "the value columns are theta .. energy");
 static const char *const names[NCOLS] = {
     "t",         "theta",   "phi",     "psi",    "x",  "y",  "contact_x", "contact_y",
     "theta_dot", "phi_dot", "psi_dot", "energy", "z",  "qw", "qx",        "qy",
@@ -163,8 +164,35 @@ static int read_header(reader *rd, char *line, long lineno, dv_traj_form *form) 
   return DV_OK;
 }
 
-/* one row's numbers by column (NAN where the header has none) */
-static int read_row(const reader *rd, char *line, long lineno, double v[NCOLS]) {
+/* the decimal exponent of the place of text's last digit ("0.25": -2, "3e-7":
+ * -7, "120": 0), within [-127, 127]; DV_TRAJ_EXACT for text that is not
+ * plain decimal (strtod's hexadecimal) */
+static signed char last_digit(const char *p) {
+  if (*p == '+' || *p == '-') p++;
+  long decimals = 0, digits = 0;
+  int dot = 0;
+  for (; *p; p++) {
+    if (*p >= '0' && *p <= '9')
+      digits++, decimals += dot;
+    else if (*p == '.' && !dot)
+      dot = 1;
+    else
+      break;
+  }
+  long e = 0;
+  if (*p == 'e' || *p == 'E')
+    e = strtol(p + 1, NULL, 10);
+  else if (*p || !digits)
+    return DV_TRAJ_EXACT;
+  e = e < -1000 ? -1000 : e > 1000 ? 1000 : e; /* strtol's LONG_MIN, LONG_MAX */
+  e -= decimals;
+  return (signed char)(e < -127 ? -127 : e > 127 ? 127 : e);
+}
+
+/* one row's numbers by column (NAN where the header has none), and each one's
+ * last digit (last_digit) into digit */
+static int read_row(const reader *rd, char *line, long lineno, double v[NCOLS],
+                    signed char digit[NCOLS]) {
   char *f[MAX_FIELDS];
   const int n = split(line, f);
   if (n != rd->ncols)
@@ -176,6 +204,7 @@ static int read_row(const reader *rd, char *line, long lineno, double v[NCOLS]) 
                    rd->ncols);
   for (int c = 0; c < NCOLS; c++) {
     v[c] = NAN;
+    digit[c] = DV_TRAJ_EXACT;
     const int i = rd->col[c];
     if (i < 0) continue;
     if (!*f[i]) return fail_at(rd, lineno, i + 1, "empty field for '%s'", names[c]);
@@ -187,6 +216,7 @@ static int read_row(const reader *rd, char *line, long lineno, double v[NCOLS]) 
     if (!isfinite(x)) /* "nan", "inf", or out of range */
       return fail_at(rd, lineno, i + 1, "%s = '%.40s' is not finite", names[c], f[i]);
     v[c] = x;
+    digit[c] = last_digit(f[i]);
   }
   return DV_OK;
 }
@@ -336,9 +366,11 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
   return DV_OK;
 }
 
-/* append the row v (by column) read at lineno */
+/* append the row v (by column) read at lineno, its values' last digits digit
+ * (NULL: pushed in code, exact) */
 static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *geom, dv_trajfile *f,
-                   const double v[NCOLS], long lineno) {
+                   const double v[NCOLS], const signed char *digit, long lineno) {
+  const int printed = digit && f->form == DV_TRAJ_STATE;
   const size_t max_rows = dv_run_trajfile_max_rows(sc);
   if (f->n == max_rows)
     return fail_at(rd, lineno, 0,
@@ -352,8 +384,11 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
     dv_sample *s = realloc(f->s, cap * sizeof *s);
     long *l = s ? realloc(f->line, cap * sizeof *l) : NULL;
     if (s) f->s = s;
-    if (!l) return dv_fail(rd->err, DV_ESYSTEM, "%s: out of memory at line %ld", rd->path, lineno);
-    f->line = l;
+    if (l) f->line = l;
+    signed char(*d)[DV_TRAJ_NVALUES] = l && printed ? realloc(f->digit, cap * sizeof *d) : NULL;
+    if (d) f->digit = d;
+    if (!l || (printed && !d))
+      return dv_fail(rd->err, DV_ESYSTEM, "%s: out of memory at line %ld", rd->path, lineno);
     f->cap = cap;
   }
   if (f->n && !(v[C_T] > f->s[f->n - 1].t))
@@ -372,6 +407,7 @@ static int add_row(const reader *rd, const dv_scenario *sc, const dv_geometry *g
     return fail_at(rd, lineno, rd->col[f->form == DV_TRAJ_POSE ? C_QW : C_TH] + 1,
                    "theta = %.10g rad is outside [0, pi]", s->y[RED_TH]);
   s->contacts = 1;
+  for (int k = 0; printed && k < DV_TRAJ_NVALUES; k++) f->digit[f->n][k] = digit[C_TH + k];
   f->line[f->n++] = lineno;
   return DV_OK;
 }
@@ -412,7 +448,9 @@ static int read_rows(reader *rd, FILE *fp, const dv_scenario *sc, const dv_geome
     }
     if (!len) return fail_at(rd, *lineno, 0, "an empty line");
     double v[NCOLS];
-    if (read_row(rd, line, *lineno, v) || add_row(rd, sc, geom, f, v, *lineno)) return DV_EINPUT;
+    signed char digit[NCOLS];
+    if (read_row(rd, line, *lineno, v, digit) || add_row(rd, sc, geom, f, v, digit, *lineno))
+      return DV_EINPUT;
     if (f->s[f->n - 1].t > sc->duration && ++past == DV_TRAJ_ROWS_PAST) break; /* not judged */
   }
   if (ferror(fp))
@@ -426,6 +464,9 @@ static int finish(const reader *rd, const dv_scenario *sc, const dv_geometry *ge
   if (f->n < DV_TRAJ_MIN_SAMPLES)
     return fail_at(rd, lineno, 0, "%zu samples: at least %d needed to interpolate", f->n,
                    DV_TRAJ_MIN_SAMPLES);
+  f->given = 0;
+  for (int k = 0; f->form == DV_TRAJ_STATE && k < DV_TRAJ_NVALUES; k++)
+    if (rd->col[C_TH + k] >= 0) f->given |= 1u << k;
   if (!f->has_rates && derive_rates(f, rd->err)) return DV_ESYSTEM;
   const int contact = f->form == DV_TRAJ_STATE && rd->col[C_CX] < 0;
   const int energy = f->form == DV_TRAJ_POSE ? !f->has_rates : rd->col[C_E] < 0;
@@ -510,8 +551,10 @@ void dv_run_trajfile_free(dv_trajfile *f) {
   if (!f) return;
   free(f->s);
   free(f->line);
+  free(f->digit);
   f->s = NULL;
   f->line = NULL;
+  f->digit = NULL;
   f->n = 0;
 }
 
@@ -565,7 +608,7 @@ int dv_run_trajfile_push_state(dv_trajfile *f, const dv_scenario *sc, double t,
     if (rd.col[c] >= 0 && !isfinite(v[c]))
       return fail_at(&rd, (long)f->n + 1, rd.col[c] + 1, "%s = %g is not finite", names[c], v[c]);
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, 0.5 * sc->thickness};
-  return add_row(&rd, sc, &geom, f, v, (long)f->n + 1);
+  return add_row(&rd, sc, &geom, f, v, NULL, (long)f->n + 1);
 }
 
 int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, const double pos[3],
@@ -584,7 +627,7 @@ int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, c
     if (rd.col[c] >= 0 && !isfinite(v[c]))
       return fail_at(&rd, (long)f->n + 1, rd.col[c] + 1, "%s = %g is not finite", names[c], v[c]);
   const dv_geometry geom = {DV_SHAPE_CYLINDER, sc->disk.r, 0.5 * sc->thickness};
-  return add_row(&rd, sc, &geom, f, v, (long)f->n + 1);
+  return add_row(&rd, sc, &geom, f, v, NULL, (long)f->n + 1);
 }
 
 int dv_run_trajfile_end(dv_trajfile *f, const dv_scenario *sc, dv_error *err) {

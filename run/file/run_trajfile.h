@@ -41,8 +41,14 @@
  * (Akima and Steffen, every column). Measured: the slope of judge's peak RSS
  * over 1e5 and 3e5 rows of the state form with every column on
  * tests/data/short_circle.ini, 1046 bytes a row (re-run: /usr/bin/time -v
- * diskval judge on such files, generated as tests/check_judge_memory.sh does) */
+ * diskval judge on such files, generated as tests/check_judge_memory.sh does),
+ * and the 11 bytes of a row's printed digits (digit) added since: 1057 */
 #define DV_TRAJ_ROW_BYTES 1100
+/* the state form's value columns, DV_CSV_HEADER's after t (theta .. energy) */
+#define DV_TRAJ_NVALUES 11
+/* a value's last digit when it was not written in decimal (pushed in code, or
+ * hexadecimal): the value is exact */
+#define DV_TRAJ_EXACT (-128)
 /* rows past the scenario's duration kept for the interpolant (Akima uses two
  * on either side); the rest of a file is not read */
 #define DV_TRAJ_ROWS_PAST 3
@@ -54,11 +60,16 @@ typedef enum dv_traj_form { DV_TRAJ_STATE = 0, DV_TRAJ_POSE = 1 } dv_traj_form;
 typedef struct dv_trajfile {
   char path[1024];
   dv_traj_form form;
-  int has_rates;  /* the file gives rates (state form) or velocities (pose form) */
-  int has_angles; /* phi, psi and x, y: the whole state */
-  int has_energy; /* given, or computed from a pose with velocities */
+  int has_rates;    /* the file gives rates (state form) or velocities (pose form) */
+  int has_angles;   /* phi, psi and x, y: the whole state */
+  int has_energy;   /* given, or computed from a pose with velocities */
   int energy_given; /* the state form's energy column */
-  int has_slip;   /* measured: the pose form with velocities */
+  int has_slip;     /* measured: the pose form with velocities */
+  unsigned given;   /* the state form's value columns it gives: bit k for DV_CSV_HEADER's k+1 */
+  /* the state form read from text: each row's value columns' last printed
+   * digit, the decimal exponent of its place ("0.25": -2, "3e-7": -7; -127
+   * to 127, DV_TRAJ_EXACT); NULL (every value exact) for samples pushed in code */
+  signed char (*digit)[DV_TRAJ_NVALUES];
   size_t n, cap;
   dv_sample *s;          /* each row, converted */
   long *line;            /* each row's line in the file */
@@ -103,6 +114,5 @@ int dv_run_trajfile_push_pose(dv_trajfile *f, const dv_scenario *sc, double t, c
                               const double q[4], const double *vel, const double *omega,
                               dv_error *err);
 int dv_run_trajfile_end(dv_trajfile *f, const dv_scenario *sc, dv_error *err);
-
 
 #endif

@@ -82,20 +82,27 @@ int main(int argc, char **argv) {
   printf("states: every metric within %.3g of compare's; poses: theta_max_err within %.3g\n", worst,
          th);
   /* the reference's own run pushed as states is the reference: not judged, never a pass */
-  diskval_trajectory *ref = NULL, *mine = NULL;
+  diskval_trajectory *ref = NULL, *mine = NULL, *near = NULL;
   diskval_comparison self;
   CHECK(diskval_run(sc, "reduced", &ref, &err) >= 0, "run reduced: %s", err.msg);
   CHECK(diskval_trajectory_new(sc, "mine", &mine, &err) == 0, "new: %s", err.msg);
+  CHECK(diskval_trajectory_new(sc, "near", &near, &err) == 0, "new: %s", err.msg);
   for (size_t i = 0; ref && i < diskval_trajectory_size(ref); i++) {
     diskval_sample x;
     diskval_trajectory_sample(ref, i, &x);
     diskval_trajectory_push(mine, x.t, &x.state, &err);
+    if (i == 10) x.state.theta += 1e-9; /* another run, by one sample */
+    diskval_trajectory_push(near, x.t, &x.state, &err);
   }
   CHECK(diskval_judge(sc, mine, &self, &err) == 0, "judge the reference: %s", err.msg);
   CHECK(!self.pass && !strcmp(self.verdict, "not judged"), "the reference's own run: %s, pass %d",
         self.verdict, self.pass);
+  /* theta 1e-9 rad off at one sample: judged (the pushed values count exactly) */
+  CHECK(diskval_judge(sc, near, &self, &err) == 0, "judge the near copy: %s", err.msg);
+  CHECK(strcmp(self.verdict, "not judged") != 0, "the reference's near copy: %s", self.verdict);
   diskval_trajectory_free(ref);
   diskval_trajectory_free(mine);
+  diskval_trajectory_free(near);
   /* the errors of a bad sample name it */
   diskval_state bad = {.theta = NAN};
   CHECK(diskval_trajectory_push(states, 10.0, &bad, &err) == -1 && strstr(err.msg, "states:"),
