@@ -1,19 +1,25 @@
 /* adapter_manifest: an adapter's manifest.ini read into its tables
  * (adapter.h; the format in docs/adapters.md). */
+#include <errno.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "adapter.h"
+#include "dv_input.h"
 #include "scenario_number.h"
 
 #define TIMEOUT_MAX 600.0 /* s: a manifest's timeout at most (the suite's default time limit) */
+#define MANIFEST_MAX_BYTES (64 * 1024) /* a manifest is a few KiB; /dev/zero never ends */
 
+/* the manifest's bytes, read whole, handed to inih a line at a time */
 typedef struct reader {
-  FILE *fp;
+  const char *data;
+  size_t size, at;
   int line;
   int too_long; /* the line that was */
 } reader;
@@ -34,12 +40,60 @@ typedef struct parse {
 static char *read_line(char *buf, int size, void *stream) {
   reader *rd = stream;
   rd->line++;
-  if (!fgets(buf, size, rd->fp)) return NULL;
-  if (!strchr(buf, '\n') && !feof(rd->fp)) {
+  if (rd->at == rd->size) return NULL;
+  const char *start = rd->data + rd->at, *nl = memchr(start, '\n', rd->size - rd->at);
+  const size_t n = nl ? (size_t)(nl - start) + 1 : rd->size - rd->at;
+  if (n > (size_t)size - 1) {
     rd->too_long = rd->line;
     return NULL;
   }
+  memcpy(buf, start, n);
+  buf[n] = '\0';
+  rd->at += n;
   return buf;
+}
+
+/* path read whole into *out (size *n), refused past MANIFEST_MAX_BYTES before
+ * more is read; a FIFO with no writer is not waited for (dv_input.h) */
+static int read_manifest(const char *path, char **out, size_t *n, dv_error *err) {
+  FILE *f = dv_input_open(path);
+  struct stat st;
+  int status = DV_OK;
+  char *buf = NULL;
+  if (!f) return dv_fail(err, DV_EINPUT, "%s: cannot be read: %s", path, strerror(errno));
+  if (fstat(fileno(f), &st)) {
+    status = dv_fail(err, DV_EINPUT, "%s: cannot be read: %s", path, strerror(errno));
+    goto cleanup;
+  }
+  if (S_ISDIR(st.st_mode)) {
+    status = dv_fail(err, DV_EINPUT, "%s: is a directory", path);
+    goto cleanup;
+  }
+  if (S_ISREG(st.st_mode) && st.st_size > MANIFEST_MAX_BYTES) {
+    status = dv_fail(err, DV_EINPUT, "%s: more than the %d KiB a manifest may have", path,
+                     MANIFEST_MAX_BYTES / 1024);
+    goto cleanup;
+  }
+  if (!(buf = malloc(MANIFEST_MAX_BYTES + 1))) {
+    status = dv_fail(err, DV_ESYSTEM, "%s: out of memory", path);
+    goto cleanup;
+  }
+  const size_t got = fread(buf, 1, MANIFEST_MAX_BYTES + 1, f);
+  if (ferror(f))
+    status = dv_fail(err, DV_EINPUT, "%s: cannot be read: %s", path, strerror(errno));
+  else if (got > MANIFEST_MAX_BYTES)
+    status = dv_fail(err, DV_EINPUT, "%s: more than the %d KiB a manifest may have", path,
+                     MANIFEST_MAX_BYTES / 1024);
+  else if (got == 0 && S_ISFIFO(st.st_mode))
+    status =
+        dv_fail(err, DV_EINPUT, "%s: a pipe with nothing to read (no writer has it open)", path);
+  if (status) goto cleanup;
+  *out = buf, *n = got, buf = NULL;
+
+cleanup:
+  free(buf);
+  fclose(f);
+  return status;
 }
 
 static int fail(parse *p, const char *key, const char *fmt, const char *what) {
@@ -346,10 +400,12 @@ int dv_adapter_load(const char *dir, dv_adapter *a, dv_error *err) {
   a->contact.stiffer = 0.25;
   if (!realpath(dir, a->dir)) snprintf(a->dir, sizeof a->dir, "%s", dir);
   snprintf(path, sizeof path, "%s/manifest.ini", a->dir);
-  parse p = {a, {fopen(path, "r"), 0, 0}, path, err, 0, {{0}}, 0, {{0}}, 0};
-  if (!p.rd.fp) return dv_fail(err, DV_EINPUT, "%s: cannot be read", path);
+  char *data = NULL;
+  size_t size = 0;
+  if (read_manifest(path, &data, &size, err)) return -1;
+  parse p = {a, {data, size, 0, 0, 0}, path, err, 0, {{0}}, 0, {{0}}, 0};
   const int r = ini_parse_stream(read_line, &p.rd, handler, &p);
-  fclose(p.rd.fp);
+  free(data);
   if (p.failed) return -1;
   if (p.rd.too_long)
     return dv_fail(err, DV_EINPUT, "%s:%d: syntax: a line longer than %d characters", path,

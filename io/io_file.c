@@ -174,11 +174,34 @@ void dv_io_abort(dv_io_file *out) {
   out->fp = NULL;
 }
 
-/* every missing directory of path, from the top */
+/* a ".." of path that would leave a directory not there yet ("new/.."): made
+ * only to be left, it would stay behind a refused run; 0, or DV_EINPUT with err.
+ * Nothing is made before this check. */
+static int leaves_new(const char *path, char *buf, dv_error *err) {
+  int missing = 0;
+  for (char *p = buf + (buf[0] != '\0');; p++) {
+    const char c = *p;
+    if (c != '/' && c != '\0') continue;
+    *p = '\0';
+    const char *last = strrchr(buf, '/');
+    struct stat st;
+    if (missing && !strcmp(last ? last + 1 : buf, ".."))
+      return dv_fail(err, DV_EINPUT,
+                     "%s: its '..' leaves a directory that does not exist; nothing was written: "
+                     "give the path without it",
+                     path);
+    if (!missing && buf[0] && stat(buf, &st)) missing = 1;
+    *p = c;
+    if (!c) return DV_OK;
+  }
+}
+
+/* every missing directory of path, from the top; none when a ".." would
+ * leave one of them */
 int dv_io_make_dirs(const char *path, dv_error *err) {
   char buf[4096];
-  const int status = dv_io_path(buf, sizeof buf, err, "%s", path);
-  if (status) return status;
+  int status = dv_io_path(buf, sizeof buf, err, "%s", path);
+  if (status || (status = leaves_new(path, buf, err))) return status;
   for (char *p = buf + (buf[0] != '\0');; p++) { /* "/a/b": not "" first */
     const char c = *p;
     if (c != '/' && c != '\0') continue;

@@ -53,7 +53,8 @@ int dv_io_same_file(const char *a, const char *b);
  * itself need not exist; 0, or -1 when the directory cannot be resolved */
 int dv_io_canonical(const char *path, char *out, size_t size);
 
-/* mkdir -p */
+/* mkdir -p, but nothing made when a ".." would leave a directory not there
+ * yet ("new/.."): an error naming path, DV_EINPUT */
 int dv_io_make_dirs(const char *path, dv_error *err);
 
 #endif

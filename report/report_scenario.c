@@ -303,7 +303,10 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   if (status) return status;
   FILE *fp = out.fp;
   const dv_scenario *sc = c->sc;
-  fprintf(fp, "# %s: %s\n\n", sc->name, c->pass ? "pass" : "FAIL");
+  /* the scene's and engines' names too: an adapter's or a user's words, never markup */
+  fputs("# ", fp);
+  dv_report_escape_markdown(fp, sc->name);
+  fprintf(fp, ": %s\n\n", c->pass ? "pass" : "FAIL");
   dv_report_escape_markdown(fp, sc->description); /* the user's text: no markup, no control bytes */
   fputs("\n\n", fp);
   /* every word an engine gives (a detail, a method, a setting's value, a
@@ -350,7 +353,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     static const dv_metric_id cols[] = {DV_THETA_MAX_ERR, DV_THETA_RMS_ERR,  DV_PATH_MAX_ERR,
                                         DV_PATH_RMS_ERR,  DV_PATH_HAUSDORFF, DV_ENERGY_DRIFT,
                                         DV_SLIP_MAX};
-    fprintf(fp, "| %s | %s | %s |", r->engine->name, dv_run_verdict_name(r->verdict), ref);
+    fputs("| ", fp);
+    dv_report_escape_markdown(fp, r->engine->name);
+    fprintf(fp, " | %s | %s |", dv_run_verdict_name(r->verdict), ref);
     char cell[32];
     for (size_t k = 0; k < sizeof cols / sizeof *cols; k++)
       fprintf(fp, " %s |", measured(cell, sizeof cell, "%.3g", v[cols[k]]));
@@ -359,7 +364,9 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
   }
   for (size_t i = 0; i < c->n; i++) { /* what decided: each metric against its limit */
     const dv_engine_result *r = &c->r[i];
-    fprintf(fp, "\n%s: %s: ", r->engine->name, dv_run_verdict_name(r->verdict));
+    fputc('\n', fp);
+    dv_report_escape_markdown(fp, r->engine->name);
+    fprintf(fp, ": %s: ", dv_run_verdict_name(r->verdict));
     dv_report_escape_markdown(fp, r->decided);
     fputs("\n\n", fp);
     dv_report_escape_markdown(fp, r->decided_why);
@@ -367,7 +374,8 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     const dv_replay *rp = dv_run_replay_of(r->engine);
     if (rp) { /* a recorded trajectory: where from (the user's path: escaped), what its
                * interpolation may add */
-      fprintf(fp, "%s: ", r->engine->name);
+      dv_report_escape_markdown(fp, r->engine->name);
+      fputs(": ", fp);
       dv_report_escape_markdown(fp, r->stats.method);
       fprintf(fp,
               "; the interpolation's estimated error %.3g rad in theta, %.3g m in the contact "
@@ -377,12 +385,14 @@ static int write_markdown(const char *dir, const dv_comparison *c, dv_error *err
     char knobs[256];
     dv_engine_knobs_text(r->engine, c->sc, knobs, sizeof knobs);
     if (knobs[0]) {
-      fprintf(fp, "%s ran with ", r->engine->name);
+      dv_report_escape_markdown(fp, r->engine->name);
+      fputs(" ran with ", fp);
       dv_report_escape_markdown(fp, knobs);
       fputs(".\n\n", fp);
     }
     if (dv_scenario_derived(c->sc, r->engine->name)[0]) {
-      fprintf(fp, "%s settings chosen: ", r->engine->name);
+      dv_report_escape_markdown(fp, r->engine->name);
+      fputs(" settings chosen: ", fp);
       dv_report_escape_markdown(fp, dv_scenario_derived(c->sc, r->engine->name));
       fputs(".\n\n", fp);
     }

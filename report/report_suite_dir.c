@@ -111,7 +111,9 @@ static int write_error_files(const char *dir, const dv_scenario *sc, const char 
   if (!status) status = dv_io_write_text(dir, "report.json", json, err);
   dv_io_file md;
   if (!status && !(status = dv_io_open_in(&md, dir, "report.md", err))) {
-    fprintf(md.fp, "# %s\n\nerror: ", sc->name);
+    fputs("# ", md.fp);
+    dv_report_escape_markdown(md.fp, sc->name);
+    fputs("\n\nerror: ", md.fp);
     dv_report_escape_markdown(md.fp, cause);
     fputc('\n', md.fp);
     status = dv_io_commit(&md, err);

@@ -89,8 +89,11 @@ static void write_markdown(FILE *fp, const dv_stability_row *rows, size_t n) {
     const dv_search *s = rows[i].search;
     char cut[121]; /* the engine's words: the first 120 bytes, as text (never markup) */
     snprintf(cut, sizeof cut, "%s", detail(s));
-    fprintf(fp, "| %s | %s | %g | %.3g | %s | ", rows[i].scenario, rows[i].engine, s->tolerance,
-            s->limit, mode(s));
+    fputs("| ", fp); /* the names too: a user's or an adapter's words */
+    dv_report_escape_markdown(fp, rows[i].scenario);
+    fputs(" | ", fp);
+    dv_report_escape_markdown(fp, rows[i].engine);
+    fprintf(fp, " | %g | %.3g | %s | ", s->tolerance, s->limit, mode(s));
     dv_report_escape_markdown(fp, cut);
     fputs(" |\n", fp);
   }

@@ -118,8 +118,12 @@ static int write_md(const char *dir, const dv_verify_case *cases, size_t n, dv_e
   for (size_t k = 0; k < n; k++) {
     char text[640];
     describe(&cases[k], text, sizeof text);
-    fprintf(out.fp, "| %s | %s | %.3g, %.3g, %.3g, %.3g | ", cases[k].scenario, cases[k].engine,
-            cases[k].v.error[0], cases[k].v.error[1], cases[k].v.error[2], cases[k].v.error[3]);
+    fputs("| ", out.fp); /* the names too: a user's or an adapter's words */
+    dv_report_escape_markdown(out.fp, cases[k].scenario);
+    fputs(" | ", out.fp);
+    dv_report_escape_markdown(out.fp, cases[k].engine);
+    fprintf(out.fp, " | %.3g, %.3g, %.3g, %.3g | ", cases[k].v.error[0], cases[k].v.error[1],
+            cases[k].v.error[2], cases[k].v.error[3]);
     dv_report_escape_markdown(out.fp, text); /* an engine's error among it: text, not markup */
     fputs(" |\n", out.fp);
   }

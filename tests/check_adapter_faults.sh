@@ -16,7 +16,9 @@
 #     within 20 s, the report written;
 #   - a manifest that cannot be read, or an adapter whose command is missing,
 #     does not stop diskval: `engines` says why, naming the line; a run of it
-#     fails with the reason;
+#     fails with the reason; a manifest that is a FIFO with no writer reads
+#     as empty after 2 s, one that is /dev/zero is refused at its size cap
+#     (no command waits on them, `simulate --engine reduced` neither);
 #   - a run 5 cm off its path fails, its cause searched over the adapter's
 #     knobs (none removes it), or with --cause none not searched;
 #   - every setting reaches the adapter as given (engines --scene);
@@ -143,6 +145,20 @@ check 'grep -q "^absent .*not available: no-such-program-here is not on PATH" "$
 run absent
 check '[ $code -eq 1 ] && grep -q "absent is not available" "$work/stdout"' \
   "a run of an unavailable adapter fails with why: exit $code: $out"
+
+# a manifest no writer ever fills, or one that never ends: named, never waited on
+mkdir -p "$work/pipe/fifo" "$work/pipe/zero"
+mkfifo "$work/pipe/fifo/manifest.ini"
+ln -s /dev/zero "$work/pipe/zero/manifest.ini"
+DISKVAL_ADAPTERS=$work/pipe timeout -k 2 20 "$diskval" engines >"$work/engines" 2>&1
+code=$?
+check '[ $code -eq 0 ] && grep -q "fifo/manifest.ini: a pipe with nothing to read" "$work/engines" &&
+  grep -q "zero/manifest.ini: more than the 64 KiB a manifest may have" "$work/engines"' \
+  "a FIFO and /dev/zero as manifests: exit $code: $(grep -e fifo/ -e zero/ "$work/engines")"
+DISKVAL_ADAPTERS=$work/pipe timeout -k 2 20 "$diskval" simulate "$work/thick.ini" --engine reduced \
+  --out "$work/reduced.csv" --quiet >"$work/stdout" 2>&1
+code=$?
+check '[ $code -eq 0 ]' "simulate --engine reduced beside a FIFO manifest: exit $code: $(cat "$work/stdout")"
 
 # a machine without Node: the shipped adapters are listed as not available, the rest runs
 PATH=/nonexistent "$(command -v env)" "$diskval" engines >"$work/engines" 2>&1

@@ -13,7 +13,9 @@
 #   - a user's file in a map's --out is not lost to a report or to suite's files;
 #   - simulate's FILE.json made by a user during the run is not replaced;
 #   - judge's names never make two of a report's outputs one file;
-#   - only diskval's own temporaries, lock and --out are taken for them.
+#   - only diskval's own temporaries, lock and --out are taken for them;
+#   - an --out left by '..' through a directory not there yet (OUT/NAME/..) is
+#     refused with nothing made.
 #   - judge's names obey the scenario names' rules, and a long file name
 #     gets a default name that does.
 set -u
@@ -236,6 +238,16 @@ check 'same lk/.diskval.lock "$sum" && [ ! -e lk/.diskval-report ]' "a user's .d
 refused "suite --junit NEW/./index.html" "--junit 'new/./index.html' is the suite's own" \
   "$dv" suite sc.ini --engines ode --out new --junit new/./index.html
 check '[ ! -e new ]' "a refused suite made its --out"
+
+# an --out through a directory not there yet, left by '..' (OUT/NAME/..): refused before
+# anything is made, so no empty OUT/NAME stays in the way of the next run
+mkdir F8
+cp sc.ini F8/
+refused "compare --out F8/fast/.." "F8/fast/\.\.: its '\.\.' leaves a directory that does not exist" \
+  "$dv" compare F8/sc.ini --engines ode --out F8/fast/..
+check '[ ! -e F8/fast ]' "a refused compare made F8/fast"
+"$dv" compare F8/sc.ini --engines ode --out F8 --quiet >/dev/null 2>"$work/stderr"
+check '[ -f F8/fast/report.md ]' "compare --out F8 after --out F8/fast/..: $(cat "$work/stderr")"
 
 [ $fail -eq 0 ] && echo "user files (second pass): none lost"
 exit $fail
