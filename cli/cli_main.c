@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "adapter_child.h"
 #include "cli.h"
 #include "exec_mpi.h"
 #include "io_temp.h"
@@ -102,6 +103,7 @@ int main(int argc, char **argv) {
                   {"league", dv_cli_league}};
   gsl_set_error_handler_off();
   dv_io_temp_clean_on_signals(); /* a run ended by SIGINT or SIGTERM leaves no temporary */
+  dv_child_adopt_orphans();      /* what an adapter starts outlives no guard of its either */
   dv_exec_mpi_init(&argc, &argv);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     if (argc < 2) return fputs(HELP, stderr), DV_EXIT_ERROR;

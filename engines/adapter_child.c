@@ -7,6 +7,7 @@
 #include <math.h>
 #include <poll.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/prctl.h>
@@ -54,7 +55,28 @@ static void close_fd(int *fd) {
  * guard makes only async-signal-safe calls (system calls, no allocation; the
  * calling process may have threads). /proc/PID/task/TID/children would give
  * the tree directly, but needs CONFIG_PROC_CHILDREN, which not every kernel
- * has (the test machine's has not): the scan of /proc/PID/stat works on all. */
+ * has (the test machine's has not): the scan of /proc/PID/stat works on all.
+ *
+ * The guard's own end. The adapter shares the guard's process group and
+ * user, so it may stop the guard (SIGSTOP) or kill it (SIGKILL), and so may
+ * anyone from outside. A stopped guard is continued (SIGCONT) when the run
+ * ends, before its SIGTERM: it then ends the tree as ever; one stopped
+ * again is killed, with its group, after GUARD_WAIT. A dead guard's
+ * orphans (the adapter, killed by its PR_SET_PDEATHSIG, and all it started)
+ * go to the nearest child subreaper above: under the diskval command
+ * (dv_child_adopt_orphans) that is the process that started the guard,
+ * diskval or a pool's task, made a subreaper at its first dv_child_start
+ * (the flag is not inherited by fork). When it reaps a guard it sweeps
+ * (sweep): every child of its that is a stray, neither a live guard of its
+ * own (the registry, guard_pids) nor in its own process group (a pool's
+ * tasks, which never leave it), is killed with all its descendants, the
+ * scan repeated until none is left, as the guard does. Left out, and said:
+ * a library's caller (a subreaper would change its own children's fate, and
+ * the sweep would kill its children in other groups: so only on request),
+ * and a process that both stops its guard and then outlives a diskval killed
+ * by SIGKILL (nobody is left to continue the guard). Why not a cgroup or a
+ * PID namespace, which no process escapes: neither is there without
+ * privileges on a CI machine, and a fallback would be needed anyway. */
 
 /* the guard's bounds: processes one scan of /proc holds and descendants it
  * kills (more: the next scan); scans, 5 ms apart, before it gives up (5 s: a
@@ -66,10 +88,19 @@ static void close_fd(int *fd) {
 #define GUARD_ROUNDS 1000
 #define GUARD_WAIT 10.0
 
-/* a scan's processes and their parents, and the tree found: written in a
- * guard only (its copy of this process's memory) */
-static pid_t scan_pid[GUARD_SCAN], scan_ppid[GUARD_SCAN], tree[GUARD_TREE];
+/* a scan's processes, their parents and groups, and the tree found: written
+ * in a guard (its copy of this process's memory) and by the sweep of an
+ * adopting process (the diskval command's: one thread) */
+static pid_t scan_pid[GUARD_SCAN], scan_ppid[GUARD_SCAN], scan_pgid[GUARD_SCAN], tree[GUARD_TREE];
 static unsigned char in_tree[GUARD_SCAN];
+
+/* the live guards this process started (0: a free slot), at most GUARD_SLOTS
+ * at a time; whether this process adopts orphans (dv_child_adopt_orphans);
+ * the process made a subreaper (a fork's copy names its parent, not it) */
+#define GUARD_SLOTS 64
+static atomic_int guard_pids[GUARD_SLOTS];
+static atomic_int adopting;
+static atomic_int subreaper;
 
 /* the stops a guard waits for, and the end of a child of its */
 static const int guard_signals[] = {SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGCHLD};
@@ -112,7 +143,7 @@ static void each_numbered(int dir, void (*fn)(long n, int dir, void *ctx), void 
     }
 }
 
-/* one process of /proc: its parent, from /proc/PID/stat ("PID (comm) S PPID ...") */
+/* one process of /proc: its parent and group, from /proc/PID/stat ("PID (comm) S PPID PGID ...") */
 static void scan_one(long pid, int dir, void *ctx) {
   size_t *n = ctx;
   char path[24], stat[256];
@@ -129,27 +160,44 @@ static void scan_one(long pid, int dir, void *ctx) {
   ssize_t k = got - 1; /* the comm may hold ')' and spaces: the last ')' ends it */
   while (k >= 0 && stat[k] != ')') k--;
   if (k < 0 || k + 4 >= got) return;
-  long ppid = 0;
+  long ppid = 0, pgid = 0;
   for (k += 4; k < got && stat[k] >= '0' && stat[k] <= '9'; k++) ppid = ppid * 10 + stat[k] - '0';
-  scan_pid[*n] = (pid_t)pid, scan_ppid[*n] = (pid_t)ppid, in_tree[*n] = 0;
+  for (k++; k < got && stat[k] >= '0' && stat[k] <= '9'; k++) pgid = pgid * 10 + stat[k] - '0';
+  scan_pid[*n] = (pid_t)pid, scan_ppid[*n] = (pid_t)ppid, scan_pgid[*n] = (pid_t)pgid;
+  in_tree[*n] = 0;
   ++*n;
 }
 
-/* SIGKILL every descendant of self a scan of /proc finds */
-static void kill_tree(pid_t self) {
+/* a child of a sweeping process, pid in group pgid: a stray (no live guard of
+ * its, no pool task: outside its group) */
+static int stray(pid_t pid, pid_t pgid) {
+  if (pgid == getpgrp()) return 0;
+  for (int i = 0; i < GUARD_SLOTS; i++)
+    if (atomic_load(&guard_pids[i]) == pid) return 0;
+  return 1;
+}
+
+/* SIGKILL every descendant of self a scan of /proc finds; with strays_only,
+ * those of its strays (stray) only. Its children killed, in tree[1..], their count */
+static size_t kill_tree(pid_t self, int strays_only) {
   size_t n = 0, m = 0;
   const int dir = open("/proc", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir < 0) return;
+  if (dir < 0) return 0;
   each_numbered(dir, scan_one, &n);
   close(dir);
   tree[m++] = self;
+  for (size_t i = 0; i < n && m < GUARD_TREE; i++) /* its children */
+    if (scan_ppid[i] == self && (!strays_only || stray(scan_pid[i], scan_pgid[i])))
+      tree[m++] = scan_pid[i], in_tree[i] = 1;
+  const size_t children = m - 1;
   for (int grew = 1; grew && m < GUARD_TREE;) { /* a pass a generation */
     grew = 0;
     for (size_t i = 0; i < n && m < GUARD_TREE; i++)
-      for (size_t j = 0; !in_tree[i] && j < m; j++)
+      for (size_t j = 1; !in_tree[i] && j < m; j++)
         if (scan_ppid[i] == tree[j]) tree[m++] = scan_pid[i], in_tree[i] = 1, grew = 1;
   }
   for (size_t j = 1; j < m; j++) kill(tree[j], SIGKILL);
+  return children;
 }
 
 /* end every descendant and reap them all; the adapter's wait status, if reaped, in *status */
@@ -157,7 +205,7 @@ static void end_tree(pid_t self, pid_t adapter, int *status) {
   for (int round = 0; round < GUARD_ROUNDS; round++) {
     int ws;
     pid_t r;
-    kill_tree(self);
+    kill_tree(self, 0);
     while ((r = waitpid(-1, &ws, WNOHANG)) > 0)
       if (r == adapter) *status = ws;
     if (r < 0 && errno == ECHILD) return; /* no descendant left: each had the guard above it */
@@ -242,10 +290,41 @@ _Noreturn static void guard(pid_t parent, const int fds[3], const char *dir, cha
   _exit(128 + sig);
 }
 
+void dv_child_adopt_orphans(void) {
+  atomic_store(&adopting, 1);
+}
+
+/* a slot of the registry that held from holds to (from 0: a guard enlisted;
+ * to 0: struck off); 0, or -1: no slot held from */
+static int registry_swap(pid_t from, pid_t to) {
+  for (int i = 0; i < GUARD_SLOTS; i++) {
+    int expected = from;
+    if (atomic_compare_exchange_strong(&guard_pids[i], &expected, to)) return 0;
+  }
+  return -1;
+}
+
+/* an adopting process's strays, and all they started, killed and reaped (the
+ * guard's end_tree, for the children of a guard that died) */
+static void sweep(void) {
+  const pid_t self = getpid();
+  if (atomic_load(&subreaper) != self) return;
+  for (int round = 0; round < GUARD_ROUNDS; round++) {
+    const size_t children = kill_tree(self, 1);
+    if (!children) return;
+    for (size_t j = 1; j <= children; j++) waitpid(tree[j], NULL, WNOHANG);
+    nap_ms(1);
+  }
+}
+
 int dv_child_start(dv_child *c, const char *dir, char *const argv[], char *what, size_t size) {
   int in[2], out[2], err[2];
   memset(c, 0, sizeof *c);
   c->in = c->out = c->err = -1;
+  if (atomic_load(&adopting) && atomic_load(&subreaper) != getpid()) {
+    if (prctl(PR_SET_CHILD_SUBREAPER, 1)) goto fail;
+    atomic_store(&subreaper, getpid());
+  }
   /* close-on-exec from birth: another run's adapter, started meanwhile, inherits none */
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, in)) goto fail;
   if (pipe2(out, O_CLOEXEC)) goto fail_in;
@@ -258,6 +337,16 @@ int dv_child_start(dv_child *c, const char *dir, char *const argv[], char *what,
     guard(parent, fds, dir, argv);
   }
   setpgid(pid, pid); /* as the guard does: whichever runs first */
+  if (atomic_load(&adopting) && registry_swap(0, pid)) { /* a sweep would take it for a stray */
+    kill(-pid, SIGKILL), kill(pid, SIGKILL);
+    while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {
+    }
+    close(in[0]), close(out[0]), close(err[0]);
+    close(in[1]), close(out[1]), close(err[1]);
+    snprintf(what, size, "cannot start %s: %d adapters run in this process already", argv[0],
+             GUARD_SLOTS);
+    return -1;
+  }
   close(in[1]), close(out[1]), close(err[1]);
   c->pid = pid, c->in = in[0], c->out = out[0], c->err = err[0];
   fcntl(c->err, F_SETFL, O_NONBLOCK);
@@ -329,21 +418,31 @@ static int take_line(dv_child *c, char *line, size_t size) {
   return 1;
 }
 
-/* once the guard has ended: its group killed (what the adapter left there,
- * had the guard itself been killed) while its pid is still the guard's, then
- * the guard reaped. 1 once reaped */
+/* the guard ended, or killed now (how: 0, the guard exited; 1, it is
+ * killed): its group killed (what the adapter left there, had the guard
+ * itself been killed) while its pid is still the guard's, the guard reaped,
+ * out of the registry, and what it left to this process swept */
+static void bury(dv_child *c, int kill_it) {
+  kill(-c->pid, SIGKILL);
+  if (kill_it) kill(c->pid, SIGKILL);
+  while (waitpid(c->pid, &c->status, 0) < 0 && errno == EINTR) {
+  }
+  c->reaped = 1;
+  registry_swap(c->pid, 0);
+  sweep();
+}
+
+/* the guard reaped once it has ended (bury). 1 once reaped */
 static int reap(dv_child *c) {
   siginfo_t si;
   memset(&si, 0, sizeof si);
   if (!c->reaped && waitid(P_PID, (id_t)c->pid, &si, WEXITED | WNOHANG | WNOWAIT) < 0 &&
-      errno != EINTR)
-    return c->reaped = 1; /* reaped by someone else (SIGCHLD ignored): no status */
-  if (!c->reaped && si.si_pid == c->pid) {
-    kill(-c->pid, SIGKILL);
-    while (waitpid(c->pid, &c->status, 0) < 0 && errno == EINTR) {
-    }
+      errno != EINTR) { /* reaped by someone else (SIGCHLD ignored): no status */
     c->reaped = 1;
+    registry_swap(c->pid, 0);
+    sweep();
   }
+  if (!c->reaped && si.si_pid == c->pid) bury(c, 0);
   return c->reaped;
 }
 
@@ -393,16 +492,14 @@ void dv_child_stop(dv_child *c, double grace) {
   close_fd(&c->in);
   close_fd(&c->out);
   const double end = now() + grace;
+  if (!c->reaped) kill(c->pid, SIGCONT); /* a stopped guard never sees the adapter's end */
   while (!reap(c)) {
     if (!c->killed && now() >= end) {
       kill(c->pid, SIGTERM); /* the guard ends the adapter and all it started, then itself */
+      kill(c->pid, SIGCONT);
       c->killed = 1;
     } else if (c->killed && now() >= end + GUARD_WAIT) { /* a guard that hangs: its group */
-      kill(-c->pid, SIGKILL);
-      kill(c->pid, SIGKILL);
-      while (waitpid(c->pid, &c->status, 0) < 0 && errno == EINTR) {
-      }
-      c->reaped = 1;
+      bury(c, 1);
       break;
     }
     nap_ms(2);

@@ -6,7 +6,10 @@
  * as it comes and its last line kept for the report. It runs under a guard
  * process (adapter_child.c), which ends it and every process it started,
  * in its process group or not, when it exits, when it is stopped, and when
- * diskval dies of any signal, SIGKILL included.
+ * diskval dies of any signal, SIGKILL included. A guard that is itself
+ * stopped (SIGSTOP) is continued when the run ends; one that dies (killed by
+ * its adapter, or from outside) leaves the adapter's processes to the process
+ * that started it, which ends them if dv_child_adopt_orphans was called.
  */
 #ifndef DV_ADAPTER_CHILD_H
 #define DV_ADAPTER_CHILD_H
@@ -28,6 +31,16 @@ typedef struct dv_child {
   int reaped;
   int killed; /* dv_child_stop killed it: it did not exit in its grace */
 } dv_child;
+
+/* from now on, this process and its forks (a pool's tasks) become child
+ * subreapers (PR_SET_CHILD_SUBREAPER) as they start their first adapter, so
+ * that what an adapter started, had its guard died, becomes theirs and is
+ * killed as the guard's end is seen. The diskval command's, not a library's:
+ * once called, the orphans of any grandchild of this process become its
+ * children, and at a guard's end every child of this process that is outside
+ * its process group and is no live guard of its own is killed with all it
+ * started. Never undone. */
+void dv_child_adopt_orphans(void);
 
 /* run argv (argv[0] looked up on PATH) in dir; 0, or -1 with what set */
 int dv_child_start(dv_child *c, const char *dir, char *const argv[], char *what, size_t size);

@@ -9,6 +9,11 @@
 #   - compare (--jobs 1 and 2) or league held at the adapter's start
 #     (hangstart, which sleeps 1002.TAG) and ended by SIGINT, SIGTERM or
 #     SIGKILL leaves none;
+#   - the guard itself killed by the adapter (killguard: `kill -9 $PPID`),
+#     stopped by it (stopguard: `kill -STOP $PPID`, the run replays on) or
+#     killed from outside (SIGKILL, the adapter held at its start) leaves
+#     none once the run has ended: its orphans land on the process that
+#     started the guard (a subreaper), which kills them;
 #   - a manifest's timeout of 600 s is taken, 600.5 s or 1e300 s refused with
 #     the manifest's file, line and key.
 # TAG is this script's pid: its sleeps are told from any other run's, and
@@ -96,6 +101,52 @@ for sig in INT TERM KILL; do
     kill -9 $pid 2>/dev/null
     none_left "$run ended by SIG$sig"
   done
+done
+
+# the guard killed or stopped by its adapter
+for mode in killguard stopguard; do
+  for run in "${runs[@]}"; do
+    rm -f "$work/spawned"
+    n=$((n + 1))
+    # 60 s: a hang's guard (measured: 0.2-0.6 s a run; before the fix a
+    # stopped guard held each run 12 s, till its stop's SIGKILL)
+    DV_SPAWN_MODE=$mode timeout -k 2 60 "$diskval" ${run%% *} "$work/thick.ini" \
+      --engines spawner ${run#* } --out "$work/out$n" --quiet >"$work/stdout" 2>&1
+    code=$?
+    check '[ $code -ne 124 ] && [ $code -ne 137 ]' "$run, $mode: it hung (killed at 60 s)"
+    check '[ "$(grep -c "^child" "$work/spawned")" -ge 2 ]' "$run, $mode: the spawner started no child"
+    none_left "$run, $mode"
+  done
+done
+
+# the guard killed from outside while the adapter is held at its start: the
+# adapter dies with it (diskval may start it again: a new guard, new
+# children), and what it started is gone while diskval still runs
+for run in "${runs[@]}"; do
+  rm -f "$work/spawned"
+  n=$((n + 1))
+  DV_REPLAY_FAULT=hangstart "$diskval" ${run%% *} "$work/thick.ini" --engines spawner ${run#* } \
+    --out "$work/out$n" --quiet >/dev/null 2>&1 &
+  pid=$!
+  disown $pid # its death by SIGKILL is this test's
+  for _ in $(seq 300); do # as above: the three sleeps running
+    [ "$(leftovers | wc -l)" -ge 3 ] && break
+    sleep 0.1
+  done
+  guard=$(sed -n 's/^parent //p' "$work/spawned" 2>/dev/null | head -n 1)
+  kids=$(sed -n 's/^child //p' "$work/spawned" 2>/dev/null | head -n 2)
+  check '[ -n "$guard" ] && [ "$(leftovers | wc -l)" -ge 3 ]' "$run, guard killed: the spawner's children never ran"
+  [ -z "$guard" ] || kill -9 "$guard"
+  # gone as diskval sees the guard's end (measured: 0.3 s); 20 s is a hang's guard
+  for _ in $(seq 200); do
+    left=
+    for k in $kids; do alive "$k" && left="$left $k"; done
+    [ -z "$left" ] && break
+    sleep 0.1
+  done
+  check '[ -z "$left" ]' "$run, its guard killed from outside: its children outlived it:$left"
+  kill -9 $pid 2>/dev/null # the rest: as for a SIGKILLed run, above
+  none_left "$run, its guard killed from outside"
 done
 
 # a manifest's timeout: at most 600 s (the suite's default time limit)
