@@ -76,6 +76,7 @@ hangstart|while it built the model: no answer within 2 s
 bgchild|stopped answering: exited with status 0
 stillvel|its rows disagree: .* the trapezoid
 fastvel|its rows disagree: .* the trapezoid
+stillcentre|its rows disagree: the centre's . step to t = .* misses the trapezoid of its velocity
 onestep|its rows disagree: 1 steps at t = 0.1 s, where the step
 extrastep|its rows disagree: 101 steps at t = 0.1 s, where the step 0.001 s makes 100
 FAULTS

@@ -9,7 +9,8 @@
 # crlf (lines ending in CR LF, which must pass), lies whose rows disagree
 # with themselves: stillvel (every velocity 0 while the pose moves), fastvel
 # (every velocity 1.2 times the pose's: from DV_REPLAY_AT=0, a start off the
-# scene's), onestep (steps 1 on every row), extrastep (one step more than
+# scene's), stillcentre (the centre's vx, vy 0 while it rolls), onestep
+# (steps 1 on every row), extrastep (one step more than
 # the time makes), or at the start:
 # noready, hangstart, bgchild (exits, a child of its own holding its output). $DV_REPLAY_MARK, when set, is created when a run starts.
 if [ "$1" = --version ]; then echo "replay 1 (a test adapter)"; exit 0; fi
@@ -61,6 +62,7 @@ $1 == "advance" {
     if (fault == "stillvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] = 0; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "fastvel") { split(out, v, " "); for (i = 9; i <= 14; i++) v[i] *= 1.2; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "onestep") { split(out, v, " "); v[16] = 1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
+    if (fault == "stillcentre") { split(out, v, " "); v[9] = 0; v[10] = 0; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "extrastep") { split(out, v, " "); v[16] += 1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
     if (fault == "quat") { split(out, v, " "); v[5] = v[5] * 1.1; out = v[1]; for (i = 2; i <= 16; i++) out = out " " v[i] }
   }
