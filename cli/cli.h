@@ -49,6 +49,35 @@ struct dv_cli_list;
 int dv_cli_load_scenario(const char *command, const char *path, const struct dv_cli_list *sets,
                          struct dv_scenario *sc, struct dv_error *err);
 
+/* dv_cli_load_scenario under a wall-time limit (compare and simulate
+ * --timeout S): the settings probes of the load (engine_choose.h) and then
+ * forecast(sc, ctx) (may be NULL: the up-front estimate, run_progress.h)
+ * run first in a process of their own, killed at the command's deadline
+ * (dv_exec_set_deadline), and hand back their choices and estimate, so the
+ * load here probes no more. timeout <= 0 (or under mpirun): a plain load.
+ * The file is read once, here (dv_scenario_keep_texts), and checked
+ * before any probe. Killed at the deadline: DV_ESYSTEM "timed out after S
+ * s", *timed_out 1, sc as loaded with nothing probed (its name, for an error
+ * report); stopped by a signal: ended as the signal would end it. */
+int dv_cli_load_scenario_within(const char *command, const char *path,
+                                const struct dv_cli_list *sets, double timeout,
+                                double (*forecast)(const struct dv_scenario *sc, void *ctx),
+                                void *ctx, struct dv_scenario *sc, int *timed_out,
+                                struct dv_error *err);
+
+/* a suite's scenarios, each of files loaded in a process of its own (up to
+ * jobs at a time) with its settings probes, under timeout s each (<= 0: no
+ * limit), its choices handed back and the load repeated here into scs[k]
+ * (which the caller filled with a load that probed nothing: the names and
+ * checks, with dv_scenario_keep_texts on: no file is read twice).
+ * ended[k] (n dv_exec_end): DV_EXEC_ARRIVED, loaded; DV_EXEC_TIMED_OUT,
+ * killed at the limit; DV_EXEC_LOST, its process died: scs[k] as it was.
+ * DV_OK, DV_EVENT when SIGINT, SIGTERM or SIGHUP stopped them (exec_pool.h),
+ * or an error (a load here that failed, with err). Not under mpirun. */
+int dv_cli_load_all_within(const char *command, const struct dv_cli_list *files,
+                           const struct dv_cli_list *sets, int jobs, double timeout,
+                           struct dv_scenario *scs, unsigned char *ended, struct dv_error *err);
+
 /* the scenario files args names, appended to files: each DIR's *.ini (sorted),
  * and each FILE; none is an error (a line on stderr, DV_EXIT_ERROR) */
 int dv_cli_scenario_files(const char *command, const struct dv_cli_list *args,

@@ -10,6 +10,7 @@
 #include "report_within.h"
 #include "run_progress.h"
 #include "run_scenario.h"
+#include "run_within.h"
 
 static const char HELP[] =
     "usage: diskval compare SCENARIO [--engines LIST] [--out DIR] [--timeout S] [--jobs N]\n"
@@ -19,8 +20,9 @@ static const char HELP[] =
     "theta(t) and the contact path, check the scenario's tolerances, and write\n"
     "DIR/<scenario>/ (default DIR: report): every trajectory as CSV, the plots,\n"
     "report.json, report.md and index.html (its page). Prints one line per engine.\n"
-    "--timeout S: stop the comparison after S s of wall time (an error report); one whose\n"
-    "probed cost is more than twice S is not started. Default 0: no limit.\n"
+    "--timeout S: stop the comparison after S s of wall time, its settings probes included\n"
+    "(an error report); one whose probed cost is more than twice S is not started.\n"
+    "Default 0: no limit.\n"
     "--jobs N: run the engines (each with its settings probes), the references, then the\n"
     "failing engines' causes in up to N processes (default: the cores); the report is the\n"
     "same whatever N.\n"
@@ -31,6 +33,29 @@ static const char HELP[] =
     "full: every knob over the whole scene (diskval attribute); none: no cause searched.\n"
     "--quiet: no progress line on a terminal, no warning before a run longer than a minute.\n"
     "Exit status: 0 all pass, 1 a tolerance or outcome failed, 2 bad input or error.\n";
+
+/* the up-front estimate of the comparison of sc by the engines (ctx) that
+ * dv_report_compare_within checks against the limit: sc's own [scenario]
+ * engines where it names them */
+static double forecast(const dv_scenario *sc, void *ctx) {
+  const dv_engine_type *own[DV_MAX_ENGINES + 1], *const *run = ctx;
+  size_t n = 0;
+  dv_error ignored; /* a bad list is the comparison's to report */
+  if (sc->engines[0] && !dv_engine_parse_list(sc->engines, own, DV_MAX_ENGINES + 1, &ignored))
+    run = own;
+  while (run[n]) n++;
+  return dv_run_progress_estimate(sc, NULL, run, n);
+}
+
+/* after the limit ended the load (its settings probes): sc, as loaded with
+ * nothing probed, gets the error report a killed comparison leaves; 0, or -1 */
+static int report_timed_out(const dv_scenario *sc, const char *out, const char *cause, int *lock) {
+  dv_error ignored;
+  if (dv_report_dir_check(out, sc, 1, NULL, 0, &ignored) || dv_io_make_dirs(out, &ignored) ||
+      dv_io_lock_dir(out, lock, &ignored) || dv_report_dir_check(out, sc, 1, NULL, 0, &ignored))
+    return -1;
+  return dv_report_dir_write_error(out, sc, cause, &ignored) ? -1 : 0;
+}
 
 int dv_cli_compare(int argc, char **argv) {
   const char *out = "report", *list = NULL, *cause = NULL;
@@ -48,19 +73,24 @@ int dv_cli_compare(int argc, char **argv) {
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("compare", a.quiet, 0);
+  /* the whole comparison, its settings probes and forecast too, ends at the limit */
+  dv_run_within_deadline(timeout);
   const dv_engine_type *engines[DV_MAX_ENGINES + 1];
   dv_scenario sc;
   dv_error err = {{0}};
   dv_report_explain explain;
-  int code, lock = -1;
+  int code, lock = -1, timed_out = 0;
   if ((code = dv_cli_explainer("compare", cause, &a.sets, &explain)) != DV_OK)
     ;
   else if (dv_cli_engine_list(list, engines, &err))
     code = dv_cli_error("compare", "%s", err.msg);
-  else if (dv_cli_load_scenario("compare", a.args.items[0], &a.sets, &sc, &err))
-    code = (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
-  else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
-           dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
+  else if (dv_cli_load_scenario_within("compare", a.args.items[0], &a.sets, timeout, forecast,
+                                       engines, &sc, &timed_out, &err)) {
+    if (timed_out) report_timed_out(&sc, out, err.msg, &lock);
+    code = timed_out ? dv_cli_error("compare", "%s: %s", a.args.items[0], err.msg)
+                     : (fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR);
+  } else if (dv_report_dir_check(out, &sc, 1, NULL, 0, &err) || dv_io_make_dirs(out, &err) ||
+             dv_io_lock_dir(out, &lock, &err) || dv_report_dir_check(out, &sc, 1, NULL, 0, &err))
     code = dv_cli_error("compare", "%s", err.msg);
   else if ((code = dv_report_compare_within(&sc, engines, out, &explain, jobs, timeout, &err)) ==
            DV_EXIT_ERROR)

@@ -28,11 +28,17 @@ static const char HELP[] =
     "                  simulate's is refused); a symbolic link is written through\n"
     "  --forces FILE   the contact force along the run (references: the force rolling needs)\n"
     "                  as t,force_x,force_y,force_z,friction_ratio (N; NaN where unknown)\n"
-    "  --timeout S     stop the run after S s of wall time (exit 2, nothing written); one\n"
-    "                  whose probed cost is more than twice S is not started (default 0: none)\n"
+    "  --timeout S     stop the run after S s of wall time, its settings probes included\n"
+    "                  (exit 2, nothing written); one whose probed cost is more than twice\n"
+    "                  S is not started (default 0: none)\n"
     "  --quiet         no progress line (shown when stderr is a terminal and the CSV is\n"
     "                  not) and no warning before a run longer than a minute\n"
     "A run that fails (diverged, lost contact, library error) exits 2 and writes no CSV.\n";
+
+/* the up-front estimate of engine's run (ctx) over sc, probed with the settings */
+static double forecast_run(const dv_scenario *sc, void *ctx) {
+  return dv_run_progress_estimate_run(sc, ctx);
+}
 
 /* the command once its options are read */
 static int simulate(const char *scenario, const dv_cli_list *sets, const char *engine_name,
@@ -59,8 +65,13 @@ static int simulate(const char *scenario, const dv_cli_list *sets, const char *e
     return dv_cli_usage_error("simulate", "--out and --forces name the same file: stdout");
   dv_scenario sc;
   dv_error err = {{0}};
-  if (dv_cli_load_scenario("simulate", scenario, sets, &sc, &err)) {
-    fprintf(stderr, "%s\n", err.msg);
+  int timed_out;
+  if (dv_cli_load_scenario_within("simulate", scenario, sets, timeout, forecast_run, (void *)engine,
+                                  &sc, &timed_out, &err)) {
+    if (timed_out) /* as a run killed at the limit says it */
+      fprintf(stderr, "diskval simulate: %s: %s: error: %s\n", sc.name, engine->name, err.msg);
+    else
+      fprintf(stderr, "%s\n", err.msg);
     return DV_EXIT_ERROR;
   }
   dv_io_file out, forces = {0};
@@ -118,6 +129,8 @@ int dv_cli_simulate(int argc, char **argv) {
   const int parsed = dv_cli_parse(&cmd, argc, argv, &a);
   if (parsed != DV_CLI_RUN) return parsed;
   dv_run_progress_start("simulate", a.quiet, !strcmp(out_path, "-"));
+  /* the whole run, its settings probes and forecast too, ends at the limit */
+  dv_run_within_deadline(timeout);
   const int code = simulate(a.args.items[0], &a.sets, engine_name, out_path, forces_path, timeout);
   dv_cli_args_free(&cmd, &a);
   return code;

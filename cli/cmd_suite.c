@@ -10,6 +10,7 @@
 
 #include "cli.h"
 #include "cli_args.h"
+#include "engine_choose.h"
 #include "exec_mpi.h"
 #include "exec_pool.h"
 #include "io_json.h"
@@ -33,7 +34,8 @@ static const char HELP[] =
     "DIR/junit.xml). Every scenario file is checked before anything is written.\n"
     "A scenario (with --verify: a scenario and engine) still running after S seconds\n"
     "(--timeout, default 600; 0: no limit; none under mpirun) is\n"
-    "ended and reported as an error, \"timed out after S s\". One run at a time writes\n"
+    "ended and reported as an error, \"timed out after S s\"; its settings probes, its\n"
+    "first work, are held to the limit too. One run at a time writes\n"
     "into DIR: a second one is refused.\n"
     "--stability also finds, per scenario and engine, the largest timestep that stays\n"
     "finite and within the scenario's theta tolerance (bisection), and the failure\n"
@@ -57,18 +59,69 @@ typedef struct suite_opts {
   const char *cause; /* --cause: quick (NULL), full or none */
 } suite_opts;
 
-/* load every scenario first: any bad file ends the command before output */
-static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenario *scs) {
+/* load every scenario first: any bad file ends the command before output.
+ * probed 0: the names and checks only, no settings probed (they are probed
+ * as each scenario's work, under its time limit: probe_all) */
+static int load_all(const dv_cli_list *files, const dv_cli_list *sets, dv_scenario *scs,
+                    int probed) {
+  dv_engine_choose_probing(probed);
+  dv_scenario_keep_texts(!probed); /* probe_all loads them again: each file is read once */
   for (size_t i = 0; i < files->n; i++) {
     dv_error err = {{0}};
-    if (dv_cli_load_scenario("suite", files->items[i], sets, &scs[i], &err))
-      return fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR;
+    if (probed ? dv_cli_load_scenario("suite", files->items[i], sets, &scs[i], &err)
+               : dv_engine_load_scenario(files->items[i], (const char *const *)sets->items, sets->n,
+                                         &scs[i], &err))
+      return dv_engine_choose_probing(1), fprintf(stderr, "%s\n", err.msg), DV_EXIT_ERROR;
     for (size_t k = 0; k < i; k++)
       if (!strcmp(scs[k].name, scs[i].name))
-        return dv_cli_error("suite", "%s and %s both name their scenario '%s'", scs[k].path,
+        return dv_engine_choose_probing(1),
+               dv_cli_error("suite", "%s and %s both name their scenario '%s'", scs[k].path,
                             scs[i].path, scs[k].name);
   }
+  dv_engine_choose_probing(1);
   return DV_EXIT_OK;
+}
+
+/* the scenarios' settings probed, each in a process of its own under the
+ * limit of a scenario (a scenario's work begins with them), and loaded again
+ * with them into scs; one killed at the limit, or whose process died, is an
+ * error with its error report (codes, causes), left out of the run
+ * (ended[i] != DV_EXEC_ARRIVED). Stopped by a signal: every scenario an
+ * error report "did not end" and the suite's files say so; 130 */
+static int probe_all(const suite_opts *o, const dv_cli_list *files, const dv_cli_list *sets,
+                     dv_scenario *scs, unsigned char *ended, int *codes, dv_error *causes) {
+  const size_t n = files->n;
+  dv_error err = {{0}};
+  const int status =
+      dv_cli_load_all_within("suite", files, sets, o->jobs, o->timeout, scs, ended, &err);
+  if (status < 0) return dv_cli_error("suite", "%s", err.msg);
+  for (size_t i = 0; i < n; i++) {
+    if (status == DV_OK && ended[i] == DV_EXEC_ARRIVED) continue;
+    codes[i] = status == DV_EVENT ? DV_SUITE_NOT_ENDED : DV_SUITE_ERROR;
+    if (status == DV_EVENT)
+      dv_fail(&causes[i], DV_EVENT, "did not end: the suite was interrupted");
+    else if (ended[i] == DV_EXEC_TIMED_OUT)
+      dv_fail(&causes[i], DV_ESYSTEM, "timed out after %g s, probing its settings", o->timeout);
+    else
+      dv_fail(&causes[i], DV_ESYSTEM,
+              "its process ended without a result (crashed or killed), probing its settings");
+    if (status == DV_OK) fprintf(stderr, "diskval suite: %s: %s\n", scs[i].name, causes[i].msg);
+    dv_error ignored; /* never an earlier run's report beside this run's summary */
+    dv_report_dir_write_error(o->out, &scs[i], causes[i].msg, &ignored);
+  }
+  if (status != DV_EVENT) return DV_EXIT_OK;
+  const char **dirs = malloc((2 * n + 1) * sizeof *dirs), **not_ended = dirs + n;
+  if (!dirs) return dv_cli_error("suite", "out of memory");
+  for (size_t i = 0; i < n; i++) dirs[i] = scs[i].name, not_ended[i] = causes[i].msg;
+  char junit[1100];
+  snprintf(junit, sizeof junit, "%s/junit.xml", o->out);
+  const int written = !o->verify && dv_report_suite_write_ended(o->out, dirs, not_ended, n,
+                                                                o->junit ? o->junit : junit, &err);
+  free(dirs);
+  if (written) return dv_cli_error("suite", "%s", err.msg);
+  dv_cli_error("suite", "interrupted while the scenarios chose their settings: none ended%s",
+               o->verify ? "" : "; the suite's files say so");
+  return 130; /* 128 + SIGINT, as shells report it */
 }
 
 /* the files the suite writes into --out, besides the scenarios' directories */
@@ -99,16 +152,33 @@ static int check_outputs(const suite_opts *o, const dv_cli_list *files, const dv
                                                                                   : DV_EXIT_OK;
 }
 
+/* the scenarios whose settings were probed (ended[i], NULL: all), copied
+ * into run[0..*m), map[j] the index of run[j] in scs */
+static dv_scenario *runnable(const dv_scenario *scs, size_t n, const unsigned char *ended,
+                             size_t *map, size_t *m) {
+  dv_scenario *run = malloc((n ? n : 1) * sizeof *run);
+  *m = 0;
+  for (size_t i = 0; run && i < n; i++)
+    if (!ended || ended[i] == DV_EXEC_ARRIVED) map[*m] = i, run[(*m)++] = scs[i];
+  return run;
+}
+
 /* --verify: every scenario's engines refined; verify.md, verify.json, JUnit */
-static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_list *sets,
-                  const dv_engine_type *const *engines, const dv_scenario *scs) {
+static int verify(const suite_opts *o, const dv_cli_list *files,
+                  const dv_engine_type *const *engines, const dv_scenario *all,
+                  const unsigned char *ended, const int *codes, const dv_error *causes) {
   size_t ne = 0;
   while (engines[ne]) ne++;
-  const size_t n = files->n;
-  dv_verify_case *cases = calloc(n * ne, sizeof *cases);
+  /* a scenario whose settings probes did not end (probe_all) is an error, not verified */
+  size_t n = 0, *map = malloc((files->n ? files->n : 1) * sizeof *map);
+  dv_scenario *scs = map ? runnable(all, files->n, ended, map, &n) : NULL;
+  free(map);
+  dv_verify_case *cases = scs ? calloc(n * ne > 0 ? n * ne : 1, sizeof *cases) : NULL;
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
   if (!cases) code = dv_cli_error("suite", "out of memory");
+  for (size_t i = 0; !code && i < files->n; i++)
+    if (codes[i] == DV_SUITE_ERROR) printf("%s: error: %s\n", all[i].name, causes[i].msg);
   if (!code && dv_io_make_dirs(o->out, &err)) code = dv_cli_error("suite", "%s", err.msg);
   const int ran =
       code ? DV_OK : dv_search_verify_suite(scs, n, engines, ne, o->jobs, o->timeout, cases, &err);
@@ -139,7 +209,10 @@ static int verify(const suite_opts *o, const dv_cli_list *files, const dv_cli_li
     dv_cli_error("suite", "interrupted: the cases that ended are in %s/verify.md", o->out);
     code = 130; /* 128 + SIGINT, as shells report it, and as a compare suite exits */
   }
+  for (size_t i = 0; code != 130 && i < files->n; i++)
+    if (codes[i] == DV_SUITE_ERROR) code = DV_EXIT_ERROR;
   free(cases);
+  free(scs);
   return code;
 }
 
@@ -170,18 +243,34 @@ static void print_failures(const char *out) {
 
 /* run the loaded scenarios and write the suite's files */
 static int run(const suite_opts *o, const dv_cli_list *sets, const dv_engine_type *const *engines,
-               const dv_scenario *scs, size_t n, int *codes, dv_error *causes) {
+               const dv_scenario *scs, size_t n, const unsigned char *ended, int *codes,
+               dv_error *causes) {
   dv_error err = {{0}};
   dv_report_explain explain;
   dv_cli_explainer("suite", o->cause, sets, &explain); /* checked when parsed */
-  const int ran = dv_report_suite_run_all(scs, n, engines, o->out, o->jobs, o->timeout, &explain,
-                                          codes, causes, &err);
-  if (ran == DV_SUITE_RUN_WORKER) return DV_EXIT_OK; /* an MPI worker rank: rank 0 reports */
+  size_t m = 0, *map = malloc((n ? n : 1) * sizeof *map);
+  dv_scenario *ok = map ? runnable(scs, n, ended, map, &m) : NULL;
+  int *ok_codes = malloc((n ? n : 1) * sizeof *ok_codes);
+  dv_error *ok_causes = malloc((n ? n : 1) * sizeof *ok_causes);
+  int ran = DV_OK;
+  if (!ok || !ok_codes || !ok_causes)
+    ran = dv_fail(&err, DV_ESYSTEM, "out of memory");
+  else if (m)
+    ran = dv_report_suite_run_all(ok, m, engines, o->out, o->jobs, o->timeout, &explain, ok_codes,
+                                  ok_causes, &err);
+  for (size_t j = 0; ran != DV_ESYSTEM && j < m; j++)
+    codes[map[j]] = ok_codes[j], causes[map[j]] = ok_causes[j];
+  free(map);
+  free(ok_codes);
+  free(ok_causes);
+  if (ran < 0) return free(ok), dv_cli_error("suite", "%s", err.msg);
+  if (ran == DV_SUITE_RUN_WORKER) return free(ok), DV_EXIT_OK; /* an MPI worker rank */
   int stopped = ran == DV_EVENT; /* the suite-level files then say what did not end */
   if (stopped) dv_cli_error("suite", "%s", err.msg);
-  const int stable = o->stability && !stopped
-                         ? dv_search_stability_run(scs, n, engines, o->out, o->jobs, &err)
+  const int stable = o->stability && !stopped && m
+                         ? dv_search_stability_run(ok, m, engines, o->out, o->jobs, &err)
                          : DV_OK;
+  free(ok);
   if (stable < 0) return dv_cli_error("suite", "stability: %s", err.msg);
   if (stable == DV_EVENT) stopped = 1, dv_cli_error("suite", "stability: %s", err.msg);
   const char **dirs = malloc((2 * n + 1) * sizeof *dirs), **not_ended = dirs + n;
@@ -249,6 +338,7 @@ int dv_cli_suite(int argc, char **argv) {
   dv_scenario *scs = NULL;
   int *codes = NULL;
   dv_error *causes = NULL;
+  unsigned char *ended = NULL; /* how each scenario's settings probes ended */
   int lock = -1;
   dv_error err = {{0}};
   int code = DV_EXIT_OK;
@@ -258,7 +348,11 @@ int dv_cli_suite(int argc, char **argv) {
       (!(scs = calloc(files.n, sizeof *scs)) || !(codes = calloc(files.n, sizeof *codes)) ||
        !(causes = calloc(files.n, sizeof *causes))))
     code = dv_cli_error("suite", "out of memory");
-  if (!code) code = load_all(&files, &a.sets, scs);
+  /* the settings probes are each scenario's work, timed and stopped as the
+   * scenarios are (not under mpirun: there, while the files are read) */
+  const int mpi = dv_exec_mpi_size() > 1;
+  if (!code && !mpi && !(ended = calloc(files.n, 1))) code = dv_cli_error("suite", "out of memory");
+  if (!code) code = load_all(&files, &a.sets, scs, mpi);
   if (!code && check_outputs(&o, &files, scs, &err)) code = dv_cli_error("suite", "%s", err.msg);
   if (!code && dv_exec_take_stop()) { /* nothing of this run to report yet */
     dv_cli_error("suite", "interrupted before any scenario ran: nothing written");
@@ -278,10 +372,11 @@ int dv_cli_suite(int argc, char **argv) {
                 (dv_exec_mpi_rank() == 0 && dv_io_lock_dir(o.out, &lock, &err)) ||
                 check_outputs(&o, &files, scs, &err)))
     code = dv_cli_error("suite", "%s", err.msg);
+  if (!code && ended) code = probe_all(&o, &files, &a.sets, scs, ended, codes, causes);
   if (!code && o.verify)
-    code = verify(&o, &files, &a.sets, engines, scs);
+    code = verify(&o, &files, engines, scs, ended, codes, causes);
   else if (!code)
-    code = run(&o, &a.sets, engines, scs, files.n, codes, causes);
+    code = run(&o, &a.sets, engines, scs, files.n, ended, codes, causes);
   if ((code == DV_EXIT_OK || code == DV_EXIT_FAIL) && dv_exec_take_stop()) {
     dv_cli_error("suite", "interrupted as it ended: the reports of this run are complete");
     code = 130;
@@ -292,6 +387,7 @@ int dv_cli_suite(int argc, char **argv) {
   free(scs);
   free(codes);
   free(causes);
+  free(ended);
   dv_cli_args_free(&cmd, &a);
   return code;
 }

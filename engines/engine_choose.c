@@ -370,6 +370,11 @@ static int choose(const dv_scenario *sc, const dv_engine_type *engine, const dv_
 /* the engines this process runs (dv_engine_choose_only); none set: every engine */
 static const dv_engine_type *running[DV_MAX_REGISTERED + 1];
 static int running_set;
+static int probing_off; /* dv_engine_choose_probing(0) */
+
+void dv_engine_choose_probing(int on) {
+  probing_off = !on;
+}
 
 void dv_engine_choose_only(const dv_engine_type *const *engines) {
   size_t n = 0;
@@ -381,6 +386,7 @@ void dv_engine_choose_only(const dv_engine_type *const *engines) {
 /* does engine run in sc: this process's engines, or those sc names ([scenario] engines);
  * an engine outside the build runs only where named */
 static int runs_in(const dv_scenario *sc, const dv_engine_type *engine) {
+  if (probing_off) return 0;
   if (!running_set && !engine->outside) return 1;
   for (size_t i = 0; running[i]; i++)
     if (running[i] == engine) return 1;
@@ -390,6 +396,28 @@ static int runs_in(const dv_scenario *sc, const dv_engine_type *engine) {
        tok = strtok_r(NULL, ", ", &save))
     if (strcmp(tok, engine->name) == 0) return 1;
   return 0;
+}
+
+/* the memory as saved: its entries and where the next goes */
+typedef struct memo_image {
+  int nmemo, next_slot;
+  memo_entry memo[MEMO];
+} memo_image;
+_Static_assert(sizeof(memo_image) <= DV_CHOOSE_MEMO_BYTES, "DV_CHOOSE_MEMO_BYTES holds the memo");
+
+void dv_engine_choose_memo_save(void *buf) {
+  memo_image *m = buf;
+  m->nmemo = nmemo;
+  m->next_slot = next_slot;
+  memcpy(m->memo, memo, sizeof memo);
+}
+
+void dv_engine_choose_memo_restore(const void *buf) {
+  const memo_image *m = buf;
+  if (m->nmemo < 0 || m->nmemo > MEMO || m->next_slot < 0 || m->next_slot >= MEMO) return;
+  nmemo = m->nmemo;
+  next_slot = m->next_slot;
+  memcpy(memo, m->memo, sizeof memo);
 }
 
 void dv_engine_choose(const dv_scenario *sc, const dv_engine_type *engine,

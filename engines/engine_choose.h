@@ -90,4 +90,17 @@ void dv_engine_choose(const dv_scenario *sc, const struct dv_engine_type *engine
  * engine is not among those run)". Commands set it before they load. */
 void dv_engine_choose_only(const struct dv_engine_type *const *engines);
 
+/* on 0: no scene's settings are probed from now on, whatever the engines
+ * run or a scenario names ("not probed"), as for a load that only checks a
+ * file and names it (suite before its scenarios run); 1: probed again (the default) */
+void dv_engine_choose_probing(int on);
+
+/* the probes' memory of this process (their choices, per scene and engine),
+ * to carry into another: a process that probes under a time limit (a timed
+ * task, run_within.h) hands it back, and the caller's own derivation then
+ * probes no more. DV_CHOOSE_MEMO_BYTES of buf; restore replaces the memory. */
+#define DV_CHOOSE_MEMO_BYTES (32u * (DV_DERIVED_BYTES + 48u) + 16u)
+void dv_engine_choose_memo_save(void *buf);
+void dv_engine_choose_memo_restore(const void *buf);
+
 #endif

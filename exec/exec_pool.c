@@ -34,6 +34,13 @@ typedef struct pool {
 /* the signal that stopped the last pool, or 0 */
 static int last_stop;
 
+/* dv_clock_now() time at which every timed task ends (0: none) */
+static double deadline;
+
+void dv_exec_set_deadline(double at) {
+  deadline = at > 0.0 ? at : 0.0;
+}
+
 static const int stop_list[] = {SIGINT, SIGTERM, SIGHUP};
 enum { NSTOPS = sizeof stop_list / sizeof *stop_list };
 
@@ -81,6 +88,7 @@ static void on_stop(int sig) {
 static void run_child(const pool *p, size_t k, pid_t parent) {
   prctl(PR_SET_PDEATHSIG, SIGKILL); /* a task outlives no parent, not even a SIGKILLed one */
   if (getppid() != parent) _exit(1);
+  deadline = 0.0; /* the parent's to enforce, not the task's own pools' */
   sigset_t mask = p->caller_mask;
   for (int i = 0; i < NSTOPS; i++)
     if (sigismember(&p->stops, stop_list[i])) {
@@ -129,7 +137,8 @@ static double enforce_timeout(pool *p) {
   double next = -1.0;
   for (size_t k = 0; k < p->n; k++) {
     if (p->pids[k] <= 0 || p->timed_out[k]) continue;
-    const double left = p->started[k] + p->opt->timeout - now;
+    double left = p->started[k] + p->opt->timeout - now;
+    if (deadline > 0.0 && deadline - now < left) left = deadline - now;
     if (left <= 0.0) {
       kill(p->pids[k], SIGKILL); /* reaped, and reported, as any ended task */
       p->timed_out[k] = 1;

@@ -52,6 +52,13 @@ typedef struct dv_exec_options {
 int dv_exec_pool(size_t n, size_t size, dv_exec_task_fn work, void *ctx, void *results,
                  const dv_exec_options *opt);
 
+/* from now on every task run under a timeout (dv_exec_options) is killed at
+ * dv_clock_now() time deadline too, whichever comes first, and reported
+ * DV_EXEC_TIMED_OUT: a command's whole run under one limit (compare and
+ * simulate --timeout, whose probes run before the work). 0: none (the
+ * default). A task's own process starts with none. */
+void dv_exec_set_deadline(double deadline);
+
 /* the signal that stopped the last pool of this process (DV_EXEC_INTERRUPTED), or 0 */
 int dv_exec_stopped_by(void);
 

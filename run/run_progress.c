@@ -210,6 +210,10 @@ double dv_run_progress_estimate_run(const dv_scenario *sc, const dv_engine_type 
   return P.estimate;
 }
 
+void dv_run_progress_keep_estimate(double seconds) {
+  P.estimate = seconds;
+}
+
 void dv_run_progress_plan(const dv_scenario *sc, const dv_scenario *ref_sc,
                           const dv_engine_type *const *engines, size_t n) {
   if (!P.warn || P.depth > 0 || P.planned || !(sc->duration > 0.0)) return;

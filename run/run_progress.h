@@ -69,6 +69,11 @@ double dv_run_progress_estimate(const dv_scenario *sc, const dv_scenario *ref_sc
                                 const dv_engine_type *const *engines, size_t n);
 double dv_run_progress_estimate_run(const dv_scenario *sc, const dv_engine_type *engine);
 
+/* keep seconds (a comparison's or a run's, probed by another process: a
+ * timed task) as the estimate the next dv_run_progress_estimate* or plan
+ * returns without probing; NAN: none kept */
+void dv_run_progress_keep_estimate(double seconds);
+
 /* what the runs that follow are ("nudged references"); NULL: each says by its
  * engine, "reference" or "engine run" */
 void dv_run_progress_role(const char *role);

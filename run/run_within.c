@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <string.h>
 
+#include "dv_clock.h"
 #include "exec_pool.h"
 #include "run_progress.h"
 #include "run_trajectory.h"
@@ -34,6 +35,10 @@ dv_run_within_end dv_run_within(double timeout, void (*work)(void *ctx, void *re
          : done == DV_EXEC_ARRIVED   ? DV_RUN_WITHIN_DONE
          : done == DV_EXEC_TIMED_OUT ? DV_RUN_WITHIN_TIMED_OUT
                                      : DV_RUN_WITHIN_LOST;
+}
+
+void dv_run_within_deadline(double timeout) {
+  dv_exec_set_deadline(timeout > 0.0 ? dv_clock_now() + timeout : 0.0);
 }
 
 int dv_run_within_refuse(double estimate, double timeout, const char *whose, dv_error *err) {

@@ -32,6 +32,11 @@ typedef enum dv_run_within_end {
 dv_run_within_end dv_run_within(double timeout, void (*work)(void *ctx, void *result), void *ctx,
                                 void *result, size_t size);
 
+/* from now on, timeout s from now (<= 0: no limit) ends every work of
+ * dv_run_within too, whatever its own limit: a command's whole run under
+ * one limit, its settings probes and forecast included (dv_exec_set_deadline) */
+void dv_run_within_deadline(double timeout);
+
 /* 0 when work estimated to take estimate s may start under timeout s (<= 0:
  * no limit), else -1 with err "would take about ... : not started"; whose
  * names the rates ("its", "each engine's") */

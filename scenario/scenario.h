@@ -145,6 +145,14 @@ int dv_scenario_load(const dv_settings_section *const *engines, const char *path
                      const char *const *overrides, size_t noverrides, dv_scenario *sc,
                      dv_error *err);
 
+/* on 1: from now on each file a load reads is kept whole in memory, and a
+ * later load of the same path in this process (or a child forked after it)
+ * reads it from there, never again from the file: a command that loads
+ * twice (once to check, then with its settings probed in a process of its
+ * own: a time limit) reads a FIFO or an edited file once; 0: loads read
+ * their files again (the default), what is kept stays for a later on */
+void dv_scenario_keep_texts(int on);
+
 /* base with overrides ("section.key=value", as --set) applied and every
  * section's check run again: what a load of base's file with those overrides
  * gives, without reading the file again (the values base's checks derived,

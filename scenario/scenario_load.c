@@ -108,7 +108,51 @@ static char *read_line(char *buf, int size, void *stream) {
  * more is read: a scenario is a few KiB, and /dev/zero never ends; a FIFO
  * with no writer is not waited for (dv_input.h). A file that cannot be read
  * has no line to point at. */
+/* the files read while keeping (dv_scenario_keep_texts): each path's bytes */
+typedef struct kept_text {
+  char *path, *data;
+  size_t size;
+} kept_text;
+static kept_text *kept;
+static size_t nkept, kept_cap;
+static int keeping;
+
+void dv_scenario_keep_texts(int on) {
+  keeping = on;
+}
+
+/* path's kept text into c->data (a copy, the parser's to free): 1, or 0 when none */
+static int read_kept(parse_ctx *c, const char *path) {
+  for (size_t i = 0; i < nkept; i++) {
+    if (strcmp(kept[i].path, path)) continue;
+    char *copy = malloc(kept[i].size + 1);
+    if (!copy) return 0; /* read again */
+    memcpy(copy, kept[i].data, kept[i].size + 1);
+    c->data = copy, c->size = kept[i].size;
+    return 1;
+  }
+  return 0;
+}
+
+/* keep c->data as path's text (nothing when out of memory: read again) */
+static void keep(const parse_ctx *c, const char *path) {
+  if (nkept == kept_cap) {
+    kept_text *more = realloc(kept, (kept_cap ? 2 * kept_cap : 8) * sizeof *more);
+    if (!more) return;
+    kept = more, kept_cap = kept_cap ? 2 * kept_cap : 8;
+  }
+  kept_text k = {strdup(path), malloc(c->size + 1), c->size};
+  if (k.path && k.data) {
+    memcpy(k.data, c->data, c->size + 1);
+    kept[nkept++] = k;
+  } else {
+    free(k.path);
+    free(k.data);
+  }
+}
+
 static int read_file(parse_ctx *c, const char *path) {
+  if (keeping && read_kept(c, path)) return DV_OK;
   struct stat st;
   const double mib = DV_SCENARIO_MAX_BYTES / 1048576.0;
   if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
@@ -139,6 +183,7 @@ static int read_file(parse_ctx *c, const char *path) {
   if (status) goto cleanup;
   buf[got] = '\0';
   c->data = buf, c->size = got, buf = NULL;
+  if (keeping) keep(c, path);
 
 cleanup:
   free(buf);

@@ -10,7 +10,12 @@
 #     refused in one line, exit 2, and touches nothing there;
 #   - temporaries of a dead run (.diskval-tmp.PID.XXXXXX) are removed by the
 #     next suite or compare, those of a live process kept, and a directory of
-#     that name is removed only when diskval marked it (or it is empty).
+#     that name is removed only when diskval marked it (or it is empty);
+#   - a suite stopped by SIGTERM while its scenarios choose their settings
+#     (the probes, their first work: an adapter answering each row after 1 s,
+#     tests/adapters/slow) exits 130 and still writes summary.json, the JUnit
+#     XML and index.html, each scenario an error "did not end", and leaves no
+#     adapter running.
 # Timings (diskval suite ... --jobs 2 on 2 busy cores): fast.ini and slow.ini
 # at 1 s take 0.7 s together; slow.ini at 60 s takes over 20 s (MuJoCo alone:
 # 20 s), so at 300 s over 100 s. A 20 s limit is 20x the fast case's verify
@@ -25,6 +30,7 @@ set -u
 export LC_ALL=C
 dv=${1:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
 sc=${2:?usage: check_suite_faults.sh DISKVAL SCENARIO_DIR}
+slow_adapter=$(cd "$(dirname "$0")" && pwd)/adapters/slow
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2
@@ -135,6 +141,26 @@ check '[ ! -e out/.diskval-tmp.$dead.stuvwx ]' "stale: compare left a dead run's
 check '[ -e out/.diskval-tmp.$dead.abcdef/keep/mine ]' \
   "stale: a directory diskval did not mark was removed for its name"
 check '[ -d out/.diskval-tmp.$$.abcdef ]' "stale: compare removed a live process's temporary"
+
+# SIGTERM while the scenarios probe their settings (the slow adapter: 1 s a
+# row, over 10 s of probes each): their work had begun, so the suite's
+# files say they did not end (it once said "nothing written")
+mkdir probing && sed 's/^name = .*/name = fall_a/' "$sc/falling.ini" >probing/fall_a.ini &&
+  sed 's/^name = .*/name = fall_b/' "$sc/falling.ini" >probing/fall_b.ini
+DISKVAL_ADAPTERS=$slow_adapter DV_SLOW_SLEEP=1.$$ "$dv" suite probing --engines slow --out sig \
+  --jobs 2 >sig.out 2>&1 &
+pid=$!
+sleep 2
+kill -TERM $pid
+wait $pid
+code=$?
+check '[ $code -eq 130 ] && [ -f sig/summary.json ] && [ -f sig/junit.xml ] && [ -f sig/index.html ]' \
+  "SIGTERM in the probes: exit $code, files $(ls sig 2>&1): $(cat sig.out)"
+check '[ "$(jq -r "[.scenarios[] | .error] | map(test(\"did not end\")) | all" sig/summary.json)" = true ] &&
+  [ "$(jq ".scenarios | length" sig/summary.json)" -eq 2 ] && grep -q "did not end" sig/junit.xml sig/fall_a/report.json' \
+  "SIGTERM in the probes: the scenarios are not errors that did not end: $(cat sig/summary.json)"
+sleep 1.5 # a row's sleep: the adapters' guard ends them (SIGTERM) as their run ends
+check '! pgrep -f "sleep 1.$$" >/dev/null' "SIGTERM in the probes: an adapter still runs: $(pgrep -af "sleep 1.$$")"
 
 [ $fail -eq 0 ] && echo "suite faults: contained, with their causes"
 exit $fail

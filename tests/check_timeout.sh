@@ -8,8 +8,17 @@
 #     nothing written;
 #   - a run let start (its estimate under twice the limit) is killed at the
 #     limit: exit 2, "timed out after S s", no CSV, no temporaries, compare's
-#     error report saying so.
-# No wall time is asserted: how soon a limit ends a child is tests/exec/test_exec.c's
+#     error report saying so;
+#   - the limit bounds the whole run, the settings probes of the load and
+#     the up-front forecast too: with an adapter answering each row after
+#     1 s (tests/adapters/slow), simulate and compare --timeout 3 and suite
+#     --timeout 3 end "timed out after 3 s", nothing of
+#     simulate's left, compare's and suite's error reports written; so does
+#     compare with an adapter that never answers (its manifest waits 30 s).
+# No wall time is asserted (3.0-3.1 s measured, idle; 38-125 s before the
+# probes were under the limit): the message "timed out after 3 s" says the
+# limit ended them, and a run that outlives 60 s (the silent adapter's
+# manifest waits 30 s a row) is killed and fails. How soon a limit ends a child is tests/exec/test_exec.c's
 # check (a child that sleeps 10 s under a 0.5 s limit); here the messages prove it.
 set -u
 . "$(dirname "$0")/check_lib.sh"
@@ -68,7 +77,10 @@ killed() {
   shift
   : >"$work/attempts"
   for i in 1 2 3 4 5 6; do
-    est=$("$diskval" "$@" --timeout 1e-3 2>&1 | sed -n 's/.*would take about \([0-9.e+]*\) s.*/\1/p')
+    # the estimate, from a limit under half of it (refused): 2 s, which the
+    # settings probes and the forecast fit in (0.2 s measured; the limit
+    # bounds them too: a limit of 1e-3 ends them, "timed out")
+    est=$("$diskval" "$@" --timeout 2 2>&1 | sed -n 's/.*would take about \([0-9.e+]*\) s.*/\1/p')
     [ -n "$est" ] || { echo "no estimate" >>"$work/attempts"; return 1; }
     # two decimals, written as diskval writes them back (%g: 10.6, not 10.60)
     limit=$(awk -v e="$est" 'BEGIN { printf "%.2f", e / 1.5 }' | sed 's/0*$//; s/\.$//')
@@ -92,4 +104,44 @@ check 'killed "$work/k" compare "$sc" --engines mujoco "${mid[@]}" --out "$work/
   "compare: not killed at its limit (attempts above)"
 check 'grep -q "timed out after" "$work/k/steady_circle/report.json"' "compare killed: no error report"
 check '[ -z "$(ls -A "$work/k" | grep -v "^steady_circle$\|^.diskval.lock$")" ]' "compare killed: left $(ls -A "$work/k")"
+
+# the limit bounds the settings probes and the forecast too (the slow adapter)
+export DISKVAL_ADAPTERS=$(cd "$(dirname "$0")" && pwd)/adapters/slow
+slow_sc=$scenarios/falling.ini # at rest at its start: the adapter's still rows are consistent
+limit=3
+# within CMD...: runs CMD (killed at 60 s), sets code and took (s of wall time)
+within() {
+  local t0 t1
+  t0=$(date +%s.%N)
+  timeout -k 2 60 "$@" >"$work/stdout" 2>"$work/err"
+  code=$?
+  t1=$(date +%s.%N)
+  took=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
+}
+within "$diskval" simulate "$slow_sc" --engine slow --out "$work/p.csv" --timeout $limit
+check '[ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err"' \
+  "simulate --engine slow --timeout $limit: exit $code after $took s: $(cat "$work/err")"
+check '[ -z "$(ls -A "$work" | grep p.csv)" ]' "simulate timed out in its probes: left $(ls -A "$work" | grep p.csv)"
+within "$diskval" compare "$slow_sc" --engines slow --out "$work/p" --timeout $limit
+check '[ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err"' \
+  "compare --engines slow --timeout $limit: exit $code after $took s: $(cat "$work/err")"
+check 'grep -q "timed out after $limit s" "$work/p/falling/report.json"' "compare timed out in its probes: no error report"
+check '[ -z "$(ls -A "$work/p" | grep -v "^falling$\|^.diskval.lock$")" ]' "compare timed out: left $(ls -A "$work/p")"
+DV_SLOW_SILENT=1 within "$diskval" compare "$slow_sc" --engines slow --out "$work/q" --timeout $limit
+check '[ $code -eq 2 ] && grep -q "timed out after $limit s" "$work/err"' \
+  "compare, an adapter that never answers, --timeout $limit: exit $code after $took s: $(cat "$work/err")"
+mkdir "$work/sd" && cp "$slow_sc" "$work/sd/" &&
+  sed 's/^name = .*/name = falling2/' "$slow_sc" >"$work/sd/falling2.ini"
+within "$diskval" suite "$work/sd" --engines slow --out "$work/so" --timeout $limit --jobs 2
+check '[ $code -eq 2 ] && [ "$(grep -c "error: timed out after $limit s" "$work/stdout")" -eq 2 ]' \
+  "suite --engines slow --timeout $limit: exit $code after $took s: $(cat "$work/stdout" "$work/err")"
+check '[ "$(grep -c "timed out after $limit s" "$work/so/summary.json")" -eq 2 ] && grep -q "timed out after $limit s" "$work/so/junit.xml" "$work/so/index.html"' \
+  "suite timed out in its probes: not in summary.json, junit.xml, index.html"
+# under a limit the probes choose what they choose without one (a fast adapter)
+export DV_SLOW_SLEEP=0
+"$diskval" simulate "$slow_sc" --engine slow --set scenario.duration=0.3 --out "$work/u.csv" 2>/dev/null
+"$diskval" simulate "$slow_sc" --engine slow --set scenario.duration=0.3 --out "$work/l.csv" --timeout 60 2>/dev/null
+check 'cmp -s "$work/u.csv" "$work/l.csv" && [ "$(jq -c .derived "$work/u.csv.json")" = "$(jq -c .derived "$work/l.csv.json")" ] && jq -e ".derived.reason | test(\"from a probe\")" "$work/l.csv.json" >/dev/null' \
+  "simulate --timeout 60 chose other settings than without a limit: $(jq -c .derived "$work/u.csv.json" "$work/l.csv.json")"
+unset DV_SLOW_SLEEP
 exit $fail
