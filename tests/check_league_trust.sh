@@ -85,6 +85,14 @@ jq --arg r "../elsewhere/$report" '.theta_max_err = 1e-7 | .report = $r' "$work/
 league --out "$work/C3" >/dev/null 2>&1
 check 'jq -e --arg r "$report" ".cells[0] | .report == \$r and .theta_max_err == $theta" "$work/C3/league.json" >/dev/null' \
   "a cell whose report is outside --out was reused: $(jq -c ".cells[0] | [.theta_max_err, .report]" "$work/C3/league.json")"
+# rerun DIR WHY WHAT: the league over --out DIR runs its doctored cell again (theta the
+# run's own, not 1e-7) and says why on stderr (not --quiet: a progress line)
+rerun() {
+  local d=$work/$1 why=$2
+  "$diskval" league "$quarter" --engines mujoco,ode --cause none --out "$d" >/dev/null 2>"$work/err"
+  check 'jq -e ".cells[0].theta_max_err == $theta" "$d/league.json" >/dev/null && grep -q "run again: $why" "$work/err"' \
+    "$3: $(jq -c ".cells[0] | [.theta_max_err, .report]" "$d/league.json"): $(cat "$work/err")"
+}
 # its report's path as the cell says, through a link: compare/ itself a link out of --out
 # (to a copy whose report says theta 1e-7, as the cell does) runs again
 cp -r "$work/L" "$work/C4"
@@ -93,10 +101,7 @@ mv "$work/C4/compare" "$work/away/compare"
 ln -s ../away/compare "$work/C4/compare"
 jq '.engines.mujoco.theta_max_err = 1e-7' "$work/L/$report/report.json" >"$work/away/$report/report.json"
 jq '.theta_max_err = 1e-7' "$work/L/$cell" >"$work/C4/$cell"
-"$diskval" league "$quarter" --engines mujoco,ode --cause none --out "$work/C4" >/dev/null 2>"$work/err"
-check 'jq -e ".cells[0].theta_max_err == $theta" "$work/C4/league.json" >/dev/null &&
-  grep -q "run again: its report lies outside" "$work/err"' \
-  "a cell whose compare/ links out of --out: $(jq -c ".cells[0] | [.theta_max_err, .report]" "$work/C4/league.json"): $(cat "$work/err")"
+rerun C4 "its report lies outside" "a cell whose compare/ links out of --out"
 # a folder in compare/ a link to one in --out but not in its compare/ (its report says
 # theta 1e-7, as the cell does) runs again
 cp -r "$work/L" "$work/C5"
@@ -105,16 +110,11 @@ ln -s ../decoy "$work/C5/compare/quarter_fall"
 jq '.engines.mujoco.theta_max_err = 1e-7' "$work/L/$report/report.json" \
   >"$work/C5/decoy/${report#compare/quarter_fall/}/report.json"
 jq '.theta_max_err = 1e-7' "$work/L/$cell" >"$work/C5/$cell"
-"$diskval" league "$quarter" --engines mujoco,ode --cause none --out "$work/C5" >/dev/null 2>"$work/err"
-check 'jq -e ".cells[0].theta_max_err == $theta" "$work/C5/league.json" >/dev/null &&
-  grep -q "run again: its report lies outside" "$work/err"' \
-  "a cell whose compare/ folder links out of compare/: $(jq -c ".cells[0] | [.theta_max_err, .report]" "$work/C5/league.json"): $(cat "$work/err")"
+rerun C5 "its report lies outside" "a cell whose compare/ folder links out of compare/"
 # a report whose theta limit is not the cell's target (0.5 rad) runs again
 cp -r "$work/L" "$work/C6"
 jq '.engines.mujoco.limits.theta_max_err.limit = 0.5' "$work/L/$report/report.json" >"$work/C6/$report/report.json"
-"$diskval" league "$quarter" --engines mujoco,ode --cause none --out "$work/C6" >/dev/null 2>"$work/err"
-check 'grep -q "run again: it says other than its report" "$work/err"' \
-  "a report whose theta limit is 0.5 rad backed its cell of target 1e-3: $(cat "$work/err")"
+rerun C6 "it says other than its report" "a report whose theta limit is 0.5 rad backed its cell of target 1e-3"
 
 # item 5: an input in cells/ or compare/ is refused, the file and --out untouched
 cp "$quarter" "$work/L/$cell"
