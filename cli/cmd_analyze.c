@@ -162,9 +162,7 @@ static char *to_json(const dv_scenario *sc, const analysis *an) {
   cJSON_AddItemToObject(o, "theta_range", cJSON_CreateDoubleArray(an->range, 2));
   cJSON_AddBoolToObject(o, "falls", an->falls);
   cJSON *init = cJSON_AddObjectToObject(o, "initial");
-  const char *names[RED_NSTATE] = {"theta", "theta_dot", "phi_dot", "psi_dot",
-                                   "phi",   "psi",       "x",       "y"};
-  for (int i = 0; i < RED_NSTATE; i++) cJSON_AddNumberToObject(init, names[i], y[i]);
+  for (int i = 0; i < RED_NSTATE; i++) cJSON_AddNumberToObject(init, red_state_name(i), y[i]);
   if (an->steady) {
     cJSON *s = cJSON_AddObjectToObject(o, "steady");
     cJSON_AddNumberToObject(s, "phi_dot", y[RED_VPH]);

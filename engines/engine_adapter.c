@@ -154,9 +154,6 @@ static int parse_row(const char *line, double v[ROW_FIELDS], char *what, size_t 
  * 1 with what set */
 static int rows_disagree(adapter_run *r, const dv_sample *s, const dv_pose *pose,
                          const double v[ROW_FIELDS], char *what, size_t size) {
-  static const char *const name[RED_NSTATE] = {
-      [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot", [RED_VPS] = "psi_dot",
-      [RED_PH] = "phi",   [RED_PS] = "psi",        [RED_X] = "x",         [RED_Y] = "y"};
   const double steps = round(v[0] / r->timestep);
   if (v[15] != steps)
     return snprintf(what, size, "%.0f steps at t = %.9g s, where the step %g s makes %.0f", v[15],
@@ -164,29 +161,24 @@ static int rows_disagree(adapter_run *r, const dv_sample *s, const dv_pose *pose
   const int k = s->t == 0.0 ? dv_rows_start_off(s->y, r->sent, r->sc.disk.r, r->rate_scale) : -1;
   if (k >= 0)
     return snprintf(what, size, "its state at t = 0 is not the one sent: %s = %.10g, sent %.10g",
-                    name[k], s->y[k], r->sent[k]), 1;
+                    red_state_name(k), s->y[k], r->sent[k]), 1;
   const dv_sample *a = r->rows ? &r->last[0] : NULL;
-  const int flat = !a || s->y[RED_TH] < 1e-3 || dv_rows_turn_near_flat(a, s);
-  for (int q = 0; a && q < 3; q++) {
-    static const char *const angle[3] = {"theta", "phi", "psi"};
-    double miss;
-    int summed;
-    if (q > 0 && flat) continue; /* phi, psi whirl near flat, unresolved by the rows */
-    const double d = dv_rows_angle(a, s, q, r->rate_scale, &r->drift[q], &miss, &summed);
-    if (d > 1.0 && summed)
-      return snprintf(what, size,
-                      "%s's steps to t = %.9g s add up to %.3g rad off the trapezoids of its "
-                      "rate over %.3g rad of them, %.3g times what they allow",
-                      angle[q], s->t, r->drift[q].miss, r->drift[q].travel, d), 1;
-    if (d > 1.0)
-      return snprintf(what, size,
-                      "%s misses the trapezoid of its rate by %.3g rad from t = %.9g to %.9g s, "
-                      "%.3g times what the step and the rates allow",
-                      angle[q], fabs(miss), a->t, s->t, d), 1;
-  }
+  static const char *const angle[3] = {"theta", "phi", "psi"};
+  double d, miss;
+  int summed;
+  const int q = a ? dv_rows_angles(a, s, 1, r->rate_scale, r->drift, &d, &miss, &summed) : -1;
+  if (q >= 0 && summed)
+    return snprintf(what, size,
+                    "%s's steps to t = %.9g s add up to %.3g rad off the trapezoids of its rate "
+                    "over %.3g rad of them, %.3g times what they allow",
+                    angle[q], s->t, r->drift[q].miss, r->drift[q].travel, d), 1;
+  if (q >= 0)
+    return snprintf(what, size,
+                    "%s misses the trapezoid of its rate by %.3g rad from t = %.9g to %.9g s, "
+                    "%.3g times what the step and the rates allow",
+                    angle[q], fabs(miss), a->t, s->t, d), 1;
   int c;
-  const double d = dv_rows_centre(&r->centre, a, s, pose->pos, pose->vel,
-                                  r->sc.disk.r * r->rate_scale, &c);
+  d = dv_rows_centre(&r->centre, a, s, pose->pos, pose->vel, r->sc.disk.r * r->rate_scale, &c);
   if (d > 1.0)
     return snprintf(what, size,
                     "the centre's %s step to t = %.9g s misses the trapezoid of its velocity, %.3g "

@@ -84,6 +84,16 @@ double dv_rows_angle(const dv_sample *a, const dv_sample *s, int k, double rate_
   return fmax(d, ds);
 }
 
+int dv_rows_angles(const dv_sample *a, const dv_sample *s, int pose, double rate_scale,
+                   dv_rows_drift drift[3], double *d, double *miss, int *summed) {
+  const int flat = (pose && s->y[RED_TH] < 1e-3) || dv_rows_turn_near_flat(a, s);
+  for (int k = 0; k < (flat ? 1 : 3); k++) {
+    *d = dv_rows_angle(a, s, k, rate_scale, &drift[k], miss, summed);
+    if (*d > 1.0) return k;
+  }
+  return -1;
+}
+
 int dv_rows_start_off(const double y[RED_NSTATE], const double y0[RED_NSTATE], double r,
                       double rate_scale) {
   for (int k = 0; k < RED_NSTATE; k++) {

@@ -76,6 +76,14 @@ typedef struct dv_rows_drift {
 double dv_rows_angle(const dv_sample *a, const dv_sample *s, int k, double rate_scale,
                      dv_rows_drift *drift, double *miss, int *summed);
 
+/* theta, phi and psi from row a to s (dv_rows_angle, drift[3] theirs); phi
+ * and psi not where theta turns near flat, nor, in a pose (pose: 1), where
+ * it is under 1e-3 (they whirl there, or are undefined). The first over its
+ * allowance: its index (0 theta, 1 phi, 2 psi), *d, *miss and *summed as
+ * dv_rows_angle's; -1 when none is */
+int dv_rows_angles(const dv_sample *a, const dv_sample *s, int pose, double rate_scale,
+                   dv_rows_drift drift[3], double *d, double *miss, int *summed);
+
 /* the first of the state's eight numbers off the state given by more than
  * DV_ROWS_START_TOL (angles mod 2 pi; x, y over the radius r; rates over the
  * rate scale): its index, or -1 */

@@ -2,6 +2,14 @@
 #include "red_disk.h"
 
 #include <math.h>
+#include <stddef.h>
+
+const char *red_state_name(int k) {
+  static const char *const names[RED_NSTATE] = {
+      [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot", [RED_VPS] = "psi_dot",
+      [RED_PH] = "phi",   [RED_PS] = "psi",        [RED_X] = "x",         [RED_Y] = "y"};
+  return k >= 0 && k < RED_NSTATE ? names[k] : NULL;
+}
 
 red_disk red_disk_uniform(double r, double m, double g) {
   red_disk d = {r, m, 0.25 * m * r * r, 0.5 * m * r * r, g};

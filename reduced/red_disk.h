@@ -47,6 +47,10 @@ enum {
 /* number of components of the reduced (shape) system: theta and the rates */
 #define RED_NREDUCED 4
 
+/* the name of state component k ("theta", "theta_dot", ..., "y"), as the
+ * scenario file and the CSV columns spell it; NULL off 0 .. RED_NSTATE - 1 */
+const char *red_state_name(int k);
+
 /* a uniform thin disk: A = m r^2 / 4, C = m r^2 / 2 */
 red_disk red_disk_uniform(double r, double m, double g);
 

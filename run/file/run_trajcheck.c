@@ -68,32 +68,26 @@ int dv_run_trajcheck_columns(const dv_trajfile *f, const dv_scenario *sc, int cc
     static const char *const name[3] = {"theta", "phi", "psi"};
     static const int angle[3] = {RED_TH, RED_PH, RED_PS};
     if (f->form == DV_TRAJ_POSE && s->y[RED_TH] < 1e-3)
-      continue; /* phi, psi undefined lying flat */
-    /* theta turning near flat within the step: phi and psi whirl between the
-     * rows (rates like 1 / sin^2 theta at the turn), unresolved by them */
-    const int flat_turn = dv_rows_turn_near_flat(a, s);
-    for (int k = 0; k < 3; k++) {
-      double miss;
-      int summed;
-      if (k > 0 && flat_turn) continue;
-      const double d = dv_rows_angle(a, s, k, rate_scale, &drift[k], &miss, &summed);
-      if (d > 1.0 && summed)
-        return dv_fail(err, DV_EINPUT,
-                       "%.400s:%ld:%d: %s's steps add up to %.6g rad off the trapezoids of its "
-                       "rate over %.6g rad of them (%.3g times %g of that, plus a step's "
-                       "allowance): the columns disagree",
-                       f->path, f->line[i], col[k], name[k], drift[k].miss, drift[k].travel, d,
-                       DV_ROWS_DRIFT);
-      if (d > 1.0)
-        return dv_fail(err, DV_EINPUT,
-                       "%.400s:%ld:%d: %s turns by %.6g rad from the line before, its rate by "
-                       "%.6g rad (off by %.3g rad, more than %g of the step times the rate scale "
-                       "%.3g rad/s): the columns disagree",
-                       f->path, f->line[i], col[k], name[k],
-                       remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI),
-                       remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI) - miss, fabs(miss),
-                       DV_TRAJ_RATE_TOL, rate_scale);
-    }
+      continue; /* phi, psi undefined lying flat (and theta not checked there either) */
+    double d, miss;
+    int summed;
+    const int k = dv_rows_angles(a, s, 0, rate_scale, drift, &d, &miss, &summed);
+    if (k >= 0 && summed)
+      return dv_fail(err, DV_EINPUT,
+                     "%.400s:%ld:%d: %s's steps add up to %.6g rad off the trapezoids of its "
+                     "rate over %.6g rad of them (%.3g times %g of that, plus a step's "
+                     "allowance): the columns disagree",
+                     f->path, f->line[i], col[k], name[k], drift[k].miss, drift[k].travel, d,
+                     DV_ROWS_DRIFT);
+    if (k >= 0)
+      return dv_fail(err, DV_EINPUT,
+                     "%.400s:%ld:%d: %s turns by %.6g rad from the line before, its rate by "
+                     "%.6g rad (off by %.3g rad, more than %g of the step times the rate scale "
+                     "%.3g rad/s): the columns disagree",
+                     f->path, f->line[i], col[k], name[k],
+                     remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI),
+                     remainder(s->y[angle[k]] - a->y[angle[k]], 2.0 * M_PI) - miss, fabs(miss),
+                     DV_TRAJ_RATE_TOL, rate_scale);
   }
   return DV_OK;
 }

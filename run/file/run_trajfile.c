@@ -329,8 +329,7 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
   if (fabs(s->t) > 1e-12)
     return fail_at(rd, f->line[0], rd->col[C_T] + 1,
                    "the file starts at t = %.17g s, the scenario at t = 0", s->t);
-  double rate_scale = sqrt(sc->disk.g / sc->disk.r);
-  for (int k = RED_VTH; k <= RED_VPS; k++) rate_scale = fmax(rate_scale, fabs(y0[k]));
+  const double rate_scale = dv_rows_rate_scale(&sc->disk, y0);
   const int pose = f->form == DV_TRAJ_POSE;
   struct {
     int k, col;
@@ -353,13 +352,10 @@ static int check_start(const reader *rd, const dv_scenario *sc, const dv_trajfil
     if (isnan(s->y[k])) continue;                                /* not in the file */
     const double d = q[i].angle ? angle_diff(s->y[k], y0[k]) : s->y[k] - y0[k];
     if (fabs(d) > DV_TRAJ_START_TOL * q[i].scale) {
-      static const char *const state_names[RED_NSTATE] = {
-          [RED_TH] = "theta", [RED_VTH] = "theta_dot", [RED_VPH] = "phi_dot", [RED_VPS] = "psi_dot",
-          [RED_PH] = "phi",   [RED_PS] = "psi",        [RED_X] = "x",         [RED_Y] = "y"};
       return fail_at(rd, f->line[0], rd->col[q[i].col] + 1,
                      "the start does not match the scenario's initial state: %s = %.10g %s, the "
                      "scenario's %.10g (off by %.3g, tolerance %g %s)",
-                     state_names[k], s->y[k], q[i].unit, y0[k], fabs(d),
+                     red_state_name(k), s->y[k], q[i].unit, y0[k], fabs(d),
                      DV_TRAJ_START_TOL * q[i].scale, q[i].unit);
     }
   }
